@@ -1,12 +1,53 @@
 # Third-party dependencies, all from Debian 12 packages (cmake/debian-packages.txt).
 # Each becomes an imported target so modules link only what they use.
-find_package(MPI REQUIRED COMPONENTS C CXX)
-find_package(Tpetra REQUIRED)
-find_package(Amesos2 REQUIRED)
-find_package(Belos REQUIRED)
-find_package(Ifpack2 REQUIRED)
-find_package(MueLu REQUIRED)
-find_package(VTK 9 REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)
+#
+# One definition, used twice:
+#  - by the top-level CMakeLists.txt (include(ContactlabDependencies)): a missing dependency is
+#    a fatal error;
+#  - installed next to contactlabConfig.cmake, which includes it to re-create in the consumer's
+#    project the contactlab::<Dep> targets (and the MPI::, VTK:: and trilinos_* targets behind
+#    them) that the exported contactlab:: targets link to. There _contactlab_in_config is TRUE:
+#    packages are looked up with find_dependency() (honouring QUIET/REQUIRED of
+#    find_package(contactlab)) and a missing dependency sets contactlab_FOUND to FALSE with a
+#    message and returns. contactlabConfig.cmake may set _contactlab_hint_<Name>: where <Name>
+#    was found when contactlab was built, searched after the consumer's own settings.
+# So: a third-party dependency of an installed library (even a PRIVATE one) is added here and
+# nowhere else, and build-only things (test frameworks, tools, compile options) stay out.
+
+if(_contactlab_in_config)
+  include(CMakeFindDependencyMacro)
+  set(_contactlab_required "")
+else()
+  set(_contactlab_required REQUIRED)
+endif()
+
+# _contactlab_find_package(<Name> [args...]): find_package(<Name> args... REQUIRED) in the build,
+# find_dependency(<Name> args... [HINTS hint]) in the installed config.
+macro(_contactlab_find_package _contactlab_name)
+  if(_contactlab_in_config)
+    if(_contactlab_hint_${_contactlab_name})
+      find_dependency(${_contactlab_name} ${ARGN} HINTS "${_contactlab_hint_${_contactlab_name}}")
+    else()
+      find_dependency(${_contactlab_name} ${ARGN})
+    endif()
+  else()
+    find_package(${_contactlab_name} ${ARGN} REQUIRED)
+  endif()
+endmacro()
+
+if(_contactlab_in_config)
+  # The installed targets need MPI::MPI_CXX only; asking for C too would fail in a consumer
+  # project that does not enable the C language.
+  _contactlab_find_package(MPI COMPONENTS CXX)
+else()
+  _contactlab_find_package(MPI COMPONENTS C CXX)
+endif()
+_contactlab_find_package(Tpetra)
+_contactlab_find_package(Amesos2)
+_contactlab_find_package(Belos)
+_contactlab_find_package(Ifpack2)
+_contactlab_find_package(MueLu)
+_contactlab_find_package(VTK 9 COMPONENTS CommonCore CommonDataModel IOXML)
 
 foreach(pkg Tpetra Amesos2 Belos Ifpack2 MueLu)
   if(NOT TARGET contactlab::${pkg})
@@ -18,13 +59,27 @@ foreach(pkg Tpetra Amesos2 Belos Ifpack2 MueLu)
   endif()
 endforeach()
 
-find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
-find_library(GMSH_LIBRARY gmsh REQUIRED)
-find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
-find_library(METIS_LIBRARY metis REQUIRED)
-find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
-find_library(MUMPS_LIBRARY dmumps REQUIRED)
-find_library(MUMPS_COMMON_LIBRARY mumps_common REQUIRED)
+find_path(GMSH_INCLUDE_DIR gmsh.h HINTS ${_contactlab_hint_GMSH} ${_contactlab_required})
+find_library(GMSH_LIBRARY gmsh HINTS ${_contactlab_hint_GMSH} ${_contactlab_required})
+find_path(METIS_INCLUDE_DIR metis.h HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
+find_library(METIS_LIBRARY metis HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h HINTS ${_contactlab_hint_MUMPS} ${_contactlab_required})
+find_library(MUMPS_LIBRARY dmumps HINTS ${_contactlab_hint_MUMPS} ${_contactlab_required})
+find_library(MUMPS_COMMON_LIBRARY mumps_common HINTS ${_contactlab_hint_MUMPS}
+             ${_contactlab_required})
+
+if(_contactlab_in_config)
+  foreach(_contactlab_var GMSH_INCLUDE_DIR GMSH_LIBRARY METIS_INCLUDE_DIR METIS_LIBRARY
+                          MUMPS_INCLUDE_DIR MUMPS_LIBRARY MUMPS_COMMON_LIBRARY)
+    if(NOT ${_contactlab_var})
+      string(CONCAT contactlab_NOT_FOUND_MESSAGE
+        "contactlab needs ${_contactlab_var} (Debian: libgmsh-dev, libmetis-dev, libmumps-dev): "
+        "set ${_contactlab_var} or add its prefix to CMAKE_PREFIX_PATH.")
+      set(contactlab_FOUND FALSE)
+      return()
+    endif()
+  endforeach()
+endif()
 
 foreach(lib GMSH METIS MUMPS)
   if(NOT TARGET contactlab::${lib})

@@ -3,6 +3,8 @@
 // Life cycle: setMatrix(A, patternChanged) whenever A's values (or pattern) changed, then any
 // number of solve() calls. A direct solver reuses its symbolic analysis while the pattern is
 // unchanged. Failures throw LinearSolverError with a sentence that names the cause.
+// Every method is collective over the communicator the solver was built with (and A's, which
+// must be the same): all ranks call them in the same order, and all ranks throw together.
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -24,13 +26,16 @@ struct Determinant {
   long exponent = 0;
   int sign() const { return mantissa > 0 ? 1 : (mantissa < 0 ? -1 : 0); }
   double log10Abs() const;  // log10 |det|
+  // Brings |mantissa| into [0.5, 1) by moving powers of two into the exponent.
+  static Determinant normalized(double mantissa, long exponent);
 };
 
 struct LinearSolverStats {
   int analyses = 0;
-  int factorizations = 0;
-  int solves = 0;
-  int iterations = 0;            // last solve, iterative solvers only
+  int factorizations = 0;  // numeric factorizations (preconditioner setups for Belos)
+  int solves = 0;          // solve() calls, whatever the number of right-hand sides
+  int iterations = 0;      // last solve, iterative solvers only (max over right-hand sides)
+  double relativeResidual = -1;  // last solve, max_j ||b_j - A x_j|| / ||b_j||; -1: not computed
   double analysisSeconds = 0;    // cumulated
   double factorizationSeconds = 0;
   double solveSeconds = 0;
@@ -42,10 +47,13 @@ class LinearSolver {
   virtual std::string name() const = 0;
   // Called after A's values changed. patternChanged = true forces a new symbolic analysis.
   virtual void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) = 0;
-  // Solves A x = b. b and x live on A's range / domain maps.
+  // Solves A x = b. b and x live on A's range / domain maps. x's input values are ignored.
   virtual void solve(const MultiVector& b, MultiVector& x) = 0;
-  // Only solvers that can compute them return a value (after setMatrix when requested in the
-  // solver's parameters).
+  // Near-null space of A on A's row map (e.g. the rigid-body modes in elasticity), used from the
+  // next setMatrix by solvers that can exploit it (algebraic multigrid); others ignore it.
+  virtual void setNearNullSpace(const Teuchos::RCP<const MultiVector>& /*nullSpace*/) {}
+  // Only solvers that can compute them return a value (after setMatrix, or after solve for the
+  // condition estimate, when requested in the solver's parameters).
   virtual std::optional<Determinant> determinant() const { return std::nullopt; }
   virtual std::optional<double> conditionEstimate() const { return std::nullopt; }
   virtual const LinearSolverStats& stats() const = 0;

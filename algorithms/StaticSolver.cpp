@@ -1,0 +1,132 @@
+#include "algorithms/StaticSolver.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace contactlab {
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validLoadSteps() {
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("Load Steps"));
+  p->set("Steps", 1, "Number of equal load steps from t = 0 to End Time (>= 1)");
+  p->set("End Time", 1.0, "Pseudo-time at the end of the load (> 0); ramps reach 1 there");
+  return p;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
+  p->set("Max Iterations", 20, "Newton iterations allowed per load step (>= 1)");
+  p->set("Relative Tolerance", 1e-10,
+         "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate||");
+  p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
+  return p;
+}
+
+StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& loadSteps,
+                                              const Teuchos::ParameterList& newton) {
+  StaticSolverOptions o;
+  o.steps = loadSteps.get<int>("Steps");
+  o.endTime = loadSteps.get<double>("End Time");
+  o.maxIterations = newton.get<int>("Max Iterations");
+  o.relativeTolerance = newton.get<double>("Relative Tolerance");
+  o.absoluteTolerance = newton.get<double>("Absolute Tolerance");
+  if (o.steps < 1) throw std::invalid_argument("Load Steps/Steps must be >= 1");
+  if (!(o.endTime > 0)) throw std::invalid_argument("Load Steps/End Time must be > 0");
+  if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");
+  if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0))
+    throw std::invalid_argument("Newton tolerances must be >= 0");
+  return o;
+}
+
+StaticSolver::StaticSolver(Problem& problem, LinearSolver& solver, StaticSolverOptions options)
+    : problem_(problem), solver_(solver), options_(options) {}
+
+RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
+                            const IterationCallback& onIteration) {
+  using clock = std::chrono::steady_clock;
+  RunReport report;
+  auto residual = problem_.createVector();
+  auto increment = problem_.createVector();
+  auto trial = problem_.createVector();
+  bool firstFactorization = true;
+
+  for (int step = 1; step <= options_.steps; ++step) {
+    StepReport sr;
+    sr.step = step;
+    sr.time = options_.endTime * step / options_.steps;
+    trial->assign(u);
+    problem_.applyDirichlet(sr.time, *trial);
+    double reference = 0;
+    bool converged = false;
+    for (int it = 0;; ++it) {
+      auto t0 = clock::now();
+      problem_.assemble(*trial, sr.time, residual.get(), true);
+      sr.seconds.assembly += seconds(t0);
+      const double norm = residual->norm2();
+      if (it == 0) reference = norm;
+      sr.residual = norm;
+      if (onIteration) onIteration(step, options_.steps, it, norm);
+      if (!std::isfinite(norm)) {
+        report.failure = "nan-detected";
+        report.message = "the residual is not finite at step " + std::to_string(step) +
+                         ", iteration " + std::to_string(it);
+        break;
+      }
+      if (norm <= std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) {
+        converged = true;
+        break;
+      }
+      if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
+        report.failure = "diverged";
+        report.message = "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " +
+                         std::to_string(norm);
+        break;
+      }
+      if (it == options_.maxIterations) {
+        report.failure = "max-iterations";
+        report.message = "Newton did not converge in " + std::to_string(it) +
+                         " iterations at step " + std::to_string(step) + " (||R|| = " +
+                         std::to_string(norm) + ", target " +
+                         std::to_string(options_.relativeTolerance * reference) + ")";
+        break;
+      }
+      t0 = clock::now();
+      try {
+        solver_.setMatrix(problem_.tangent(), firstFactorization);
+        firstFactorization = false;
+        residual->scale(-1.0);
+        increment->putScalar(0.0);
+        solver_.solve(*residual, *increment);
+      } catch (const LinearSolverError& e) {
+        sr.seconds.linearSolve += seconds(t0);
+        report.failure = "linear-solver-failed";
+        report.message = std::string(e.what()) + " (step " + std::to_string(step) + ")";
+        break;
+      }
+      sr.seconds.linearSolve += seconds(t0);
+      ++report.linearSolves;
+      ++sr.iterations;
+      trial->update(1.0, *increment, 1.0);
+    }
+    report.iterations += sr.iterations;
+    report.seconds.assembly += sr.seconds.assembly;
+    report.seconds.linearSolve += sr.seconds.linearSolve;
+    if (!converged) return report;
+    u.assign(*trial);
+    problem_.commitState();
+    ++report.steps;
+    auto t0 = clock::now();
+    if (onStep) onStep(sr, u);
+    report.seconds.output += seconds(t0);
+  }
+  report.converged = true;
+  return report;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,228 @@
+#include "apps/RunCommand.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "apps/DefaultScene.hpp"
+#include "apps/SceneModel.hpp"
+#include "core/io/CsvWriter.hpp"
+#include "core/io/InputError.hpp"
+#include "core/io/JsonWriter.hpp"
+#include "core/io/VtkSeriesWriter.hpp"
+#include "core/problem/Problem.hpp"
+
+namespace contactlab {
+namespace {
+
+double peakMemoryMB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports kB
+}
+
+JsonValue toJson(const Teuchos::ParameterList& list) {
+  JsonValue object = JsonValue::object();
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const auto& entry = list.entry(it);
+    const std::string& key = list.name(it);
+    if (entry.isList()) object.set(key, toJson(list.sublist(key)));
+    else if (entry.isType<double>()) object.set(key, Teuchos::getValue<double>(entry));
+    else if (entry.isType<int>()) object.set(key, Teuchos::getValue<int>(entry));
+    else if (entry.isType<bool>()) object.set(key, Teuchos::getValue<bool>(entry));
+    else if (entry.isType<std::string>()) object.set(key, Teuchos::getValue<std::string>(entry));
+    else if (entry.isType<Teuchos::Array<double>>())
+      object.set(key, JsonValue::array(Teuchos::getValue<Teuchos::Array<double>>(entry).toVector()));
+    else if (entry.isType<Teuchos::Array<int>>())
+      object.set(key, JsonValue::array(Teuchos::getValue<Teuchos::Array<int>>(entry).toVector()));
+  }
+  return object;
+}
+
+// A typed section as {"type": name, "parameters": {...}}.
+JsonValue typedSection(const Teuchos::ParameterList& section) {
+  const std::string type = section.get<std::string>("Type");
+  return JsonValue::object().set("type", type).set("parameters", toJson(section.sublist(type)));
+}
+
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
+  void iteration(int step, int steps, int iteration, double residual, double elapsed) {
+    if (!enabled_ || !tty_) return;
+    std::fprintf(stderr, "\r  step %d/%d  iteration %d  |R| = %.3e  elapsed %.1f s   ", step,
+                 steps, iteration, residual, elapsed);
+    std::fflush(stderr);
+  }
+  void step(const StepReport& s, int steps, double elapsed) {
+    if (!enabled_) return;
+    if (tty_) std::fprintf(stderr, "\r%70s\r", "");
+    std::fprintf(stderr, "  step %d/%d  t = %g  %d iterations  |R| = %.3e  elapsed %.1f s\n",
+                 s.step, steps, s.time, s.iterations, s.residual, elapsed);
+  }
+
+ private:
+  bool enabled_, tty_;
+};
+
+}  // namespace
+
+int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
+  const bool root = comm->getRank() == 0;
+
+  // 1. Read, validate and build everything that can fail on bad input: nothing is written yet.
+  SceneModel sm;
+  std::unique_ptr<Problem> problem;
+  std::unique_ptr<LinearSolver> solver;
+  try {
+    SceneFile file = options.scenePath.empty()
+                         ? readSceneText(kDefaultScene, "<default scene>", options.overrides)
+                         : readSceneFile(options.scenePath, options.overrides);
+    sm = loadScene(std::move(file), comm);
+    if (options.validateOnly) {
+      if (root)
+        std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
+                  << sm.model.mesh->numElements() << " elements)\n";
+    }
+    problem = std::make_unique<Problem>(sm.model, comm);
+    solver = buildLinearSolver(*sm.scene.params, comm);
+  } catch (const InputError& e) {
+    if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
+    return 2;
+  } catch (const LinearSolverError& e) {
+    if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
+    return 2;
+  }
+  if (options.validateOnly) return 0;
+  const double setupSeconds = elapsed();
+
+  const std::string outDir =
+      options.outputDirectory.empty() ? sm.outputDirectory : options.outputDirectory;
+  const auto& params = *sm.scene.params;
+  const int steps = sm.solverOptions.steps;
+  if (root)
+    std::cerr << "contactlab: " << sm.scene.name << ": " << problem->dofs().numGlobalDofs()
+              << " dofs on " << comm->getSize() << " rank(s), " << steps << " load step(s)\n";
+
+  // 2. Solve; each converged step is written at once.
+  auto rawComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+  MPI_Comm mpiComm = rawComm.is_null() ? MPI_COMM_SELF : *rawComm->getRawMpiComm();
+  std::unique_ptr<VtkSeriesWriter> vtk;
+  CsvWriter stepsCsv({"step", "time", "newton_iterations", "linear_solves", "residual",
+                      "contact_points", "stick_points", "slip_points", "cycling_events",
+                      "assembly_s", "pairing_s", "contact_s", "linear_solve_s"});
+  Progress progress(root);
+  auto u = problem->createVector();
+  StaticSolver driver(*problem, *solver, sm.solverOptions);
+  JsonValue probes = JsonValue::object();
+  auto recordProbes = [&](const Vector& solution) {
+    for (const auto& p : sm.probes) {
+      JsonValue value = JsonValue::array();
+      if (p.field == "displacement") {
+        const auto d = problem->nodeDisplacement(solution, p.node);
+        for (int c = 0; c < problem->dim(); ++c) value.push(d[c]);
+      } else {
+        for (double s : problem->nodeStress(solution, p.node)) value.push(s);
+      }
+      const double* x = &sm.model.mesh->coords[3 * p.node];
+      probes.set(p.name, JsonValue::object()
+                             .set("field", p.field)
+                             .set("point", JsonValue::array(std::vector<double>(
+                                               p.point.begin(), p.point.end())))
+                             .set("node", JsonValue::array(std::vector<double>(x, x + 3)))
+                             .set("distance", p.distance)
+                             .set("value", value));
+    }
+  };
+  auto onStep = [&](const StepReport& s, const Vector& solution) {
+    if (sm.writeVtk) {
+      if (!vtk) vtk = std::make_unique<VtkSeriesWriter>(outDir, "result", mpiComm);
+      vtk->writeStep(s.time, problem->outputPiece(solution));
+    }
+    stepsCsv.addRow(s.step, s.time, s.iterations, s.iterations, s.residual, 0, 0, 0, 0,
+                    s.seconds.assembly, 0.0, 0.0, s.seconds.linearSolve);
+    if (root) stepsCsv.write(outDir + "/steps.csv");
+    recordProbes(solution);
+    progress.step(s, steps, elapsed());
+  };
+  auto onIteration = [&](int step, int n, int it, double residual) {
+    if (root) progress.iteration(step, n, it, residual, elapsed());
+  };
+  const RunReport report = driver.run(*u, onStep, onIteration);
+
+  // 3. Summary, also when the run failed (the last converged step stays written).
+  const double localMemory = peakMemoryMB();
+  double maxMemory = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &localMemory, &maxMemory);
+  if (root) {
+    JsonValue reactions = JsonValue::object();
+    for (const auto& r : problem->reactions())
+      reactions.set(r.name, JsonValue::array(std::vector<double>(
+                                r.force.begin(), r.force.begin() + problem->dim())));
+    JsonValue summary = JsonValue::object();
+    summary.set("scene", sm.scene.name)
+        .set("scene_file", sm.scene.path)
+        .set("description", params.get<std::string>("Description"))
+        .set("converged", report.converged)
+        .set("failure", report.failure.empty() ? JsonValue() : JsonValue(report.failure))
+        .set("message", report.message.empty() ? JsonValue() : JsonValue(report.message))
+        .set("dimension", problem->dim())
+        .set("mesh", typedSection(params.sublist("Mesh")))
+        .set("formulation", JsonValue())
+        .set("discretization", JsonValue())
+        .set("algorithm", JsonValue::object()
+                              .set("type", "newton")
+                              .set("parameters", toJson(params.sublist("Newton"))))
+        .set("linear_solver", typedSection(params.sublist("Linear Solver")))
+        .set("dofs", static_cast<long long>(problem->dofs().numGlobalDofs()))
+        .set("unknowns", JsonValue::object()
+                             .set("displacement",
+                                  static_cast<long long>(problem->dofs().numGlobalDofs()))
+                             .set("contact_multipliers", 0)
+                             .set("friction_multipliers", 0))
+        .set("nodes", static_cast<long long>(sm.model.mesh->numNodes()))
+        .set("elements", static_cast<long long>(sm.model.mesh->numElements()))
+        .set("contact_points", 0)
+        .set("ranks", comm->getSize())
+        .set("load_steps", JsonValue::object().set("requested", steps).set("converged",
+                                                                          report.steps))
+        .set("iterations", JsonValue::object().set("newton", report.iterations))
+        .set("linear_solves", report.linearSolves)
+        .set("cycling", JsonValue::object())
+        .set("seconds", JsonValue::object()
+                            .set("setup", setupSeconds)
+                            .set("assembly", report.seconds.assembly)
+                            .set("pairing", 0.0)
+                            .set("contact", 0.0)
+                            .set("linear_solve", report.seconds.linearSolve)
+                            .set("output", report.seconds.output)
+                            .set("total", elapsed()))
+        .set("peak_memory_mb", maxMemory)
+        .set("contact", JsonValue())
+        .set("reactions", reactions)
+        .set("probes", probes)
+        .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
+    summary.write(outDir + "/summary.json");
+    if (report.converged) {
+      std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps
+                << " step(s), " << report.iterations << " Newton iterations, "
+                << elapsed() << " s\n";
+    } else {
+      std::cout << "contactlab: " << sm.scene.name << " FAILED (" << report.failure
+                << "): " << report.message << "\n";
+    }
+    if (vtk) std::cout << "  results: " << std::filesystem::absolute(vtk->pvdPath()).string() << "\n";
+    std::cout << "  summary: " << std::filesystem::absolute(outDir + "/summary.json").string()
+              << "\n";
+  }
+  return report.converged ? 0 : 1;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,22 @@
+#pragma once
+// `contactlab run`: solves a scene and writes the results contract (DESIGN.md §5):
+// result.pvd + .vtu/.pvtu per converged step, steps.csv, summary.json.
+#include <string>
+#include <vector>
+
+#include "core/problem/LinearAlgebra.hpp"
+
+namespace contactlab {
+
+struct RunOptions {
+  std::string scenePath;               // empty: the embedded default scene
+  std::string outputDirectory;         // empty: the scene's Output/Directory
+  std::vector<std::string> overrides;  // --set key=value
+  bool validateOnly = false;
+};
+
+// Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says
+// why), 2 bad input (nothing written).
+int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm);
+
+}  // namespace contactlab

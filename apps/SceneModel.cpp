@@ -1,0 +1,192 @@
+#include "apps/SceneModel.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <mpi.h>
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include "apps/SceneSchema.hpp"
+#include "core/io/InputError.hpp"
+#include "core/materials/MaterialRegistry.hpp"
+#include "core/mesh/MeshBroadcast.hpp"
+#include "core/mesh/MeshSourceRegistry.hpp"
+#include "linear/LinearSolverRegistry.hpp"
+
+namespace contactlab {
+namespace {
+
+using Teuchos::ParameterList;
+
+MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm) {
+  auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+  return mpi.is_null() ? MPI_COMM_SELF : *mpi->getRawMpiComm();
+}
+
+// Runs `build` on rank 0; an InputError there is rethrown on every rank.
+std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>()>& build,
+                                      MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  auto mesh = std::make_shared<Mesh>();
+  std::string error;
+  if (rank == 0) {
+    try {
+      mesh = std::shared_ptr<Mesh>(build());
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  int length = static_cast<int>(error.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  if (length > 0) {
+    error.resize(length);
+    MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
+    throw InputError(error);
+  }
+  broadcastMesh(*mesh, comm, 0);
+  return mesh;
+}
+
+LoadFunction loadFunction(const ParameterList& p, double endTime) {
+  LoadFunction f;
+  f.kind = p.get<std::string>("Function") == "constant" ? LoadFunction::Kind::Constant
+                                                         : LoadFunction::Kind::Ramp;
+  f.endTime = endTime;
+  return f;
+}
+
+std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
+                              const std::string& where, const std::string& path, int dim) {
+  const auto& v = p.get<Teuchos::Array<double>>(key);
+  if (static_cast<int>(v.size()) != dim && static_cast<int>(v.size()) != 3)
+    throw InputError(where + ": " + path + "/" + key + " must have " + std::to_string(dim) +
+                     " components");
+  std::array<double, 3> out{};
+  for (int i = 0; i < dim; ++i) out[i] = v[i];
+  return out;
+}
+
+}  // namespace
+
+SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
+  registerAll();
+  const std::string& where = scene.path;
+  ParameterList& p = *scene.params;
+  validateScene(p, where);
+  if (!p.get<std::string>("Name").empty()) scene.name = p.get<std::string>("Name");
+
+  SceneModel sm;
+  try {
+    sm.solverOptions =
+        StaticSolverOptions::from(p.sublist("Load Steps"), p.sublist("Newton"));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
+  }
+
+  // Mesh.
+  const ParameterList& meshSection = p.sublist("Mesh");
+  const std::string meshType = meshSection.get<std::string>("Type");
+  const auto& meshEntry = meshSourceRegistry().get(meshType);
+  const std::string sceneDir = scene.directory;
+  auto mesh = buildMeshOnRoot(
+      [&] {
+        try {
+          return meshEntry.build(meshSection.sublist(meshType), sceneDir);
+        } catch (const InputError&) {
+          throw;
+        } catch (const std::exception& e) {
+          throw InputError(where + ": Mesh: " + e.what());
+        }
+      },
+      rawComm(comm));
+  sm.model.mesh = mesh;
+  const int dim = mesh->dim;
+
+  // Materials, one per block.
+  const ParameterList& materials = p.sublist("Materials");
+  for (auto it = materials.begin(); it != materials.end(); ++it) {
+    const std::string& block = materials.name(it);
+    const ParameterList& m = materials.sublist(block);
+    const std::string type = m.get<std::string>("Type");
+    try {
+      sm.model.materials[block] = materialRegistry().get(type).build(m.sublist(type));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(where + ": Materials/" + block + ": " + e.what());
+    }
+  }
+
+  const double endTime = sm.solverOptions.endTime;
+  const ParameterList& dirichlet = p.sublist("Dirichlet");
+  for (auto it = dirichlet.begin(); it != dirichlet.end(); ++it) {
+    const ParameterList& d = dirichlet.sublist(dirichlet.name(it));
+    DirichletCondition bc;
+    bc.name = dirichlet.name(it);
+    bc.group = d.get<std::string>("Group");
+    for (char c : d.get<std::string>("Components"))
+      if (c - 'x' < dim) bc.components.push_back(c - 'x');
+    bc.value = d.get<double>("Value");
+    bc.function = loadFunction(d, endTime);
+    if (bc.group.empty()) throw InputError(where + ": Dirichlet/" + bc.name + "/Group is empty");
+    sm.model.dirichlet.push_back(bc);
+  }
+
+  const ParameterList& loads = p.sublist("Loads");
+  for (auto it = loads.begin(); it != loads.end(); ++it) {
+    const std::string name = loads.name(it);
+    const std::string path = "Loads/" + name;
+    const ParameterList& l = loads.sublist(name);
+    const std::string type = l.get<std::string>("Type");
+    if (type == "body-force") {
+      BodyForce b;
+      b.name = name;
+      b.block = l.get<std::string>("Block");
+      b.value = vector3(l, "Vector", where, path, dim);
+      b.function = loadFunction(l, endTime);
+      sm.model.bodyForces.push_back(b);
+      continue;
+    }
+    SurfaceLoad s;
+    s.name = name;
+    s.group = l.get<std::string>("Group");
+    if (s.group.empty()) throw InputError(where + ": " + path + "/Group is empty");
+    s.kind = type == "pressure" ? SurfaceLoad::Kind::Pressure : SurfaceLoad::Kind::Traction;
+    s.pressure = l.get<double>("Value");
+    s.traction = vector3(l, "Vector", where, path, dim);
+    s.function = loadFunction(l, endTime);
+    sm.model.surfaceLoads.push_back(s);
+  }
+
+  // Output and probes.
+  const ParameterList& output = p.sublist("Output");
+  sm.outputDirectory = output.get<std::string>("Directory");
+  if (sm.outputDirectory.empty()) sm.outputDirectory = "results/" + scene.name;
+  sm.writeVtk = output.get<bool>("VTK");
+  const ParameterList& probes = output.sublist("Probes");
+  for (auto it = probes.begin(); it != probes.end(); ++it) {
+    const ParameterList& pr = probes.sublist(probes.name(it));
+    Probe probe;
+    probe.name = probes.name(it);
+    probe.field = pr.get<std::string>("Field");
+    probe.point = vector3(pr, "Point", where, "Output/Probes/" + probe.name, dim);
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t n = 0; n < mesh->numNodes(); ++n) {
+      double d2 = 0;
+      for (int i = 0; i < 3; ++i) d2 += std::pow(mesh->coords[3 * n + i] - probe.point[i], 2);
+      if (d2 < best) best = d2, probe.node = static_cast<std::int64_t>(n);
+    }
+    probe.distance = std::sqrt(best);
+    sm.probes.push_back(probe);
+  }
+  sm.scene = std::move(scene);
+  return sm;
+}
+
+std::unique_ptr<LinearSolver> buildLinearSolver(const ParameterList& scene,
+                                                const Teuchos::RCP<const Comm>& comm) {
+  const ParameterList& section = scene.sublist("Linear Solver");
+  const std::string type = section.get<std::string>("Type");
+  return linearSolverRegistry().get(type).build(section.sublist(type), comm);
+}
+
+}  // namespace contactlab

@@ -1,0 +1,43 @@
+#pragma once
+// A validated scene turned into the objects that run it: the mesh (built on rank 0 and
+// broadcast), the solid model, the solver options and the probes.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "algorithms/StaticSolver.hpp"
+#include "core/io/SceneFile.hpp"
+#include "core/problem/SolidModel.hpp"
+#include "linear/LinearSolver.hpp"
+
+namespace contactlab {
+
+struct Probe {
+  std::string name;
+  std::string field;  // "displacement" or "stress"
+  std::array<double, 3> point{};
+  std::int64_t node = -1;  // closest mesh node
+  double distance = 0;
+};
+
+struct SceneModel {
+  SceneFile scene;  // validated, defaults filled in
+  SolidModel model;
+  StaticSolverOptions solverOptions;
+  std::vector<Probe> probes;
+  std::string outputDirectory;
+  bool writeVtk = true;
+};
+
+// Reads, validates and builds. Collective: every rank calls it with the same arguments.
+// Throws InputError (same message on every rank) for anything wrong in the input.
+SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm);
+
+// The scene's linear solver (collective).
+std::unique_ptr<LinearSolver> buildLinearSolver(const Teuchos::ParameterList& scene,
+                                                const Teuchos::RCP<const Comm>& comm);
+
+}  // namespace contactlab

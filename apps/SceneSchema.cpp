@@ -1,0 +1,218 @@
+#include "apps/SceneSchema.hpp"
+
+#include <sstream>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "algorithms/StaticSolver.hpp"
+#include "core/io/InputError.hpp"
+#include "core/io/ParameterValidation.hpp"
+#include "core/materials/MaterialRegistry.hpp"
+#include "core/mesh/MeshSourceRegistry.hpp"
+#include "linear/LinearSolverRegistry.hpp"
+
+namespace contactlab {
+namespace {
+
+using Teuchos::ParameterList;
+
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> choices(const std::vector<std::string>& v) {
+  return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(v)));
+}
+
+// `Type: <name>` plus the sublist of that type's parameters.
+template <class RegistryT>
+ParameterList typedSection(const RegistryT& registry, const ParameterList* user,
+                           const std::string& defaultType, const std::string& where,
+                           const std::string& path) {
+  std::string type = defaultType;
+  if (user && user->isParameter("Type")) {
+    if (!user->isType<std::string>("Type"))
+      throw InputError(where + ": " + path + "/Type must be a string");
+    type = user->get<std::string>("Type");
+  }
+  if (!registry.has(type))
+    throw InputError(where + ": unknown " + registry.axis() + " '" + type + "' in " + path +
+                     "/Type; valid choices: " + registry.joinedNames());
+  ParameterList section(path);
+  section.set("Type", defaultType, "The " + registry.axis() + " (one of: " +
+                                       registry.joinedNames() + ")",
+              choices(registry.names()));
+  section.set(type, *registry.get(type).validParameters());
+  return section;
+}
+
+const ParameterList* userSublist(const ParameterList* user, const std::string& key) {
+  return user && user->isSublist(key) ? &user->sublist(key) : nullptr;
+}
+
+// A section holding one sublist per user-chosen name, each following `item`.
+ParameterList namedSection(const ParameterList* user, const std::string& path,
+                           const std::string& where,
+                           const std::function<ParameterList(const ParameterList&,
+                                                             const std::string&)>& item) {
+  ParameterList section(path);
+  if (!user) return section;
+  for (auto it = user->begin(); it != user->end(); ++it) {
+    const std::string& name = user->name(it);
+    if (!user->entry(it).isList())
+      throw InputError(where + ": " + path + "/" + name + " must be a sublist (e.g. " + name +
+                       ": {Group: top, ...})");
+    section.set(name, item(user->sublist(name), path + "/" + name));
+  }
+  return section;
+}
+
+ParameterList dirichletItem() {
+  ParameterList p;
+  p.set("Group", "", "Boundary physical group whose nodes are constrained");
+  p.set("Components", "xyz",
+        "Constrained components: any of x, y, z (e.g. 'y', 'xy'); 'xyz' constrains all",
+        choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
+  p.set("Value", 0.0, "Prescribed displacement at the end of the load");
+  p.set("Function", "ramp",
+        "Time scaling: 'ramp' = Value * t / End Time, 'constant' = Value at every step",
+        choices({"ramp", "constant"}));
+  return p;
+}
+
+ParameterList loadItem() {
+  ParameterList p;
+  p.set("Type", "pressure",
+        "'pressure' (Value, against the outward normal of Group's facets), 'traction' (Vector "
+        "per unit area on Group's facets) or 'body-force' (Vector per unit volume in Block)",
+        choices({"pressure", "traction", "body-force"}));
+  p.set("Group", "", "Boundary physical group (pressure, traction)");
+  p.set("Block", "", "Element block (body-force); empty means every block");
+  p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
+  p.set("Vector", Teuchos::Array<double>(3, 0.0),
+        "Force per unit area (traction) or volume (body-force) at the end of the load");
+  p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",
+        choices({"ramp", "constant"}));
+  return p;
+}
+
+ParameterList probeItem() {
+  ParameterList p;
+  p.set("Point", Teuchos::Array<double>(3, 0.0),
+        "Location; the probe reads the mesh node closest to it (reported with its distance)");
+  p.set("Field", "displacement",
+        "'displacement' (vector) or 'stress' (6 Voigt components, nodal average of element "
+        "averages)",
+        choices({"displacement", "stress"}));
+  return p;
+}
+
+ParameterList outputSection(const ParameterList* user, const std::string& where) {
+  ParameterList p("Output");
+  p.set("Directory", "",
+        "Results folder; empty means results/<scene name> (the --out option overrides it)");
+  p.set("VTK", true, "Write result.pvd and one .vtu (.pvtu on several ranks) per step");
+  p.set("Probes", namedSection(userSublist(user, "Probes"), "Output/Probes", where,
+                               [](const ParameterList&, const std::string&) {
+                                 return probeItem();
+                               }));
+  return p;
+}
+
+}  // namespace
+
+void registerAll() {
+  registerMeshSources();
+  registerMaterials();
+  registerLinearSolvers();
+}
+
+ParameterList sceneSchema(const ParameterList& scene, const std::string& where) {
+  ParameterList valid("contactlab");
+  valid.set("Name", "", "Scene name, used for the default results folder");
+  valid.set("Description", "", "Free text, copied to summary.json");
+  valid.set("Mesh", typedSection(meshSourceRegistry(), userSublist(&scene, "Mesh"), "rectangle",
+                                 where, "Mesh"));
+  valid.set("Materials",
+            namedSection(userSublist(&scene, "Materials"), "Materials", where,
+                         [&](const ParameterList& user, const std::string& path) {
+                           return typedSection(materialRegistry(), &user, "linear-elastic",
+                                               where, path);
+                         }));
+  valid.set("Dirichlet", namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,
+                                      [](const ParameterList&, const std::string&) {
+                                        return dirichletItem();
+                                      }));
+  valid.set("Loads", namedSection(userSublist(&scene, "Loads"), "Loads", where,
+                                  [](const ParameterList&, const std::string&) {
+                                    return loadItem();
+                                  }));
+  valid.set("Load Steps", *StaticSolverOptions::validLoadSteps());
+  valid.set("Newton", *StaticSolverOptions::validNewton());
+  valid.set("Linear Solver", typedSection(linearSolverRegistry(),
+                                          userSublist(&scene, "Linear Solver"), "mumps", where,
+                                          "Linear Solver"));
+  valid.set("Output", outputSection(userSublist(&scene, "Output"), where));
+  return valid;
+}
+
+void validateScene(ParameterList& scene, const std::string& where) {
+  const ParameterList valid = sceneSchema(scene, where);
+  validateAndSetDefaults(scene, valid, where);
+  if (scene.sublist("Materials").numParams() == 0)
+    throw InputError(where + ": Materials is empty; give one sublist per element block, e.g. "
+                             "Materials: {body: {Type: linear-elastic, linear-elastic: {E: 1, "
+                             "nu: 0.3}}}");
+}
+
+namespace {
+
+void describeList(std::ostream& out, const ParameterList& list, const std::string& indent) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const auto& entry = list.entry(it);
+    const std::string& key = list.name(it);
+    if (entry.isList()) {
+      out << indent << "- `" << key << "`:\n";
+      describeList(out, list.sublist(key), indent + "  ");
+      continue;
+    }
+    std::ostringstream value;
+    entry.getAny(false).print(value);
+    out << indent << "- `" << key << "` (default `" << value.str() << "`): " << entry.docString()
+        << "\n";
+  }
+}
+
+template <class RegistryT>
+void describeRegistry(std::ostream& out, const RegistryT& registry, const std::string& section) {
+  out << "### " << section << " — " << registry.axis() << " registry\n\n";
+  for (const auto& name : registry.names()) {
+    const auto& entry = registry.get(name);
+    out << "#### `" << name << "`\n\n" << entry.doc << "\n\n";
+    describeList(out, *entry.validParameters(), "");
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+std::string sceneReference() {
+  std::ostringstream out;
+  out << "## Sections\n\n";
+  ParameterList dirichlet = dirichletItem(), load = loadItem(), probe = probeItem();
+  out << "### Dirichlet/<name>\n\n";
+  describeList(out, dirichlet, "");
+  out << "\n### Loads/<name>\n\n";
+  describeList(out, load, "");
+  out << "\n### Load Steps\n\n";
+  describeList(out, *StaticSolverOptions::validLoadSteps(), "");
+  out << "\n### Newton\n\n";
+  describeList(out, *StaticSolverOptions::validNewton(), "");
+  out << "\n### Output\n\n";
+  describeList(out, outputSection(nullptr, ""), "");
+  out << "\n### Output/Probes/<name>\n\n";
+  describeList(out, probe, "");
+  out << "\n## Registries\n\n";
+  describeRegistry(out, meshSourceRegistry(), "Mesh");
+  describeRegistry(out, materialRegistry(), "Materials/<block>");
+  describeRegistry(out, linearSolverRegistry(), "Linear Solver");
+  return out.str();
+}
+
+}  // namespace contactlab

@@ -1,0 +1,221 @@
+#include "core/mesh/GeneratorSupport.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace contactlab {
+
+std::string typeList(std::initializer_list<ElementType> types) {
+  std::string s;
+  for (auto t : types) s += (s.empty() ? "" : ", ") + std::string(info(t).name);
+  return s;
+}
+
+ElementSpec elementSpec(const std::string& generator, const std::string& name,
+                        std::initializer_list<ElementType> allowed) {
+  for (auto t : allowed) {
+    if (name != info(t).name) continue;
+    const bool simplex = t == ElementType::Tri3 || t == ElementType::Tri6 ||
+                         t == ElementType::Tet4 || t == ElementType::Tet10;
+    const bool serendipity = t == ElementType::Quad8 || t == ElementType::Hex20;
+    return {t, simplex, info(t).order, serendipity};
+  }
+  throw std::invalid_argument(generator + " generator: element type '" + name +
+                              "' is not supported; valid choices: " + typeList(allowed));
+}
+
+void requirePositive(const std::string& generator, const std::string& param, double value) {
+  if (!(value > 0) || !std::isfinite(value))
+    throw std::invalid_argument(generator + " generator: " + param + " = " +
+                                std::to_string(value) + " must be a positive number");
+}
+
+void requireDivisions(const std::string& generator, const std::string& param, int value) {
+  if (value < 1)
+    throw std::invalid_argument(generator + " generator: " + param + " = " +
+                                std::to_string(value) + " must be at least 1");
+}
+
+void requireGrading(const std::string& generator, const ContactGrading& g) {
+  requirePositive(generator, "grading.sizeContact", g.sizeContact);
+  requirePositive(generator, "grading.sizeFar", g.sizeFar);
+  requirePositive(generator, "grading.transitionLength", g.transitionLength);
+  if (!(g.fineRadius >= 0))
+    throw std::invalid_argument(generator + " generator: grading.fineRadius = " +
+                                std::to_string(g.fineRadius) + " must not be negative");
+  if (g.sizeFar < g.sizeContact)
+    throw std::invalid_argument(generator + " generator: grading.sizeFar = " +
+                                std::to_string(g.sizeFar) +
+                                " must not be smaller than grading.sizeContact = " +
+                                std::to_string(g.sizeContact));
+}
+
+void resetMeshOptions() {
+  using gmsh::option::setNumber;
+  // Mesh.Algorithm 8 (frontal-Delaunay for quads) crashes in gmsh 4.8.4: use 6 and recombine.
+  setNumber("Mesh.Algorithm", 6);
+  setNumber("Mesh.Algorithm3D", 1);
+  setNumber("Mesh.RecombineAll", 0);
+  setNumber("Mesh.RecombinationAlgorithm", 1);
+  setNumber("Mesh.Recombine3DAll", 0);
+  setNumber("Mesh.SubdivisionAlgorithm", 0);
+  setNumber("Mesh.ElementOrder", 1);
+  setNumber("Mesh.SecondOrderIncomplete", 0);
+  setNumber("Mesh.SecondOrderLinear", 0);
+  setNumber("Mesh.HighOrderOptimize", 0);
+  setNumber("Mesh.MeshSizeFromPoints", 1);
+  setNumber("Mesh.MeshSizeFromCurvature", 0);
+  setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+  setNumber("Mesh.MeshSizeMin", 0);
+  setNumber("Mesh.MeshSizeMax", 1e22);
+  setNumber("Mesh.MeshSizeFactor", 1);
+  setNumber("Mesh.Optimize", 1);
+}
+
+void applyOrder(const ElementSpec& spec) {
+  if (spec.order < 2) return;
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", spec.serendipity ? 1 : 0);
+  gmsh::model::mesh::setOrder(spec.order);
+}
+
+void addGroup(int dim, const std::vector<int>& tags, const std::string& name) {
+  const int tag = gmsh::model::addPhysicalGroup(dim, tags);
+  gmsh::model::setPhysicalName(dim, tag, name);
+}
+
+std::array<double, 3> centerOfMass(int dim, int tag) {
+  std::array<double, 3> c{};
+  gmsh::model::occ::getCenterOfMass(dim, tag, c[0], c[1], c[2]);
+  return c;
+}
+
+namespace {
+
+// Index of the first `planes` entry (pairs of axis, coordinate) that `point` lies on.
+int planeIndex(const std::array<double, 3>& point,
+               const std::vector<std::pair<int, double>>& planes, double tol) {
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    if (std::abs(point[planes[i].first] - planes[i].second) < tol) return static_cast<int>(i);
+  throw std::logic_error("structured block: an OpenCASCADE entity lies on none of its planes");
+}
+
+// Distinct curves bounding `dimTags` (surfaces or a volume's faces).
+std::vector<int> curvesOf(const gmsh::vectorpair& surfaces) {
+  gmsh::vectorpair curves;
+  gmsh::model::getBoundary(surfaces, curves, false, false, false);
+  std::vector<int> tags;
+  for (const auto& c : curves) tags.push_back(std::abs(c.second));
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  return tags;
+}
+
+// Transfinite curve with divisions[axis] segments, axis = direction of the straight curve.
+void setCurveDivisions(int curve, const std::array<int, 3>& divisions) {
+  std::array<double, 6> b{};
+  gmsh::model::getBoundingBox(1, curve, b[0], b[1], b[2], b[3], b[4], b[5]);
+  const std::array<double, 3> extent{b[3] - b[0], b[4] - b[1], b[5] - b[2]};
+  const auto axis = std::max_element(extent.begin(), extent.end()) - extent.begin();
+  gmsh::model::mesh::setTransfiniteCurve(curve, divisions[axis] + 1);
+}
+
+}  // namespace
+
+RectangleEntities addStructuredRectangle(const std::array<double, 2>& origin,
+                                         const std::array<double, 2>& lengths,
+                                         const std::array<int, 2>& divisions, bool recombine) {
+  namespace occ = gmsh::model::occ;
+  RectangleEntities r{};
+  r.surface = occ::addRectangle(origin[0], origin[1], 0, lengths[0], lengths[1]);
+  occ::synchronize();
+  const double tol = 1e-8 * std::max(lengths[0], lengths[1]);
+  const double x1 = origin[0] + lengths[0], y1 = origin[1] + lengths[1];
+  const std::vector<std::pair<int, double>> sides{
+      {1, origin[1]}, {0, x1}, {1, y1}, {0, origin[0]}};
+  for (int c : curvesOf({{2, r.surface}})) {
+    r.sides[planeIndex(centerOfMass(1, c), sides, tol)] = c;
+    setCurveDivisions(c, {divisions[0], divisions[1], 1});
+  }
+  gmsh::vectorpair points;
+  gmsh::model::getBoundary({{2, r.surface}}, points, false, false, true);
+  for (const auto& p : points) {
+    std::vector<double> x;
+    gmsh::model::getValue(0, p.second, {}, x);
+    const bool right = std::abs(x[0] - x1) < tol, top = std::abs(x[1] - y1) < tol;
+    r.corners[top ? (right ? 2 : 3) : (right ? 1 : 0)] = p.second;
+  }
+  gmsh::model::mesh::setTransfiniteSurface(r.surface);
+  if (recombine) gmsh::model::mesh::setRecombine(2, r.surface);
+  return r;
+}
+
+BoxEntities addStructuredBox(const std::array<double, 3>& origin,
+                             const std::array<double, 3>& lengths,
+                             const std::array<int, 3>& divisions, bool recombine) {
+  namespace occ = gmsh::model::occ;
+  BoxEntities b{};
+  b.volume = occ::addBox(origin[0], origin[1], origin[2], lengths[0], lengths[1], lengths[2]);
+  occ::synchronize();
+  const double tol = 1e-8 * *std::max_element(lengths.begin(), lengths.end());
+  std::vector<std::pair<int, double>> planes;
+  for (int axis = 0; axis < 3; ++axis) {
+    planes.emplace_back(axis, origin[axis]);
+    planes.emplace_back(axis, origin[axis] + lengths[axis]);
+  }
+  gmsh::vectorpair faces;
+  gmsh::model::getBoundary({{3, b.volume}}, faces, false, false, false);
+  for (auto& f : faces) f.second = std::abs(f.second);
+  for (const auto& f : faces) b.faces[planeIndex(centerOfMass(2, f.second), planes, tol)] = f.second;
+  for (int c : curvesOf(faces)) setCurveDivisions(c, divisions);
+  for (const auto& f : faces) {
+    gmsh::model::mesh::setTransfiniteSurface(f.second);
+    if (recombine) gmsh::model::mesh::setRecombine(2, f.second);
+  }
+  gmsh::model::mesh::setTransfiniteVolume(b.volume);
+  if (recombine) gmsh::model::mesh::setRecombine(3, b.volume);
+  return b;
+}
+
+void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& g,
+                    double sizeFactor) {
+  // A size callback instead of Distance/Threshold fields: the field option names changed
+  // between gmsh versions, the callback did not.
+  gmsh::model::mesh::setSizeCallback([point, g, sizeFactor](int, int, double x, double y,
+                                                            double z) {
+    const double d = std::sqrt((x - point[0]) * (x - point[0]) + (y - point[1]) * (y - point[1]) +
+                               (z - point[2]) * (z - point[2]));
+    const double t = std::clamp((d - g.fineRadius) / g.transitionLength, 0.0, 1.0);
+    return sizeFactor * (g.sizeContact + t * (g.sizeFar - g.sizeContact));
+  });
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  try {
+    gmsh::model::mesh::generate(dim);
+  } catch (...) {
+    gmsh::model::mesh::removeSizeCallback();
+    throw;
+  }
+  gmsh::model::mesh::removeSizeCallback();
+}
+
+void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy,
+                       double degrees) {
+  if (degrees == 0) return;
+  std::vector<std::int64_t> nodes;
+  for (const auto* g : mesh.findBlocks(name)) nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+  for (auto n : nodes) {
+    double& x = mesh.coords[3 * n];
+    double& y = mesh.coords[3 * n + 1];
+    const double dx = x - cx, dy = y - cy;
+    x = cx + c * dx - s * dy;
+    y = cy + s * dx + c * dy;
+  }
+}
+
+}  // namespace contactlab

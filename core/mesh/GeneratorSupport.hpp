@@ -1,0 +1,74 @@
+#pragma once
+// Internal to core/mesh: pieces shared by the built-in generators. All functions act on gmsh's
+// current model and must run inside inGmshModel.
+#include <array>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "core/mesh/ElementType.hpp"
+#include "core/mesh/Mesh.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+
+struct ElementSpec {
+  ElementType type;
+  bool simplex;      // tri/tet (else quad/hex, obtained by recombination)
+  int order;         // 1 or 2
+  bool serendipity;  // quad8/hex20
+};
+
+// Throws std::invalid_argument "<generator> generator: element type 'x' is not supported;
+// valid choices: ..." unless `name` is one of `allowed`.
+ElementSpec elementSpec(const std::string& generator, const std::string& name,
+                        std::initializer_list<ElementType> allowed);
+
+// Parameter validation, std::invalid_argument naming generator and parameter.
+void requirePositive(const std::string& generator, const std::string& param, double value);
+void requireDivisions(const std::string& generator, const std::string& param, int value);
+void requireGrading(const std::string& generator, const ContactGrading& grading);
+
+// Sets every gmsh option the generators depend on, so earlier gmsh use cannot leak in.
+void resetMeshOptions();
+
+// Raises the order of the generated mesh to spec.order (complete or serendipity).
+void applyOrder(const ElementSpec& spec);
+
+// Adds a named physical group.
+void addGroup(int dim, const std::vector<int>& tags, const std::string& name);
+
+std::array<double, 3> centerOfMass(int dim, int tag);
+
+// Transfinite (structured) rectangle in z = 0, synchronised; recombine for quads.
+struct RectangleEntities {
+  int surface;
+  std::array<int, 4> sides;    // bottom, right, top, left
+  std::array<int, 4> corners;  // bottom-left, bottom-right, top-right, top-left
+};
+RectangleEntities addStructuredRectangle(const std::array<double, 2>& origin,
+                                         const std::array<double, 2>& lengths,
+                                         const std::array<int, 2>& divisions, bool recombine);
+
+// Transfinite box, synchronised; hexes with recombine, else 6 tets per hex.
+struct BoxEntities {
+  int volume;
+  std::array<int, 6> faces;  // xmin, xmax, ymin, ymax, zmin, zmax
+};
+BoxEntities addStructuredBox(const std::array<double, 3>& origin,
+                             const std::array<double, 3>& lengths,
+                             const std::array<int, 3>& divisions, bool recombine);
+
+// Generates the mesh of dimension `dim` with sizes graded from `point` (scaled by
+// `sizeFactor`, e.g. 2 when a later subdivision halves every edge).
+void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& grading,
+                    double sizeFactor);
+
+// Rotates the nodes of block `name` about the vertical axis through (cx, cy), in degrees.
+void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy,
+                       double degrees);
+
+// "tri3, tri6, ..." for messages.
+std::string typeList(std::initializer_list<ElementType> types);
+
+}  // namespace contactlab

@@ -1,0 +1,109 @@
+#pragma once
+// Built-in meshes, generated in-process with gmsh's OpenCASCADE kernel on the calling rank
+// (broadcast them with broadcastMesh). `elementType` is a contactlab element type name
+// (ElementType.hpp); order-2 types are complete (tri6, quad9, tet10, hex27) or serendipity
+// (quad8, hex20). Structured generators give exactly the requested number of cells. Invalid
+// parameters throw std::invalid_argument naming the generator, the parameter and the valid
+// choices. Group names are listed with each generator.
+#include <array>
+#include <string>
+
+#include "core/mesh/Mesh.hpp"
+
+namespace contactlab {
+
+// [x0, x0+Lx] x [y0, y0+Ly], nx*ny quads (tri: each quad split in two, 2*nx*ny cells).
+// Types: tri3 tri6 quad4 quad8 quad9. Block "body"; boundaries "bottom", "right", "top",
+// "left" (lines); points "corner-bl", "corner-br", "corner-tr", "corner-tl".
+struct RectangleParams {
+  std::array<double, 2> origin{0.0, 0.0};
+  std::array<double, 2> lengths{1.0, 1.0};
+  std::array<int, 2> divisions{1, 1};
+  std::string elementType = "quad4";
+};
+Mesh generateRectangle(const RectangleParams& p);
+
+// Box origin + [0,Lx]x[0,Ly]x[0,Lz], nx*ny*nz hexes (tet: each hex split into 6 tets of a
+// transfinite volume, 6*nx*ny*nz cells). Types: tet4 tet10 hex8 hex20 hex27. Block "body";
+// faces "xmin", "xmax", "ymin", "ymax", "zmin", "zmax".
+struct BoxParams {
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+  std::array<double, 3> lengths{1.0, 1.0, 1.0};
+  std::array<int, 3> divisions{1, 1, 1};
+  std::string elementType = "hex8";
+};
+Mesh generateBox(const BoxParams& p);
+
+// Mesh size as a function of the distance d to the contact point: sizeContact for
+// d <= fineRadius, then growing linearly to sizeFar over transitionLength.
+struct ContactGrading {
+  double sizeContact = 0.05;
+  double sizeFar = 0.25;
+  double fineRadius = 0.1;
+  double transitionLength = 0.5;
+};
+
+// Lower half of the disc of `radius` around `centre`: flat side "flat" on y = centre_y, arc
+// "curved" below touching y = centre_y - radius at the contact point (centre_x, centre_y - R),
+// which is always a mesh node (point group "contact-point"). Unstructured, graded towards the
+// contact point. Types: tri3 tri6 quad4 quad8 quad9 (quads: all-quad blossom recombination).
+// Block "body".
+struct HalfDiscParams {
+  std::array<double, 2> centre{0.0, 1.0};
+  double radius = 1.0;
+  ContactGrading grading;
+  std::string elementType = "tri3";
+};
+Mesh generateHalfDisc(const HalfDiscParams& p);
+
+// Lower half of the ball of `radius` around `centre`: flat face "flat" on z = centre_z, curved
+// face "curved" touching z = centre_z - radius at the contact point, a mesh node (point group
+// "contact-point"), away from the sphere's poles and seams. Unstructured, graded towards the
+// contact point. Types: tet4 tet10, and hex8 hex20 hex27 (each tet split into 4 hexes: valid
+// but poorer quality). Block "body".
+struct HalfSphereParams {
+  std::array<double, 3> centre{0.0, 0.0, 1.0};
+  double radius = 1.0;
+  ContactGrading grading{0.1, 0.3, 0.1, 0.5};
+  std::string elementType = "tet4";
+};
+Mesh generateHalfSphere(const HalfSphereParams& p);
+
+// Patch-test geometry: two separately meshed (non-matching, disjoint nodes) blocks of width
+// Lx. "lower" is origin + [0,Lx]x[0,lowerHeight]; "upper" starts `gap` above its top (gap < 0
+// is an overlap) and is upperHeight high. upperRotationDeg turns the upper block's mesh about
+// the vertical axis through its centre (counter-clockwise, degrees). Types: tri3 tri6 quad4
+// quad8 quad9. Blocks "lower", "upper"; boundaries "lower-bottom", "lower-top", "lower-left",
+// "lower-right", "upper-bottom", "upper-top", "upper-left", "upper-right" (names refer to the
+// unrotated blocks).
+struct StackedBlocks2DParams {
+  std::array<double, 2> origin{0.0, 0.0};
+  double width = 1.0;
+  double lowerHeight = 1.0;
+  double upperHeight = 1.0;
+  double gap = 0.0;
+  std::array<int, 2> lowerDivisions{2, 2};
+  std::array<int, 2> upperDivisions{3, 3};
+  double upperRotationDeg = 0.0;
+  std::string elementType = "quad4";
+};
+Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p);
+
+// 3D version: footprint [0,Lx]x[0,Ly] from origin, blocks stacked along z, rotation about the
+// vertical (z) axis through the upper block's centre. Types: tet4 tet10 hex8 hex20 hex27.
+// Blocks "lower", "upper"; faces "<block>-bottom" (zmin), "<block>-top" (zmax),
+// "<block>-xmin", "<block>-xmax", "<block>-ymin", "<block>-ymax" for block lower and upper.
+struct StackedBlocks3DParams {
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+  std::array<double, 2> footprint{1.0, 1.0};
+  double lowerHeight = 1.0;
+  double upperHeight = 1.0;
+  double gap = 0.0;
+  std::array<int, 3> lowerDivisions{2, 2, 2};
+  std::array<int, 3> upperDivisions{3, 3, 3};
+  double upperRotationDeg = 0.0;
+  std::string elementType = "hex8";
+};
+Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p);
+
+}  // namespace contactlab

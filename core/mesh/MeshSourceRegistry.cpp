@@ -1,0 +1,220 @@
+#include "core/mesh/MeshSourceRegistry.hpp"
+
+#include <filesystem>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "core/io/InputError.hpp"
+#include "core/mesh/GmshReader.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+namespace {
+
+using Teuchos::Array;
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+
+RCP<const Teuchos::ParameterEntryValidator> oneOf(const std::vector<std::string>& names) {
+  return Teuchos::rcp(new Teuchos::StringValidator(Array<std::string>(names)));
+}
+
+const std::vector<std::string> k2D{"tri3", "tri6", "quad4", "quad8", "quad9"};
+const std::vector<std::string> k3D{"tet4", "tet10", "hex8", "hex20", "hex27"};
+
+template <std::size_t N, class T>
+std::array<T, N> fixed(const ParameterList& p, const std::string& key) {
+  const auto& a = p.get<Array<T>>(key);
+  if (a.size() != N)
+    throw std::invalid_argument(key + " must have " + std::to_string(N) + " components");
+  std::array<T, N> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+  return out;
+}
+
+void addGrading(ParameterList& p, const ContactGrading& g) {
+  p.set("Size Contact", g.sizeContact, "Element size near the contact point");
+  p.set("Size Far", g.sizeFar, "Element size far from the contact point");
+  p.set("Fine Radius", g.fineRadius, "Distance from the contact point meshed at Size Contact");
+  p.set("Transition Length", g.transitionLength,
+        "Distance over which the size grows from Size Contact to Size Far");
+}
+
+ContactGrading grading(const ParameterList& p) {
+  return {p.get<double>("Size Contact"), p.get<double>("Size Far"), p.get<double>("Fine Radius"),
+          p.get<double>("Transition Length")};
+}
+
+RCP<const ParameterList> fileParameters() {
+  auto p = Teuchos::rcp(new ParameterList("file"));
+  p->set("Path", "", "gmsh .msh file (format 4 or 2.2), relative to the scene file's folder");
+  return p;
+}
+
+RCP<const ParameterList> rectangleParameters() {
+  auto p = Teuchos::rcp(new ParameterList("rectangle"));
+  p->set("Origin", Array<double>{0.0, 0.0}, "Lower-left corner");
+  p->set("Lx", 1.0, "Width");
+  p->set("Ly", 1.0, "Height");
+  p->set("nx", 4, "Divisions along x");
+  p->set("ny", 4, "Divisions along y");
+  p->set("Element", "quad4", "Element type (tri3 splits each quad in two)", oneOf(k2D));
+  return p;
+}
+
+RCP<const ParameterList> boxParameters() {
+  auto p = Teuchos::rcp(new ParameterList("box"));
+  p->set("Origin", Array<double>{0.0, 0.0, 0.0}, "Corner with the smallest coordinates");
+  p->set("Lx", 1.0, "Length along x");
+  p->set("Ly", 1.0, "Length along y");
+  p->set("Lz", 1.0, "Length along z");
+  p->set("nx", 2, "Divisions along x");
+  p->set("ny", 2, "Divisions along y");
+  p->set("nz", 2, "Divisions along z");
+  p->set("Element", "hex8", "Element type (tets: 6 per hex cell)", oneOf(k3D));
+  return p;
+}
+
+RCP<const ParameterList> halfDiscParameters() {
+  auto p = Teuchos::rcp(new ParameterList("half-disc"));
+  HalfDiscParams d;
+  p->set("Centre", Array<double>{d.centre[0], d.centre[1]},
+         "Centre of the disc; the flat side lies at its height");
+  p->set("Radius", d.radius, "Radius");
+  addGrading(*p, d.grading);
+  p->set("Element", "tri3", "Element type", oneOf(k2D));
+  return p;
+}
+
+RCP<const ParameterList> halfSphereParameters() {
+  auto p = Teuchos::rcp(new ParameterList("half-sphere"));
+  HalfSphereParams d;
+  p->set("Centre", Array<double>{d.centre[0], d.centre[1], d.centre[2]},
+         "Centre of the ball; the flat face lies at its height");
+  p->set("Radius", d.radius, "Radius");
+  addGrading(*p, d.grading);
+  p->set("Element", "tet4", "Element type (hexes: each tet split into 4)", oneOf(k3D));
+  return p;
+}
+
+RCP<const ParameterList> stacked2DParameters() {
+  auto p = Teuchos::rcp(new ParameterList("stacked-blocks-2d"));
+  p->set("Origin", Array<double>{0.0, 0.0}, "Lower-left corner of the lower block");
+  p->set("Width", 1.0, "Width of both blocks");
+  p->set("Lower Height", 1.0, "Height of the lower block");
+  p->set("Upper Height", 1.0, "Height of the upper block");
+  p->set("Gap", 0.0, "Initial gap between the blocks (negative: overlap)");
+  p->set("Lower Divisions", Array<int>{2, 2}, "nx, ny of the lower block");
+  p->set("Upper Divisions", Array<int>{3, 3}, "nx, ny of the upper block");
+  p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh, degrees");
+  p->set("Element", "quad4", "Element type", oneOf(k2D));
+  return p;
+}
+
+RCP<const ParameterList> stacked3DParameters() {
+  auto p = Teuchos::rcp(new ParameterList("stacked-blocks-3d"));
+  p->set("Origin", Array<double>{0.0, 0.0, 0.0}, "Lowest corner of the lower block");
+  p->set("Footprint", Array<double>{1.0, 1.0}, "Lx, Ly of both blocks");
+  p->set("Lower Height", 1.0, "Height of the lower block");
+  p->set("Upper Height", 1.0, "Height of the upper block");
+  p->set("Gap", 0.0, "Initial gap between the blocks (negative: overlap)");
+  p->set("Lower Divisions", Array<int>{2, 2, 2}, "nx, ny, nz of the lower block");
+  p->set("Upper Divisions", Array<int>{3, 3, 3}, "nx, ny, nz of the upper block");
+  p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh about z, degrees");
+  p->set("Element", "hex8", "Element type", oneOf(k3D));
+  return p;
+}
+
+}  // namespace
+
+MeshSourceRegistry& meshSourceRegistry() {
+  static MeshSourceRegistry registry("mesh source");
+  return registry;
+}
+
+void registerMeshSources() {
+  auto& r = meshSourceRegistry();
+  r.add({"file", "A gmsh .msh file (format 4 or 2.2); physical groups name blocks and boundaries.",
+         fileParameters, [](const ParameterList& p, const std::string& dir) {
+           std::filesystem::path path = p.get<std::string>("Path");
+           if (path.empty()) throw InputError("Mesh/file/Path is empty");
+           if (path.is_relative()) path = std::filesystem::path(dir) / path;
+           return std::make_unique<Mesh>(readGmshFile(path.lexically_normal().string()));
+         }});
+  r.add({"rectangle",
+         "Structured rectangle. Block 'body'; boundaries 'bottom', 'right', 'top', 'left'.",
+         rectangleParameters, [](const ParameterList& p, const std::string&) {
+           RectangleParams g;
+           g.origin = fixed<2, double>(p, "Origin");
+           g.lengths = {p.get<double>("Lx"), p.get<double>("Ly")};
+           g.divisions = {p.get<int>("nx"), p.get<int>("ny")};
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateRectangle(g));
+         }});
+  r.add({"box",
+         "Structured box. Block 'body'; faces 'xmin', 'xmax', 'ymin', 'ymax', 'zmin', 'zmax'.",
+         boxParameters, [](const ParameterList& p, const std::string&) {
+           BoxParams g;
+           g.origin = fixed<3, double>(p, "Origin");
+           g.lengths = {p.get<double>("Lx"), p.get<double>("Ly"), p.get<double>("Lz")};
+           g.divisions = {p.get<int>("nx"), p.get<int>("ny"), p.get<int>("nz")};
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateBox(g));
+         }});
+  r.add({"half-disc",
+         "Lower half of a disc (Hertz cylinder), graded towards the lowest point. Block 'body'; "
+         "boundaries 'flat' (top), 'curved' (arc), point 'contact-point'.",
+         halfDiscParameters, [](const ParameterList& p, const std::string&) {
+           HalfDiscParams g;
+           g.centre = fixed<2, double>(p, "Centre");
+           g.radius = p.get<double>("Radius");
+           g.grading = grading(p);
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateHalfDisc(g));
+         }});
+  r.add({"half-sphere",
+         "Lower half of a ball (Hertz sphere), graded towards the lowest point. Block 'body'; "
+         "faces 'flat' (top), 'curved', point 'contact-point'.",
+         halfSphereParameters, [](const ParameterList& p, const std::string&) {
+           HalfSphereParams g;
+           g.centre = fixed<3, double>(p, "Centre");
+           g.radius = p.get<double>("Radius");
+           g.grading = grading(p);
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateHalfSphere(g));
+         }});
+  r.add({"stacked-blocks-2d",
+         "Two separately meshed blocks, one on the other (contact patch test). Blocks 'lower', "
+         "'upper'; boundaries '<block>-bottom', '-top', '-left', '-right'.",
+         stacked2DParameters, [](const ParameterList& p, const std::string&) {
+           StackedBlocks2DParams g;
+           g.origin = fixed<2, double>(p, "Origin");
+           g.width = p.get<double>("Width");
+           g.lowerHeight = p.get<double>("Lower Height");
+           g.upperHeight = p.get<double>("Upper Height");
+           g.gap = p.get<double>("Gap");
+           g.lowerDivisions = fixed<2, int>(p, "Lower Divisions");
+           g.upperDivisions = fixed<2, int>(p, "Upper Divisions");
+           g.upperRotationDeg = p.get<double>("Upper Rotation");
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateStackedBlocks2D(g));
+         }});
+  r.add({"stacked-blocks-3d",
+         "Two separately meshed boxes stacked along z. Blocks 'lower', 'upper'; faces "
+         "'<block>-bottom', '-top', '-xmin', '-xmax', '-ymin', '-ymax'.",
+         stacked3DParameters, [](const ParameterList& p, const std::string&) {
+           StackedBlocks3DParams g;
+           g.origin = fixed<3, double>(p, "Origin");
+           g.footprint = fixed<2, double>(p, "Footprint");
+           g.lowerHeight = p.get<double>("Lower Height");
+           g.upperHeight = p.get<double>("Upper Height");
+           g.gap = p.get<double>("Gap");
+           g.lowerDivisions = fixed<3, int>(p, "Lower Divisions");
+           g.upperDivisions = fixed<3, int>(p, "Upper Divisions");
+           g.upperRotationDeg = p.get<double>("Upper Rotation");
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateStackedBlocks3D(g));
+         }});
+}
+
+}  // namespace contactlab

@@ -1,0 +1,108 @@
+#include <gmsh.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/mesh/GeneratorSupport.hpp"
+#include "core/mesh/GmshExtract.hpp"
+#include "core/mesh/GmshModel.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+namespace {
+
+std::string divisionsText(const int* d, int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s += (i ? "x" : "") + std::to_string(d[i]);
+  return s;
+}
+
+void requireStacking(const std::string& generator, double lowerHeight, double upperHeight,
+                     double gap, double rotation) {
+  requirePositive(generator, "lowerHeight", lowerHeight);
+  requirePositive(generator, "upperHeight", upperHeight);
+  if (!std::isfinite(gap) || gap <= -std::min(lowerHeight, upperHeight))
+    throw std::invalid_argument(generator + " generator: gap = " + std::to_string(gap) +
+                                " must be a number larger than minus the smaller block height");
+  if (!std::isfinite(rotation) || std::abs(rotation) > 45)
+    throw std::invalid_argument(generator + " generator: upperRotationDeg = " +
+                                std::to_string(rotation) + " must lie in [-45, 45] degrees");
+}
+
+}  // namespace
+
+// The two blocks are separate OCC entities that are never fragmented, so gmsh meshes them
+// independently: disjoint nodes and non-matching interface meshes.
+Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p) {
+  using ET = ElementType;
+  const std::string gen = "stacked-blocks-2d";
+  const auto spec =
+      elementSpec(gen, p.elementType, {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
+  requirePositive(gen, "width", p.width);
+  requireStacking(gen, p.lowerHeight, p.upperHeight, p.gap, p.upperRotationDeg);
+  for (int i = 0; i < 2; ++i) {
+    requireDivisions(gen, "lowerDivisions[" + std::to_string(i) + "]", p.lowerDivisions[i]);
+    requireDivisions(gen, "upperDivisions[" + std::to_string(i) + "]", p.upperDivisions[i]);
+  }
+  const std::string source = "generated stacked blocks 2D (" + p.elementType + ", lower " +
+                             divisionsText(p.lowerDivisions.data(), 2) + ", upper " +
+                             divisionsText(p.upperDivisions.data(), 2) + ")";
+  const double upperY = p.origin[1] + p.lowerHeight + p.gap;
+  Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
+    resetMeshOptions();
+    const auto lower = addStructuredRectangle(p.origin, {p.width, p.lowerHeight},
+                                              p.lowerDivisions, !spec.simplex);
+    const auto upper = addStructuredRectangle({p.origin[0], upperY}, {p.width, p.upperHeight},
+                                              p.upperDivisions, !spec.simplex);
+    const char* sides[] = {"bottom", "right", "top", "left"};
+    for (const auto& [block, r] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
+      addGroup(2, {r.surface}, block);
+      for (int i = 0; i < 4; ++i) addGroup(1, {r.sides[i]}, std::string(block) + "-" + sides[i]);
+    }
+    gmsh::model::mesh::generate(2);
+    applyOrder(spec);
+    return meshFromGmshModel(source, source);
+  });
+  rotateBlockAboutZ(mesh, "upper", p.origin[0] + p.width / 2, upperY + p.upperHeight / 2,
+                    p.upperRotationDeg);
+  return mesh;
+}
+
+Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p) {
+  using ET = ElementType;
+  const std::string gen = "stacked-blocks-3d";
+  const auto spec =
+      elementSpec(gen, p.elementType, {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
+  requirePositive(gen, "footprint[0]", p.footprint[0]);
+  requirePositive(gen, "footprint[1]", p.footprint[1]);
+  requireStacking(gen, p.lowerHeight, p.upperHeight, p.gap, p.upperRotationDeg);
+  for (int i = 0; i < 3; ++i) {
+    requireDivisions(gen, "lowerDivisions[" + std::to_string(i) + "]", p.lowerDivisions[i]);
+    requireDivisions(gen, "upperDivisions[" + std::to_string(i) + "]", p.upperDivisions[i]);
+  }
+  const std::string source = "generated stacked blocks 3D (" + p.elementType + ", lower " +
+                             divisionsText(p.lowerDivisions.data(), 3) + ", upper " +
+                             divisionsText(p.upperDivisions.data(), 3) + ")";
+  const double upperZ = p.origin[2] + p.lowerHeight + p.gap;
+  Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
+    resetMeshOptions();
+    const auto [lx, ly] = p.footprint;
+    const auto lower =
+        addStructuredBox(p.origin, {lx, ly, p.lowerHeight}, p.lowerDivisions, !spec.simplex);
+    const auto upper = addStructuredBox({p.origin[0], p.origin[1], upperZ},
+                                        {lx, ly, p.upperHeight}, p.upperDivisions, !spec.simplex);
+    const char* faces[] = {"xmin", "xmax", "ymin", "ymax", "bottom", "top"};
+    for (const auto& [block, b] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
+      addGroup(3, {b.volume}, block);
+      for (int i = 0; i < 6; ++i) addGroup(2, {b.faces[i]}, std::string(block) + "-" + faces[i]);
+    }
+    gmsh::model::mesh::generate(3);
+    applyOrder(spec);
+    return meshFromGmshModel(source, source);
+  });
+  rotateBlockAboutZ(mesh, "upper", p.origin[0] + p.footprint[0] / 2,
+                    p.origin[1] + p.footprint[1] / 2, p.upperRotationDeg);
+  return mesh;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,50 @@
+#pragma once
+// Boundary conditions and loads of a solid model. Values scale with a load function of time;
+// the optional `field` callbacks (used by manufactured-solution tests and future scene
+// expressions) replace the constant value when set.
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace contactlab {
+
+// Scale factor of a load at time t: `ramp` grows linearly from 0 at t = 0 to 1 at t = endTime;
+// `constant` is 1 at every time.
+struct LoadFunction {
+  enum class Kind { Ramp, Constant };
+  Kind kind = Kind::Ramp;
+  double endTime = 1.0;
+  double operator()(double t) const { return kind == Kind::Constant ? 1.0 : t / endTime; }
+};
+
+struct DirichletCondition {
+  std::string name;             // the scene's key, for messages and reactions
+  std::string group;            // boundary physical group
+  std::vector<int> components;  // 0 = x, 1 = y, 2 = z
+  double value = 0.0;
+  LoadFunction function;
+  std::function<double(const double* x, int component, double t)> field;  // optional
+};
+
+struct SurfaceLoad {
+  enum class Kind { Pressure, Traction };
+  std::string name;
+  std::string group;
+  Kind kind = Kind::Pressure;
+  double pressure = 0.0;                      // acts against the outward normal
+  std::array<double, 3> traction{{0, 0, 0}};  // force per unit area
+  LoadFunction function;
+  std::function<void(const double* x, double t, double* traction)> field;  // optional
+};
+
+struct BodyForce {
+  std::string name;
+  std::string block;                       // empty: every block
+  std::array<double, 3> value{{0, 0, 0}};  // force per unit volume
+  LoadFunction function;
+  // optional; writes one component per spatial dimension
+  std::function<void(const double* x, double t, double* force)> field;
+};
+
+}  // namespace contactlab

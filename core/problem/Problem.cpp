@@ -1,0 +1,540 @@
+#include "core/problem/Problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/QuadratureRule.hpp"
+#include "core/fem/ReferenceElement.hpp"
+#include "core/io/InputError.hpp"
+#include "core/problem/SolidKernel.hpp"
+#include "core/problem/SurfaceLoadKernel.hpp"
+
+namespace contactlab {
+
+struct Problem::LocalElement {
+  int block;
+  std::size_t cell;
+  int kernel;                 // index in kernels_
+  std::vector<int> nodes;     // overlap node indices
+  std::vector<LO> rows;       // overlap-map LIDs of its dofs
+  std::vector<LO> cols;       // column-map LIDs of its dofs
+  std::vector<double> stateOld, stateNew;
+};
+
+namespace {
+
+std::string elementLabel(const Mesh& mesh, int block, std::size_t cell) {
+  const auto& b = mesh.blocks[block];
+  return "element " + std::to_string(cell) + " (gmsh tag " + std::to_string(b.tags[cell]) +
+         ") of block '" + b.name + "' in " + mesh.source;
+}
+
+}  // namespace
+
+Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
+    : model_(std::move(model)), comm_(comm) {
+  const Mesh& mesh = *model_.mesh;
+  checkModel();
+  auto rawComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+  MPI_Comm mpiComm = rawComm.is_null() ? MPI_COMM_SELF : *rawComm->getRawMpiComm();
+  const auto partition = partitionElements(mesh, mpiComm);
+  dofs_ = std::make_unique<DofMap>(mesh, partition, comm);
+
+  blockMaterial_.resize(mesh.blocks.size());
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
+    blockMaterial_[b] = model_.materials.at(mesh.blocks[b].name).get();
+
+  std::map<ElementType, int> kernelOf;
+  const int dim = mesh.dim;
+  for (const auto& ref : dofs_->localElements()) {
+    const auto& block = mesh.blocks[ref.block];
+    auto [it, inserted] = kernelOf.emplace(block.type, static_cast<int>(kernels_.size()));
+    if (inserted) kernels_.push_back(std::make_unique<SolidKernel>(block.type));
+    LocalElement e;
+    e.block = ref.block;
+    e.cell = ref.cell;
+    e.kernel = it->second;
+    const int npc = block.nodesPerCell();
+    for (int a = 0; a < npc; ++a) {
+      const int n = dofs_->overlapNodeIndex(block.nodes[ref.cell * npc + a]);
+      e.nodes.push_back(n);
+      for (int c = 0; c < dim; ++c) e.rows.push_back(n * dim + c);
+    }
+    const int stateSize = blockMaterial_[ref.block]->stateSize();
+    if (stateSize > 0) {
+      const int nq = kernels_[e.kernel]->numQuadraturePoints();
+      e.stateOld.resize(static_cast<std::size_t>(nq) * stateSize);
+      kernels_[e.kernel]->initializeState(*blockMaterial_[ref.block], e.stateOld.data());
+      e.stateNew = e.stateOld;
+    }
+    elements_.push_back(std::move(e));
+  }
+
+  // Inverted or degenerate elements are input errors: find them before anything runs.
+  std::vector<double> x, dN, dNdx;
+  for (const auto& e : elements_) {
+    const auto& block = mesh.blocks[e.block];
+    const auto& ref = ReferenceElement::get(block.type);
+    const auto& rule = quadratureRule(block.type, stiffnessQuadratureDegree(block.type));
+    x.resize(3 * e.nodes.size());
+    for (std::size_t a = 0; a < e.nodes.size(); ++a)
+      for (int i = 0; i < 3; ++i)
+        x[3 * a + i] = mesh.coords[3 * block.nodes[e.cell * e.nodes.size() + a] + i];
+    dN.resize(e.nodes.size() * dim);
+    dNdx.resize(e.nodes.size() * dim);
+    try {
+      for (int q = 0; q < rule.size(); ++q) {
+        ref.shapeDerivatives(&rule.points[q * rule.dim], dN.data());
+        physicalGradients(dim, static_cast<int>(e.nodes.size()), x.data(), dN.data(),
+                          dNdx.data());
+      }
+    } catch (const InvalidElementError& err) {
+      throw InputError(err.withLabel(elementLabel(mesh, e.block, e.cell)).what());
+    }
+  }
+
+  // Constrained dofs.
+  const auto& overlap = dofs_->overlapNodes();
+  constrained_.assign(overlap.size() * dim, 0);
+  for (int d = 0; d < static_cast<int>(model_.dirichlet.size()); ++d) {
+    const auto& bc = model_.dirichlet[d];
+    for (auto node : mesh.boundaryNodes(bc.group)) {
+      const int n = dofs_->overlapNodeIndex(node);
+      if (n < 0) continue;
+      for (int c : bc.components) {
+        constrained_[n * dim + c] = 1;
+        if (n < static_cast<int>(dofs_->numOwnedNodes()))
+          constraints_.push_back({n * dim + c, d, c, node});
+      }
+    }
+  }
+  reactions_.resize(model_.dirichlet.size());
+  for (std::size_t d = 0; d < reactions_.size(); ++d) reactions_[d].name = model_.dirichlet[d].name;
+
+  locateSurfaceLoads();
+  buildGraph();
+}
+
+Problem::~Problem() = default;
+
+void Problem::checkModel() const {
+  const Mesh& mesh = *model_.mesh;
+  const std::string where = "mesh " + mesh.source;
+  for (const auto& name : mesh.blockNames())
+    if (!model_.materials.count(name))
+      throw InputError("block '" + name + "' of " + where + " has no material");
+  for (const auto& [name, material] : model_.materials)
+    if (mesh.findBlocks(name).empty()) {
+      std::string blocks;
+      for (const auto& b : mesh.blockNames()) blocks += (blocks.empty() ? "" : ", ") + b;
+      throw InputError("material given for block '" + name + "', which is not in " + where +
+                       "; its blocks are: " + blocks);
+    }
+  auto checkGroup = [&](const std::string& kind, const std::string& name,
+                        const std::string& group) {
+    try {
+      mesh.boundaryNodes(group);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(kind + " '" + name + "': " + e.what());
+    }
+  };
+  for (const auto& bc : model_.dirichlet) {
+    checkGroup("Dirichlet condition", bc.name, bc.group);
+    for (int c : bc.components)
+      if (c < 0 || c >= mesh.dim)
+        throw InputError("Dirichlet condition '" + bc.name + "' constrains component " +
+                         std::to_string(c) + " of a " + std::to_string(mesh.dim) + "D model");
+  }
+  for (const auto& load : model_.surfaceLoads) {
+    checkGroup("load", load.name, load.group);
+    for (const auto* g : mesh.findBoundaries(load.group))
+      if (g->dim != mesh.dim - 1)
+        throw InputError("load '" + load.name + "' acts on group '" + load.group +
+                         "', which is not made of facets (dimension " + std::to_string(g->dim) +
+                         ")");
+  }
+  for (const auto& body : model_.bodyForces)
+    if (!body.block.empty() && mesh.findBlocks(body.block).empty())
+      throw InputError("body force '" + body.name + "' names block '" + body.block +
+                       "', which is not in " + where);
+}
+
+void Problem::locateSurfaceLoads() {
+  // A facet is integrated by the rank that assembles an element containing all its nodes, so
+  // that every facet node is in that rank's overlap map. The lowest such element decides.
+  const Mesh& mesh = *model_.mesh;
+  const int rank = comm_->getRank();
+  if (model_.surfaceLoads.empty()) return;
+  std::vector<std::vector<int>> elementsOfNode(mesh.numNodes());
+  const auto refs = allElements(mesh);
+  std::set<std::int64_t> loadedNodes;
+  for (const auto& load : model_.surfaceLoads)
+    for (auto n : mesh.boundaryNodes(load.group)) loadedNodes.insert(n);
+  for (std::size_t e = 0; e < refs.size(); ++e) {
+    const auto& block = mesh.blocks[refs[e].block];
+    const int npc = block.nodesPerCell();
+    for (int a = 0; a < npc; ++a) {
+      const auto n = block.nodes[refs[e].cell * npc + a];
+      if (loadedNodes.count(n)) elementsOfNode[n].push_back(static_cast<int>(e));
+    }
+  }
+  auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_);
+  MPI_Comm mpiComm = comm.is_null() ? MPI_COMM_SELF : *comm->getRawMpiComm();
+  const auto partition = partitionElements(mesh, mpiComm);
+  for (int l = 0; l < static_cast<int>(model_.surfaceLoads.size()); ++l) {
+    for (const auto* g : mesh.findBoundaries(model_.surfaceLoads[l].group)) {
+      const int npc = g->nodesPerCell();
+      for (std::size_t f = 0; f < g->size(); ++f) {
+        std::vector<int> candidates = elementsOfNode[g->nodes[f * npc]];
+        for (int a = 1; a < npc && !candidates.empty(); ++a) {
+          const auto& other = elementsOfNode[g->nodes[f * npc + a]];
+          std::vector<int> common;
+          std::set_intersection(candidates.begin(), candidates.end(), other.begin(),
+                                other.end(), std::back_inserter(common));
+          candidates.swap(common);
+        }
+        if (candidates.empty())
+          throw InputError("facet " + std::to_string(g->tags[f]) + " of group '" + g->name +
+                           "' belongs to no element of the mesh " + mesh.source);
+        if (partition[candidates.front()] != rank) continue;
+        LoadedFacet facet{l, g->type, {}};
+        for (int a = 0; a < npc; ++a)
+          facet.overlapNodes.push_back(dofs_->overlapNodeIndex(g->nodes[f * npc + a]));
+        facets_.push_back(std::move(facet));
+      }
+    }
+  }
+}
+
+void Problem::buildGraph() {
+  const int dim = this->dim();
+  const auto& overlapMap = dofs_->overlapMap();
+  const auto& ownedMap = dofs_->ownedMap();
+  // Row lengths: the distinct dofs of the elements around each node.
+  std::vector<std::set<int>> neighbours(dofs_->overlapNodes().size());
+  for (const auto& e : elements_)
+    for (int a : e.nodes) neighbours[a].insert(e.nodes.begin(), e.nodes.end());
+  std::vector<size_t> rowLength(overlapMap->getNodeNumElements());
+  for (std::size_t n = 0; n < neighbours.size(); ++n)
+    for (int c = 0; c < dim; ++c) rowLength[n * dim + c] = neighbours[n].size() * dim;
+  auto overlapGraph = Teuchos::rcp(new Graph(overlapMap, overlapMap,
+                                             Teuchos::ArrayView<const size_t>(rowLength)));
+  std::vector<LO> cols;
+  for (std::size_t n = 0; n < neighbours.size(); ++n) {
+    cols.clear();
+    for (int m : neighbours[n])
+      for (int c = 0; c < dim; ++c) cols.push_back(m * dim + c);
+    for (int c = 0; c < dim; ++c)
+      overlapGraph->insertLocalIndices(static_cast<LO>(n * dim + c),
+                                       Teuchos::ArrayView<const LO>(cols));
+  }
+  overlapGraph->fillComplete(ownedMap, ownedMap);
+  exporter_ = Teuchos::rcp(new Export(overlapMap, ownedMap));
+  importer_ = Teuchos::rcp(new Import(ownedMap, overlapMap));
+  auto ownedGraph = Teuchos::rcp(new Graph(ownedMap, 0));
+  ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
+  ownedGraph->fillComplete(ownedMap, ownedMap);
+  overlapMatrix_ = Teuchos::rcp(new Matrix(overlapGraph));
+  matrix_ = Teuchos::rcp(new Matrix(ownedGraph));
+
+  const auto colMap = overlapGraph->getColMap();
+  for (auto& e : elements_) {
+    e.cols.resize(e.rows.size());
+    for (std::size_t i = 0; i < e.rows.size(); ++i)
+      e.cols[i] = colMap->getLocalElement(overlapMap->getGlobalElement(e.rows[i]));
+  }
+}
+
+Teuchos::RCP<Vector> Problem::createVector() const {
+  return Teuchos::rcp(new Vector(dofs_->ownedMap()));
+}
+
+Teuchos::RCP<Vector> Problem::overlapCopy(const Vector& u) const {
+  auto v = Teuchos::rcp(new Vector(dofs_->overlapMap()));
+  v->doImport(u, *importer_, Tpetra::INSERT);
+  return v;
+}
+
+void Problem::applyDirichlet(double t, Vector& u) const {
+  auto data = u.getDataNonConst(0);
+  const Mesh& mesh = *model_.mesh;
+  for (const auto& c : constraints_) {
+    const auto& bc = model_.dirichlet[c.condition];
+    data[c.lid] = bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t)
+                           : bc.value * bc.function(t);
+  }
+}
+
+void Problem::addExternalForces(double t, std::vector<double>& f) const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  std::vector<double> x, fe;
+  auto gather = [&](const std::vector<int>& nodes) {
+    x.resize(3 * nodes.size());
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int i = 0; i < 3; ++i)
+        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[nodes[a]] + i];
+  };
+  for (const auto& facet : facets_) {
+    const auto& load = model_.surfaceLoads[facet.load];
+    gather(facet.overlapNodes);
+    fe.assign(facet.overlapNodes.size() * dim, 0.0);
+    const double scale = load.function(t);
+    SurfaceLoadKernel kernel(facet.type, dim);
+    if (load.field) {
+      kernel.traction(x.data(), [&](const double* p, double* tr) { load.field(p, t, tr); },
+                      fe.data());
+    } else if (load.kind == SurfaceLoad::Kind::Pressure) {
+      kernel.pressure(x.data(), load.pressure * scale, fe.data());
+    } else {
+      std::array<double, 3> tr{};
+      for (int i = 0; i < 3; ++i) tr[i] = load.traction[i] * scale;
+      kernel.traction(x.data(), [&](const double*, double* out) {
+        for (int i = 0; i < 3; ++i) out[i] = tr[i];
+      }, fe.data());
+    }
+    for (std::size_t a = 0; a < facet.overlapNodes.size(); ++a)
+      for (int c = 0; c < dim; ++c) f[facet.overlapNodes[a] * dim + c] += fe[a * dim + c];
+  }
+  for (const auto& body : model_.bodyForces) {
+    const double scale = body.function(t);
+    for (const auto& e : elements_) {
+      const auto& block = mesh.blocks[e.block];
+      if (!body.block.empty() && block.name != body.block) continue;
+      gather(e.nodes);
+      fe.assign(e.rows.size(), 0.0);
+      if (body.field) {
+        kernels_[e.kernel]->bodyForce(
+            x.data(), [&](const double* p, double* b) { body.field(p, t, b); }, fe.data());
+      } else {
+        double b[3];
+        for (int i = 0; i < 3; ++i) b[i] = body.value[i] * scale;
+        kernels_[e.kernel]->bodyForce(x.data(), b, fe.data());
+      }
+      for (std::size_t i = 0; i < e.rows.size(); ++i) f[e.rows[i]] += fe[i];
+    }
+  }
+}
+
+void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTangent) {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  auto uOverlap = overlapCopy(u);
+  auto uo = uOverlap->getData(0);
+  std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
+  if (withTangent) {
+    overlapMatrix_->resumeFill();
+    overlapMatrix_->setAllToScalar(0.0);
+  }
+  std::vector<double> x, ue, fe, ke;
+  for (auto& e : elements_) {
+    const std::size_t n = e.nodes.size(), nd = e.rows.size();
+    x.resize(3 * n);
+    ue.resize(nd);
+    for (std::size_t a = 0; a < n; ++a)
+      for (int i = 0; i < 3; ++i)
+        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
+    for (std::size_t i = 0; i < nd; ++i) ue[i] = uo[e.rows[i]];
+    fe.assign(nd, 0.0);
+    if (withTangent) ke.assign(nd * nd, 0.0);
+    const SolidKernel& kernel = *kernels_[e.kernel];
+    kernel.compute(x.data(), ue.data(), *blockMaterial_[e.block],
+                   e.stateOld.empty() ? nullptr : e.stateOld.data(),
+                   e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
+                   withTangent ? ke.data() : nullptr);
+    if (residual)
+      for (std::size_t i = 0; i < nd; ++i) r[e.rows[i]] += fe[i];
+    if (withTangent) {
+      // Element-level elimination of constrained rows and columns (see Problem.hpp).
+      for (std::size_t i = 0; i < nd; ++i) {
+        if (constrained_[e.rows[i]]) continue;
+        for (std::size_t j = 0; j < nd; ++j)
+          if (constrained_[e.rows[j]]) ke[i * nd + j] = 0.0;
+        overlapMatrix_->sumIntoLocalValues(e.rows[i], static_cast<LO>(nd), &ke[i * nd],
+                                           e.cols.data());
+      }
+    }
+  }
+  if (withTangent) {
+    const LO ownedDofs = static_cast<LO>(dofs_->numOwnedNodes() * dim);
+    const double one = 1.0;
+    const auto colMap = overlapMatrix_->getColMap();
+    for (LO i = 0; i < ownedDofs; ++i)
+      if (constrained_[i]) {
+        const LO col = colMap->getLocalElement(dofs_->overlapMap()->getGlobalElement(i));
+        overlapMatrix_->sumIntoLocalValues(i, 1, &one, &col);
+      }
+    overlapMatrix_->fillComplete(dofs_->ownedMap(), dofs_->ownedMap());
+    matrix_->resumeFill();
+    matrix_->setAllToScalar(0.0);
+    matrix_->doExport(*overlapMatrix_, *exporter_, Tpetra::ADD);
+    matrix_->fillComplete(dofs_->ownedMap(), dofs_->ownedMap());
+  }
+  if (!residual) return;
+
+  // R = f_int - f_ext, summed over ranks into owned entries.
+  std::vector<double> fext(r.size(), 0.0);
+  addExternalForces(t, fext);
+  Vector rOverlap(dofs_->overlapMap());
+  {
+    auto data = rOverlap.getDataNonConst(0);
+    for (std::size_t i = 0; i < r.size(); ++i) data[i] = r[i] - fext[i];
+  }
+  residual->putScalar(0.0);
+  residual->doExport(rOverlap, *exporter_, Tpetra::ADD);
+
+  auto res = residual->getDataNonConst(0);
+  std::vector<double> sums(3 * reactions_.size(), 0.0), global(sums.size());
+  for (const auto& c : constraints_) {
+    sums[3 * c.condition + c.component] += res[c.lid];
+    res[c.lid] = 0.0;
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
+                     global.data());
+  for (std::size_t d = 0; d < reactions_.size(); ++d)
+    for (int c = 0; c < 3; ++c) reactions_[d].force[c] = global[3 * d + c];
+}
+
+void Problem::commitState() {
+  for (auto& e : elements_) e.stateOld = e.stateNew;
+}
+
+std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {
+  const Mesh& mesh = *model_.mesh;
+  const auto& e = elements_[index];
+  auto uo = uOverlap.getData(0);
+  std::vector<double> x(3 * e.nodes.size()), ue(e.rows.size());
+  for (std::size_t a = 0; a < e.nodes.size(); ++a)
+    for (int i = 0; i < 3; ++i)
+      x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
+  for (std::size_t i = 0; i < e.rows.size(); ++i) ue[i] = uo[e.rows[i]];
+  // Evaluated from the converged state into a scratch trial state: output changes nothing.
+  std::vector<double> scratch(e.stateNew.size());
+  std::array<double, 6> average{};
+  kernels_[e.kernel]->stresses(x.data(), ue.data(), *blockMaterial_[e.block],
+                               e.stateOld.empty() ? nullptr : e.stateOld.data(),
+                               scratch.empty() ? nullptr : scratch.data(), nullptr,
+                               average.data());
+  return average;
+}
+
+MeshPiece Problem::outputPiece(const Vector& u) const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  auto uOverlap = overlapCopy(u);
+  auto uo = uOverlap->getData(0);
+  MeshPiece piece;
+  const auto& nodes = dofs_->overlapNodes();
+  piece.points.reserve(3 * nodes.size());
+  FieldData disp{"displacement", 3, std::vector<double>(3 * nodes.size(), 0.0)};
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    for (int i = 0; i < 3; ++i) piece.points.push_back(mesh.coords[3 * nodes[a] + i]);
+    for (int c = 0; c < dim; ++c) disp.values[3 * a + c] = uo[a * dim + c];
+  }
+  piece.pointData.push_back(std::move(disp));
+  FieldData stress{"stress", 6, {}}, vm{"von_mises", 1, {}}, material{"material", 1, {}},
+      rank{"rank", 1, {}};
+  piece.offsets.push_back(0);
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    piece.cellTypes.push_back(mesh.blocks[e.block].type);
+    piece.connectivity.insert(piece.connectivity.end(), e.nodes.begin(), e.nodes.end());
+    piece.offsets.push_back(static_cast<std::int64_t>(piece.connectivity.size()));
+    const auto s = elementStress(i, *uOverlap);
+    stress.values.insert(stress.values.end(), s.begin(), s.end());
+    const double j2 = 0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
+                             (s[2] - s[0]) * (s[2] - s[0])) +
+                      3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    vm.values.push_back(std::sqrt(j2));
+    material.values.push_back(e.block);
+    rank.values.push_back(comm_->getRank());
+  }
+  piece.cellData = {std::move(stress), std::move(vm), std::move(material), std::move(rank)};
+  return piece;
+}
+
+DisplacementErrors Problem::displacementErrors(
+    const Vector& u, const std::function<void(const double* x, double* u)>& exact,
+    const std::function<void(const double* x, double* grad)>& exactGradient) const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  auto uOverlap = overlapCopy(u);
+  auto uo = uOverlap->getData(0);
+  std::array<double, 4> local{}, global{};  // l2^2, energy^2, l2Exact^2, energyExact^2
+  std::vector<double> x, N, dN, dNdx;
+  for (const auto& e : elements_) {
+    const auto& block = mesh.blocks[e.block];
+    const auto& ref = ReferenceElement::get(block.type);
+    const auto& rule = quadratureRule(block.type, 2 * info(block.type).order + 2);
+    const int n = static_cast<int>(e.nodes.size());
+    x.resize(3 * n);
+    N.resize(n);
+    dN.resize(n * dim);
+    dNdx.resize(n * dim);
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < 3; ++i)
+        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
+    for (int q = 0; q < rule.size(); ++q) {
+      const double* xi = &rule.points[q * rule.dim];
+      ref.shape(xi, N.data());
+      ref.shapeDerivatives(xi, dN.data());
+      const double w = rule.weights[q] * physicalGradients(dim, n, x.data(), dN.data(), dNdx.data());
+      double point[3] = {0, 0, 0}, uh[3] = {0, 0, 0}, gh[9] = {0}, ue[3] = {0, 0, 0}, ge[9] = {0};
+      interpolatePosition(n, x.data(), N.data(), point);
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < dim; ++i) {
+          const double value = uo[e.rows[a * dim + i]];
+          uh[i] += N[a] * value;
+          for (int j = 0; j < dim; ++j) gh[i * 3 + j] += dNdx[a * dim + j] * value;
+        }
+      exact(point, ue);
+      exactGradient(point, ge);
+      for (int i = 0; i < dim; ++i) {
+        local[0] += w * (uh[i] - ue[i]) * (uh[i] - ue[i]);
+        local[2] += w * ue[i] * ue[i];
+        for (int j = 0; j < dim; ++j) {
+          local[1] += w * (gh[i * 3 + j] - ge[i * 3 + j]) * (gh[i * 3 + j] - ge[i * 3 + j]);
+          local[3] += w * ge[i * 3 + j] * ge[i * 3 + j];
+        }
+      }
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 4, local.data(), global.data());
+  return {std::sqrt(global[0]), std::sqrt(global[1]), std::sqrt(global[2]), std::sqrt(global[3])};
+}
+
+std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t meshNode) const {
+  std::array<double, 3> local{}, global{};
+  if (dofs_->nodeOwner(meshNode) == comm_->getRank()) {
+    auto data = u.getData(0);
+    const int n = dofs_->overlapNodeIndex(meshNode);
+    for (int c = 0; c < dim(); ++c) local[c] = data[n * dim() + c];
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, local.data(), global.data());
+  return global;
+}
+
+std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode) const {
+  // Average over the elements around the node, whichever rank assembles them.
+  auto uOverlap = overlapCopy(u);
+  std::array<double, 7> local{}, global{};
+  const int n = dofs_->overlapNodeIndex(meshNode);
+  if (n >= 0) {
+    for (std::size_t i = 0; i < elements_.size(); ++i) {
+      const auto& e = elements_[i];
+      if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
+      const auto s = elementStress(i, *uOverlap);
+      for (int k = 0; k < 6; ++k) local[k] += s[k];
+      local[6] += 1.0;
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 7, local.data(), global.data());
+  std::array<double, 6> s{};
+  for (int k = 0; k < 6; ++k) s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
+  return s;
+}
+
+}  // namespace contactlab

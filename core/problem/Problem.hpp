@@ -1,0 +1,114 @@
+#pragma once
+// The discrete solid problem on Tpetra: partition, dof maps, matrix graph (built once), and
+// assembly of the residual R(u, t) = f_int(u) - f_ext(t) and its tangent K = dR/du.
+//
+// Dirichlet conditions are imposed by setting the prescribed values in u (applyDirichlet)
+// and eliminating the constrained dofs element by element: their rows and columns of K are
+// zero but for a unit diagonal and their residual entries are zero, so K stays symmetric and a
+// Newton increment never changes a prescribed value. The residual a constrained dof would have
+// carried is kept as the reaction of its condition.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_RCP.hpp>
+
+#include "core/io/MeshPiece.hpp"
+#include "core/problem/DofMap.hpp"
+#include "core/problem/LinearAlgebra.hpp"
+#include "core/problem/SolidModel.hpp"
+
+namespace contactlab {
+
+class SolidKernel;
+
+// Errors of a displacement field against an exact one (manufactured solutions, studies).
+struct DisplacementErrors {
+  double l2 = 0;        // ||u_h - u||_L2
+  double energy = 0;    // |u_h - u|_H1 (seminorm: the energy-norm rate)
+  double l2Exact = 0;   // ||u||_L2, for relative errors
+  double energyExact = 0;
+};
+
+struct Reaction {
+  std::string name;                 // the Dirichlet condition's name
+  std::array<double, 3> force{};    // sum of reactions over its nodes (global)
+};
+
+class Problem {
+ public:
+  // Partitions the mesh, builds the maps and the matrix graph, and checks the model: every
+  // block has a material, every group named by a condition exists, no element is inverted.
+  // Throws InputError with a sentence naming what is wrong.
+  Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm);
+  ~Problem();
+
+  const SolidModel& model() const { return model_; }
+  const DofMap& dofs() const { return *dofs_; }
+  int dim() const { return dofs_->dim(); }
+
+  Teuchos::RCP<Vector> createVector() const;
+  // The tangent matrix (owned rows), refilled by every assemble() with a tangent.
+  const Teuchos::RCP<Matrix>& tangent() const { return matrix_; }
+
+  // Sets the prescribed values at time t in u (owned entries).
+  void applyDirichlet(double t, Vector& u) const;
+  // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
+  void assemble(const Vector& u, double t, Vector* residual, bool withTangent);
+  // Reactions of the Dirichlet conditions at the last assemble() with a residual.
+  const std::vector<Reaction>& reactions() const { return reactions_; }
+  // Internal variables: the last assembled (trial) state becomes the converged one.
+  void commitState();
+
+  // This rank's elements and nodes with displacement, stress (cell average), von_mises,
+  // material (block index) and rank, for the result writers.
+  MeshPiece outputPiece(const Vector& u) const;
+  // Errors against an exact displacement u(x) and gradient du_i/dx_j (grad[i * 3 + j]),
+  // integrated with a rule two degrees above the element's order (collective).
+  DisplacementErrors displacementErrors(
+      const Vector& u, const std::function<void(const double* x, double* u)>& exact,
+      const std::function<void(const double* x, double* grad)>& exactGradient) const;
+  // Displacement of a mesh node (collective; every rank gets the value).
+  std::array<double, 3> nodeDisplacement(const Vector& u, std::int64_t meshNode) const;
+  // Nodal average of the element-average Cauchy stress at a mesh node (collective).
+  std::array<double, 6> nodeStress(const Vector& u, std::int64_t meshNode) const;
+
+ private:
+  struct LocalElement;
+  void checkModel() const;
+  void buildGraph();
+  void locateSurfaceLoads();
+  void addExternalForces(double t, std::vector<double>& f) const;
+  std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap) const;
+  Teuchos::RCP<Vector> overlapCopy(const Vector& u) const;
+
+  SolidModel model_;
+  Teuchos::RCP<const Comm> comm_;
+  std::unique_ptr<DofMap> dofs_;
+  std::vector<LocalElement> elements_;
+  std::vector<std::unique_ptr<SolidKernel>> kernels_;  // one per element type in use
+  std::vector<const Material*> blockMaterial_;
+  // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
+  std::vector<char> constrained_;
+  struct Constraint {
+    int lid;         // owned LID
+    int condition;   // index in model_.dirichlet
+    int component;
+    std::int64_t node;
+  };
+  std::vector<Constraint> constraints_;
+  // Facets of surface loads assembled on this rank (their parent element is local).
+  struct LoadedFacet {
+    int load;
+    ElementType type;
+    std::vector<int> overlapNodes;
+  };
+  std::vector<LoadedFacet> facets_;
+  Teuchos::RCP<Matrix> overlapMatrix_, matrix_;
+  Teuchos::RCP<Export> exporter_;
+  Teuchos::RCP<Import> importer_;
+  std::vector<Reaction> reactions_;
+};
+
+}  // namespace contactlab

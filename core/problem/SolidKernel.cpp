@@ -1,0 +1,229 @@
+#include "core/problem/SolidKernel.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/ReferenceElement.hpp"
+
+namespace contactlab {
+namespace {
+
+constexpr int kMaxNodes = 27;
+// Voigt index of the tensor component (i, j): full 3D, and 2D within the plane-strain rows.
+constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+constexpr int kVoigt2[2][2] = {{0, 2}, {2, 1}};
+constexpr int kPlaneRows[3] = {0, 1, 3};
+
+template <int D>
+constexpr int voigt(int i, int j) {
+  return D == 3 ? kVoigt3[i][j] : kVoigt2[i][j];
+}
+
+}  // namespace
+
+SolidKernel::SolidKernel(ElementType type, int quadratureDegree)
+    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes) {
+  if (dim_ != 2 && dim_ != 3)
+    throw std::invalid_argument(std::string("SolidKernel needs a 2D or 3D cell type, got ") +
+                                info(type).name);
+  rule_ = &quadratureRule(type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type)
+                                                     : quadratureDegree);
+  numPoints_ = rule_->size();
+  const ReferenceElement& ref = ReferenceElement::get(type);
+  N_.resize(numPoints_ * numNodes_);
+  dNdxi_.resize(numPoints_ * numNodes_ * dim_);
+  for (int q = 0; q < numPoints_; ++q) {
+    const double* xi = &rule_->points[q * dim_];
+    ref.shape(xi, &N_[q * numNodes_]);
+    ref.shapeDerivatives(xi, &dNdxi_[q * numNodes_ * dim_]);
+  }
+}
+
+void SolidKernel::initializeState(const Material& material, double* state) const {
+  const int ss = material.stateSize();
+  if (ss == 0) return;
+  for (int q = 0; q < numPoints_; ++q) material.initializeState(state + q * ss);
+}
+
+double SolidKernel::gradients(int q, const double* x, double* dNdx) const {
+  return rule_->weights[q] *
+         physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+}
+
+double SolidKernel::measure(int q, const double* x) const {
+  double dNdx[kMaxNodes * 3];
+  return gradients(q, x, dNdx);
+}
+
+void SolidKernel::compute(const double* x, const double* u, const Material& material,
+                          const double* stateOld, double* stateNew, double* residual,
+                          double* tangent) const {
+  if (dim_ == 2)
+    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+  else
+    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+}
+
+void SolidKernel::stresses(const double* x, const double* u, const Material& material,
+                           const double* stateOld, double* stateNew, double* pointStress,
+                           double* averageStress) const {
+  if (dim_ == 2)
+    computeImpl<2>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+                   averageStress);
+  else
+    computeImpl<3>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+                   averageStress);
+}
+
+template <int D>
+void SolidKernel::computeImpl(const double* x, const double* u, const Material& material,
+                              const double* stateOld, double* stateNew, double* residual,
+                              double* tangent, double* pointStress,
+                              double* averageStress) const {
+  constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
+  const int n = numNodes_, nd = D * n, ss = material.stateSize();
+  if (material.kinematics() != Kinematics::SmallStrain)
+    throw std::invalid_argument("SolidKernel is small-strain but material '" + material.name() +
+                                "' is finite-strain");
+  if (ss > 0 && (!stateOld || !stateNew))
+    throw std::invalid_argument("material '" + material.name() +
+                                "' has internal variables: SolidKernel needs state arrays");
+  if (residual)
+    for (int k = 0; k < nd; ++k) residual[k] = 0.0;
+  if (tangent)
+    for (int k = 0; k < nd * nd; ++k) tangent[k] = 0.0;
+  double volume = 0.0;
+  if (averageStress)
+    for (int k = 0; k < 6; ++k) averageStress[k] = 0.0;
+
+  double dNdx[kMaxNodes * D];
+  double G[kMaxNodes * V * D];  // w C B_b, node by node
+  double S[kMaxNodes * V * D];  // w (C^T - C) B_b, only for unsymmetric material tangents
+  MaterialInput in;
+  MaterialOutput out;
+  for (int q = 0; q < numPoints_; ++q) {
+    const double w = gradients(q, x, dNdx);
+    double H[D][D] = {};  // displacement gradient
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) H[i][j] += u[a * D + i] * dNdx[a * D + j];
+    in.strain.fill(0.0);
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j) in.strain[kVoigt3[i][j]] = i == j ? H[i][i] : H[i][j] + H[j][i];
+    in.stateOld = ss ? stateOld + q * ss : nullptr;
+    out.stateNew = ss ? stateNew + q * ss : nullptr;
+    out.stress.fill(0.0);
+    out.tangent.fill(0.0);
+    material.evaluate(in, out);
+
+    if (pointStress)
+      for (int k = 0; k < 6; ++k) pointStress[6 * q + k] = out.stress[k];
+    if (averageStress) {
+      for (int k = 0; k < 6; ++k) averageStress[k] += w * out.stress[k];
+      volume += w;
+    }
+    if (residual) {
+      double sigma[D][D];
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) sigma[i][j] = w * out.stress[kVoigt3[i][j]];
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < D; ++i) {
+          double f = 0.0;
+          for (int j = 0; j < D; ++j) f += sigma[i][j] * dNdx[a * D + j];
+          residual[a * D + i] += f;
+        }
+    }
+    if (!tangent) continue;
+
+    double C[V][V];
+    bool symmetric = true;
+    for (int p = 0; p < V; ++p)
+      for (int r = 0; r < V; ++r) {
+        const int rp = D == 3 ? p : kPlaneRows[p], rr = D == 3 ? r : kPlaneRows[r];
+        C[p][r] = out.tangent[rp * 6 + rr];
+      }
+    for (int p = 0; p < V; ++p)
+      for (int r = 0; r < p; ++r) symmetric = symmetric && C[p][r] == C[r][p];
+    // G_b[v][k] = w sum_l C[v][voigt(k, l)] dN_b/dx_l: C B_b uses B's 1-3 nonzeros per column.
+    for (int b = 0; b < n; ++b) {
+      const double* g = &dNdx[b * D];
+      for (int v = 0; v < V; ++v)
+        for (int k = 0; k < D; ++k) {
+          double s = 0.0, t = 0.0;
+          for (int l = 0; l < D; ++l) {
+            s += C[v][voigt<D>(k, l)] * g[l];
+            if (!symmetric) t += (C[voigt<D>(k, l)][v] - C[v][voigt<D>(k, l)]) * g[l];
+          }
+          G[(b * V + v) * D + k] = w * s;
+          if (!symmetric) S[(b * V + v) * D + k] = w * t;
+        }
+    }
+    // Upper blocks K_ab = B_a^T G_b (b >= a); the lower ones are mirrored after the loop, plus
+    // the unsymmetric correction B_a^T (C^T - C) B_b accumulated here, transposed.
+    for (int a = 0; a < n; ++a) {
+      const double* g = &dNdx[a * D];
+      for (int b = a; b < n; ++b) {
+        const double* Gb = &G[b * V * D];
+        for (int i = 0; i < D; ++i) {
+          double* row = &tangent[(a * D + i) * nd + b * D];
+          for (int k = 0; k < D; ++k) {
+            double s = 0.0;
+            for (int j = 0; j < D; ++j) s += g[j] * Gb[voigt<D>(i, j) * D + k];
+            row[k] += s;
+          }
+        }
+        if (symmetric || b == a) continue;
+        const double* Sb = &S[b * V * D];
+        for (int i = 0; i < D; ++i)
+          for (int k = 0; k < D; ++k) {
+            double s = 0.0;
+            for (int j = 0; j < D; ++j) s += g[j] * Sb[voigt<D>(i, j) * D + k];
+            tangent[(b * D + k) * nd + a * D + i] += s;
+          }
+      }
+    }
+  }
+  if (tangent)
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        for (int i = 0; i < D; ++i)
+          for (int k = 0; k < D; ++k)
+            tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
+  if (averageStress)
+    for (int k = 0; k < 6; ++k) averageStress[k] /= volume;
+}
+
+void SolidKernel::quadraturePoints(const double* x, double* points) const {
+  for (int q = 0; q < numPoints_; ++q)
+    interpolatePosition(numNodes_, x, &N_[q * numNodes_], points + 3 * q);
+}
+
+double SolidKernel::volume(const double* x) const {
+  double v = 0.0;
+  for (int q = 0; q < numPoints_; ++q) v += measure(q, x);
+  return v;
+}
+
+void SolidKernel::bodyForce(const double* x, const double* b, double* f) const {
+  bodyForce(
+      x, [&](const double*, double* value) { std::copy(b, b + dim_, value); }, f);
+}
+
+void SolidKernel::bodyForce(const double* x,
+                            const std::function<void(const double* x, double* b)>& b,
+                            double* f) const {
+  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  for (int q = 0; q < numPoints_; ++q) {
+    const double w = measure(q, x);
+    const double* N = &N_[q * numNodes_];
+    double point[3], value[3] = {0.0, 0.0, 0.0};
+    interpolatePosition(numNodes_, x, N, point);
+    b(point, value);
+    for (int a = 0; a < numNodes_; ++a)
+      for (int i = 0; i < dim_; ++i) f[a * dim_ + i] += w * N[a] * value[i];
+  }
+}
+
+}  // namespace contactlab

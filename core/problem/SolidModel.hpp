@@ -1,0 +1,23 @@
+#pragma once
+// Everything that defines a solid model independently of how it is solved: the mesh, one
+// material per element block, boundary conditions and loads.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/materials/Material.hpp"
+#include "core/mesh/Mesh.hpp"
+#include "core/problem/Loads.hpp"
+
+namespace contactlab {
+
+struct SolidModel {
+  std::shared_ptr<const Mesh> mesh;
+  std::map<std::string, std::shared_ptr<const Material>> materials;  // by block name
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<SurfaceLoad> surfaceLoads;
+  std::vector<BodyForce> bodyForces;
+};
+
+}  // namespace contactlab

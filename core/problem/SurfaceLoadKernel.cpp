@@ -1,0 +1,84 @@
+#include "core/problem/SurfaceLoadKernel.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/ReferenceElement.hpp"
+
+namespace contactlab {
+
+SurfaceLoadKernel::SurfaceLoadKernel(ElementType facetType, int spaceDim, int quadratureDegree)
+    : type_(facetType), spaceDim_(spaceDim), numNodes_(info(facetType).nodes) {
+  const int facetDim = info(facetType).dim;
+  if ((facetDim != 1 && facetDim != 2) || spaceDim != facetDim + 1)
+    throw std::invalid_argument(std::string("SurfaceLoadKernel: ") + info(facetType).name +
+                                " is not a facet in " + std::to_string(spaceDim) +
+                                "D (use line2/line3 in 2D, tri3/tri6/quad4/quad8/quad9 in 3D)");
+  const int degree = quadratureDegree < 0 ? 2 * info(facetType).order + 1 : quadratureDegree;
+  rule_ = &quadratureRule(facetType, degree);
+  const ReferenceElement& ref = ReferenceElement::get(facetType);
+  const int refDim = spaceDim_ - 1, nq = rule_->size();
+  N_.resize(nq * numNodes_);
+  dNdxi_.resize(nq * numNodes_ * refDim);
+  for (int q = 0; q < nq; ++q) {
+    const double* xi = &rule_->points[q * refDim];
+    ref.shape(xi, &N_[q * numNodes_]);
+    ref.shapeDerivatives(xi, &dNdxi_[q * numNodes_ * refDim]);
+  }
+}
+
+template <class Visit>
+void SurfaceLoadKernel::forEachPoint(const double* x, Visit&& visit) const {
+  const int refDim = spaceDim_ - 1;
+  for (int q = 0; q < rule_->size(); ++q) {
+    double normal[3], point[3];
+    const double dA =
+        facetGeometry(spaceDim_, numNodes_, x, &dNdxi_[q * numNodes_ * refDim], normal);
+    interpolatePosition(numNodes_, x, &N_[q * numNodes_], point);
+    visit(q, point, normal, rule_->weights[q] * dA);
+  }
+}
+
+double SurfaceLoadKernel::area(const double* x) const {
+  double a = 0.0;
+  forEachPoint(x, [&](int, const double*, const double*, double w) { a += w; });
+  return a;
+}
+
+void SurfaceLoadKernel::traction(const double* x, const double* t, double* f) const {
+  traction(
+      x, [&](const double*, double* value) { std::copy(t, t + spaceDim_, value); }, f);
+}
+
+void SurfaceLoadKernel::traction(const double* x,
+                                 const std::function<void(const double* x, double* t)>& t,
+                                 double* f) const {
+  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  forEachPoint(x, [&](int q, const double* point, const double*, double w) {
+    double value[3] = {0.0, 0.0, 0.0};
+    t(point, value);
+    const double* N = &N_[q * numNodes_];
+    for (int a = 0; a < numNodes_; ++a)
+      for (int i = 0; i < spaceDim_; ++i) f[a * spaceDim_ + i] += w * N[a] * value[i];
+  });
+}
+
+void SurfaceLoadKernel::pressure(const double* x, double p, double* f) const {
+  pressure(x, [p](const double*) { return p; }, f);
+}
+
+void SurfaceLoadKernel::pressure(const double* x,
+                                 const std::function<double(const double* x)>& p,
+                                 double* f) const {
+  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  forEachPoint(x, [&](int q, const double* point, const double* normal, double w) {
+    const double s = -w * p(point);
+    const double* N = &N_[q * numNodes_];
+    for (int a = 0; a < numNodes_; ++a)
+      for (int i = 0; i < spaceDim_; ++i) f[a * spaceDim_ + i] += s * N[a] * normal[i];
+  });
+}
+
+}  // namespace contactlab

@@ -1,0 +1,373 @@
+#include "linear/MumpsSolver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include "linear/SolverParameters.hpp"
+
+namespace contactlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// ICNTL(14) is raised this way after a workspace-too-small error, then the phase is retried once.
+int raisedRelaxation(int percent) { return std::max(2 * percent, percent + 50); }
+
+bool isWorkspaceTooSmall(int code) {
+  return code == -8 || code == -9 || code == -17 || code == -20;
+}
+
+// The meaning of the common INFOG(1) codes (MUMPS 5.5 user guide, section 8).
+std::string meaningOf(int code, int info2) {
+  switch (code) {
+    case -1:
+      return "an error occurred on rank " + std::to_string(info2);
+    case -2:
+      return "the number of nonzeros is out of range (" + std::to_string(info2) + ")";
+    case -3:
+      return "MUMPS was called with an invalid JOB (e.g. a solve without factorization)";
+    case -5:
+    case -7:
+      return "not enough memory during analysis";
+    case -6:
+      return "matrix is structurally singular (structural rank " + std::to_string(info2) + ")";
+    case -8:
+    case -9:
+    case -17:
+    case -20:
+      return "MUMPS' internal workspace is too small even after raising ICNTL(14)";
+    case -10:
+      return "matrix is numerically singular";
+    case -11:
+    case -12:
+    case -14:
+    case -15:
+      return "MUMPS' internal workspace is too small for the solve";
+    case -13:
+      return "memory allocation failed (" +
+             (info2 < 0 ? std::to_string(-static_cast<long long>(info2)) + " million"
+                        : std::to_string(info2)) +
+             " entries requested)";
+    case -16:
+      return "the matrix order N is out of range";
+    case -22:
+      return "an input array is missing or too small";
+    case -38:
+      return "the parallel ordering is not available";
+    case -40:
+      return "matrix was declared symmetric positive definite but a negative or zero pivot was "
+             "met (use Mode symmetric-indefinite)";
+    default:
+      return "see the MUMPS user guide";
+  }
+}
+
+MPI_Comm rawCommOf(const Comm& comm) {
+  if (auto mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
+    return *mpi->getRawMpiComm();
+  if (comm.getSize() == 1) return MPI_COMM_SELF;  // Teuchos::SerialComm
+  throw LinearSolverError("MUMPS needs a Teuchos::MpiComm communicator");
+}
+
+}  // namespace
+
+struct MumpsSolver::Impl {
+  DMUMPS_STRUC_C id{};
+  MPI_Comm comm = MPI_COMM_NULL;  // a duplicate, so MUMPS' messages never meet Tpetra's
+  Teuchos::RCP<const Comm> teuchosComm;
+  bool initialized = false;
+  bool analysed = false;
+  bool factored = false;
+  Teuchos::RCP<const Matrix> A;
+  // Distributed assembled input (1-based global indices); must outlive the factorization
+  // because the error analysis of a solve reads A again.
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> values;
+  // Right-hand side and solution are centralized on rank 0.
+  Teuchos::RCP<const Map> rootMap;
+  Teuchos::RCP<const Import> toRoot, fromRoot;
+  Teuchos::RCP<const Map> rangeMap, domainMap;  // those the importers were built for
+  std::optional<ErrorAnalysis> lastErrorAnalysis;
+
+  MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }
+  MUMPS_INT infog(int i) const { return id.infog[i - 1]; }
+  double rinfog(int i) const { return id.rinfog[i - 1]; }
+  bool isRoot() const { return teuchosComm->getRank() == 0; }
+
+  void run(int job) {
+    id.job = job;
+    dmumps_c(&id);
+  }
+  void check(const char* phase) const {
+    const int code = infog(1);
+    if (code < 0)
+      throw LinearSolverError(std::string("MUMPS ") + phase + " failed: " +
+                              meaningOf(code, infog(2)) + " (INFOG(1) = " +
+                              std::to_string(code) + ")");
+  }
+};
+
+Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
+  using Teuchos::tuple;
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("mumps"));
+  Teuchos::setStringToIntegralParameter<Mode>(
+      "Mode", "general", "Matrix type given to MUMPS (SYM)",
+      tuple<std::string>("general", "symmetric", "symmetric-indefinite"),
+      tuple<std::string>("any square matrix: LU factorization (SYM = 0)",
+                         "symmetric positive definite: LDL^T without pivoting (SYM = 1); "
+                         "reads the lower triangle",
+                         "symmetric, possibly indefinite (e.g. saddle point): LDL^T with "
+                         "2x2 pivots (SYM = 2); reads the lower triangle"),
+      tuple<Mode>(Mode::general, Mode::symmetric, Mode::symmetricIndefinite), p.get());
+  Teuchos::setStringToIntegralParameter<Ordering>(
+      "Ordering", "pord", "Fill-reducing ordering of the analysis (ICNTL(7))",
+      tuple<std::string>("pord", "amd", "amf", "qamd"),
+      tuple<std::string>("PORD (fastest here)", "approximate minimum degree",
+                         "approximate minimum fill", "AMD with quasi-dense row detection"),
+      tuple<Ordering>(Ordering::pord, Ordering::amd, Ordering::amf, Ordering::qamd), p.get());
+  p->set("Memory Relaxation", 20,
+         "Percent added to the analysis' workspace estimate (ICNTL(14)); raised automatically "
+         "once if the factorization runs out of workspace",
+         Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 10000)));
+  p->set("Determinant", false,
+         "Compute the determinant at each factorization (ICNTL(33)), as mantissa and exponent");
+  p->set("Condition Estimate", false,
+         "Run MUMPS' error analysis at each solve (ICNTL(11) = 1) and report the condition "
+         "numbers of the system for the first right-hand side; costs more than the solve");
+  return p;
+}
+
+MumpsSolver::Options MumpsSolver::optionsFrom(const Teuchos::ParameterList& params) {
+  const auto valid = validParameters();
+  const auto p = validatedParameters(params, *valid, "mumps");
+  Options o;
+  o.mode = enumParameter<Mode>(p, *valid, "Mode");
+  o.ordering = enumParameter<Ordering>(p, *valid, "Ordering");
+  o.memoryRelaxation = p.get<int>("Memory Relaxation");
+  o.determinant = p.get<bool>("Determinant");
+  o.conditionEstimate = p.get<bool>("Condition Estimate");
+  return o;
+}
+
+MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>& comm)
+    : options_(options), impl_(std::make_unique<Impl>()) {
+  if (comm.is_null()) throw LinearSolverError("MUMPS needs a communicator (got null)");
+  Impl& m = *impl_;
+  m.teuchosComm = comm;
+  MPI_Comm_dup(rawCommOf(*comm), &m.comm);
+  m.id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(m.comm));
+  m.id.par = 1;  // rank 0 works too
+  m.id.sym = static_cast<MUMPS_INT>(options.mode);
+  m.run(-1);
+  m.initialized = true;
+  m.check("initialization");
+  // Silence MUMPS: errors, diagnostics, statistics, verbosity (ICNTL(1..4)).
+  m.icntl(1) = -1;
+  m.icntl(2) = -1;
+  m.icntl(3) = -1;
+  m.icntl(4) = 0;
+  m.icntl(5) = 0;   // assembled input
+  m.icntl(18) = 3;  // distributed assembled input: each rank passes its rows
+  m.icntl(20) = 0;  // dense right-hand side ...
+  m.icntl(21) = 0;  // ... and solution, centralized on the host
+  m.icntl(7) = static_cast<MUMPS_INT>(options.ordering);
+  m.icntl(28) = 1;  // sequential analysis: the parallel one fails here (INFOG(1) = -38)
+  m.icntl(14) = options.memoryRelaxation;
+  m.icntl(33) = options.determinant ? 1 : 0;
+  m.icntl(11) = 0;
+}
+
+MumpsSolver::~MumpsSolver() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized) return;  // too late to free anything collectively
+  if (impl_->initialized) impl_->run(-2);
+  if (impl_->comm != MPI_COMM_NULL) MPI_Comm_free(&impl_->comm);
+}
+
+void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) {
+  Impl& m = *impl_;
+  if (A.is_null()) throw LinearSolverError("MUMPS was given a null matrix");
+  if (!A->isFillComplete())
+    throw LinearSolverError("MUMPS needs a fill-completed matrix (call fillComplete first)");
+  int compare = MPI_UNEQUAL;
+  MPI_Comm_compare(rawCommOf(*A->getComm()), m.comm, &compare);
+  if (compare != MPI_CONGRUENT)
+    throw LinearSolverError("the matrix given to MUMPS lives on another communicator");
+  const auto N = A->getGlobalNumRows();
+  if (N != A->getGlobalNumCols())
+    throw LinearSolverError("MUMPS needs a square matrix (got " + std::to_string(N) + " x " +
+                            std::to_string(A->getGlobalNumCols()) + ")");
+  if (N > static_cast<decltype(N)>(std::numeric_limits<MUMPS_INT>::max()))
+    throw LinearSolverError("matrix order " + std::to_string(N) +
+                            " exceeds MUMPS' 32-bit index range");
+
+  // Triplets of the local rows, 1-based global indices; lower triangle in symmetric modes.
+  const auto rowMap = A->getRowMap();
+  const auto colMap = A->getColMap();
+  const auto local = A->getLocalMatrixHost();
+  const bool lowerOnly = options_.mode != Mode::general;
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> values;
+  irn.reserve(local.nnz());
+  jcn.reserve(local.nnz());
+  values.reserve(local.nnz());
+  for (LO r = 0; r < static_cast<LO>(local.numRows()); ++r) {
+    const GO row = rowMap->getGlobalElement(r);
+    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
+      const GO col = colMap->getGlobalElement(local.graph.entries(k));
+      if (lowerOnly && col > row) continue;
+      irn.push_back(static_cast<MUMPS_INT>(row + 1));
+      jcn.push_back(static_cast<MUMPS_INT>(col + 1));
+      values.push_back(local.values(k));
+    }
+  }
+
+  // A new analysis when asked, or when the pattern differs from the analysed one on any rank.
+  int changed = (patternChanged || !m.analysed || irn != m.irn || jcn != m.jcn) ? 1 : 0;
+  int anyChanged = 0;
+  Teuchos::reduceAll(*m.teuchosComm, Teuchos::REDUCE_MAX, changed, Teuchos::outArg(anyChanged));
+  m.A = A;
+  m.values = std::move(values);
+  m.id.a_loc = m.values.data();
+  if (anyChanged) {
+    // Global ids index MUMPS' unknowns: they must be 0-based, in [0, N), each row on one rank.
+    const GO minId = std::min(rowMap->getMinAllGlobalIndex(), colMap->getMinAllGlobalIndex());
+    const GO maxId = std::max(rowMap->getMaxAllGlobalIndex(), colMap->getMaxAllGlobalIndex());
+    if (minId < 0 || maxId >= static_cast<GO>(N))
+      throw LinearSolverError("MUMPS needs global ids in [0, " + std::to_string(N) +
+                              "); the matrix uses [" + std::to_string(minId) + ", " +
+                              std::to_string(maxId) + "]");
+    if (!rowMap->isOneToOne())
+      throw LinearSolverError("MUMPS needs a row map where each row is owned by one rank");
+    m.irn = std::move(irn);
+    m.jcn = std::move(jcn);
+    m.id.n = static_cast<MUMPS_INT>(N);
+    m.id.nnz_loc = static_cast<MUMPS_INT8>(m.irn.size());
+    m.id.irn_loc = m.irn.data();
+    m.id.jcn_loc = m.jcn.data();
+    analyse();
+  }
+  factorize();
+}
+
+void MumpsSolver::analyse() {
+  Impl& m = *impl_;
+  const auto t0 = Clock::now();
+  m.analysed = false;
+  m.factored = false;
+  m.run(1);
+  m.check("analysis");
+  m.analysed = true;
+  ++stats_.analyses;
+  stats_.analysisSeconds += secondsSince(t0);
+
+  // The map that gathers every global index on rank 0, in order: MUMPS' centralized vectors.
+  const auto N = m.A->getGlobalNumRows();
+  m.rootMap = Teuchos::rcp(new Map(N, m.isRoot() ? N : 0, 0, m.A->getComm()));
+  m.rangeMap = Teuchos::null;
+  m.domainMap = Teuchos::null;
+}
+
+void MumpsSolver::factorize() {
+  Impl& m = *impl_;
+  const auto t0 = Clock::now();
+  m.factored = false;
+  m.run(2);
+  if (isWorkspaceTooSmall(m.infog(1))) {
+    m.icntl(14) = raisedRelaxation(m.icntl(14));
+    m.run(2);
+  }
+  m.check("factorization");
+  m.factored = true;
+  ++stats_.factorizations;
+  stats_.factorizationSeconds += secondsSince(t0);
+  if (m.rangeMap != m.A->getRangeMap() || m.domainMap != m.A->getDomainMap()) {
+    m.rangeMap = m.A->getRangeMap();
+    m.domainMap = m.A->getDomainMap();
+    m.toRoot = Teuchos::rcp(new Import(m.rangeMap, m.rootMap));
+    m.fromRoot = Teuchos::rcp(new Import(m.rootMap, m.domainMap));
+  }
+}
+
+void MumpsSolver::solve(const MultiVector& b, MultiVector& x) {
+  Impl& m = *impl_;
+  if (!m.factored) throw LinearSolverError("MUMPS solve called before a successful setMatrix");
+  const size_t nrhs = b.getNumVectors();
+  if (x.getNumVectors() != nrhs)
+    throw LinearSolverError("MUMPS solve: b has " + std::to_string(nrhs) + " columns, x has " +
+                            std::to_string(x.getNumVectors()));
+  if (!b.getMap()->isSameAs(*m.rangeMap) || !x.getMap()->isSameAs(*m.domainMap))
+    throw LinearSolverError("MUMPS solve: b and x must live on the matrix's range / domain map");
+  const auto t0 = Clock::now();
+
+  MultiVector root(m.rootMap, nrhs);
+  root.doImport(b, *m.toRoot, Tpetra::INSERT);
+  {
+    Teuchos::ArrayRCP<double> data;
+    if (m.isRoot()) {
+      data = root.get1dViewNonConst();
+      m.id.rhs = data.getRawPtr();
+      m.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
+    }
+    // The error analysis works on one right-hand side: the first one gets it, alone.
+    size_t first = 0;
+    if (options_.conditionEstimate) {
+      m.id.nrhs = 1;
+      m.icntl(11) = 1;
+      m.run(3);
+      m.icntl(11) = 0;
+      m.check("solve");
+      m.lastErrorAnalysis = ErrorAnalysis{m.rinfog(7), m.rinfog(8), m.rinfog(9), m.rinfog(10),
+                                          m.rinfog(11)};
+      first = 1;
+    }
+    if (first < nrhs) {
+      if (m.isRoot()) m.id.rhs = data.getRawPtr() + first * m.id.lrhs;
+      m.id.nrhs = static_cast<MUMPS_INT>(nrhs - first);
+      m.run(3);
+      m.check("solve");
+    }
+    m.id.rhs = nullptr;
+  }
+  x.doImport(root, *m.fromRoot, Tpetra::INSERT);
+  ++stats_.solves;
+  stats_.solveSeconds += secondsSince(t0);
+}
+
+std::optional<Determinant> MumpsSolver::determinant() const {
+  if (!options_.determinant || !impl_->factored) return std::nullopt;
+  // RINFOG(12) * 2^INFOG(34); RINFOG(13) is the imaginary part (complex arithmetic only).
+  return Determinant::normalized(impl_->rinfog(12), impl_->infog(34));
+}
+
+std::optional<double> MumpsSolver::conditionEstimate() const {
+  if (!impl_->lastErrorAnalysis) return std::nullopt;
+  return std::max(impl_->lastErrorAnalysis->cond1, impl_->lastErrorAnalysis->cond2);
+}
+
+std::optional<MumpsSolver::ErrorAnalysis> MumpsSolver::errorAnalysis() const {
+  return impl_->lastErrorAnalysis;
+}
+
+std::optional<long> MumpsSolver::negativePivots() const {
+  if (options_.mode == Mode::general || !impl_->factored) return std::nullopt;
+  return impl_->infog(12);
+}
+
+int MumpsSolver::memoryRelaxation() const { return impl_->icntl(14); }
+
+}  // namespace contactlab

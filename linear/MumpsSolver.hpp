@@ -1,0 +1,81 @@
+#pragma once
+// Direct solver MUMPS 5.5 through its C API, on the communicator of the solver (every rank
+// takes part: PAR = 1). The matrix is given distributed and assembled (ICNTL(18) = 3), each rank
+// passing its own rows; right-hand side and solution are centralized on rank 0 for the solve.
+// Construction and destruction are collective (MUMPS JOB = -1 / -2): every rank must create
+// and destroy the solver, in the same order as its other collective objects.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "linear/LinearSolver.hpp"
+
+namespace contactlab {
+
+class MumpsSolver : public LinearSolver {
+ public:
+  // MUMPS' SYM: 0 = general (LU), 1 = symmetric positive definite (LDL^T without pivoting),
+  // 2 = general symmetric (LDL^T with 1x1/2x2 pivots). Symmetric modes read the lower triangle.
+  enum class Mode { general = 0, symmetric = 1, symmetricIndefinite = 2 };
+  // MUMPS' ICNTL(7). METIS and SCOTCH are absent from Debian's MUMPS build.
+  enum class Ordering { amd = 0, amf = 2, pord = 4, qamd = 6 };
+
+  struct Options {
+    Mode mode = Mode::general;
+    Ordering ordering = Ordering::pord;
+    int memoryRelaxation = 20;  // ICNTL(14), percent over the analysis' estimate
+    bool determinant = false;   // ICNTL(33) at each factorization
+    bool conditionEstimate = false;  // ICNTL(11) = 1 at each solve (costs more than the solve)
+  };
+
+  // What MUMPS' error analysis (ICNTL(11) = 1) reported for the first right-hand side of the
+  // last solve (Arioli, Demmel, Duff 1989): forwardError <= omega1*cond1 + omega2*cond2.
+  struct ErrorAnalysis {
+    double omega1 = 0;  // RINFOG(7): componentwise backward error, max_i |r_i| / (|A||x|+|b|)_i
+    double omega2 = 0;  // RINFOG(8): same with ||A_i||_inf ||x||_inf for rows where the first
+                        // denominator is tiny
+    double forwardError = 0;  // RINFOG(9): bound on ||x - x_exact||_inf / ||x||_inf
+    double cond1 = 0;         // RINFOG(10): condition number tied to omega1
+    double cond2 = 0;         // RINFOG(11): condition number tied to omega2
+  };
+
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+  // `params` is validated against validParameters() here again (defaults filled in).
+  static Options optionsFrom(const Teuchos::ParameterList& params);
+
+  MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>& comm);
+  ~MumpsSolver() override;  // collective
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  std::string name() const override { return "mumps"; }
+  // The pattern is compared with the analysed one even when patternChanged = false: a changed
+  // pattern always gets a new analysis (it costs one reduction and an O(nnz) comparison).
+  void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;
+  void solve(const MultiVector& b, MultiVector& x) override;
+  std::optional<Determinant> determinant() const override;
+  // max(cond1, cond2) of the last solve's error analysis (see ErrorAnalysis): a condition number
+  // of the system for that right-hand side, which bounds the forward error together with the
+  // backward errors; not the 2-norm condition number of A.
+  std::optional<double> conditionEstimate() const override;
+  std::optional<ErrorAnalysis> errorAnalysis() const;
+  // INFOG(12) after the last factorization: number of negative pivots, which is the number of
+  // negative eigenvalues in the symmetric modes (inertia). Empty in general mode.
+  std::optional<long> negativePivots() const;
+  // ICNTL(14) currently used (raised once after a workspace-too-small error).
+  int memoryRelaxation() const;
+  const LinearSolverStats& stats() const override { return stats_; }
+
+ private:
+  struct Impl;  // keeps dmumps_c.h and mpi.h out of this header
+  void analyse();
+  void factorize();
+  const Options options_;
+  std::unique_ptr<Impl> impl_;
+  LinearSolverStats stats_;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Bad input: each case must give a non-zero exit, one clear sentence on stderr that names the
+file, key or element and the valid choices, and no output folder at all.
+
+usage: check_bad_input.py CONTACTLAB WORKDIR"""
+import os, shutil, subprocess, sys
+
+exe, work = sys.argv[1], sys.argv[2]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+
+GOOD = """contactlab:
+  Name: bad-input
+  Mesh:
+    Type: rectangle
+    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}
+  Materials:
+    body:
+      Type: linear-elastic
+      linear-elastic: {E: 100.0, nu: 0.3}
+  Dirichlet:
+    fix: {Group: bottom, Components: xy}
+  Loads:
+    p: {Type: pressure, Group: top, Value: 1.0}
+"""
+
+# gmsh 2.2 mesh: two quads, the second one numbered clockwise (inverted).
+INVERTED_MSH = """$MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+1 1 "bottom"
+2 2 "body"
+$EndPhysicalNames
+$Nodes
+6
+1 0 0 0
+2 1 0 0
+3 2 0 0
+4 0 1 0
+5 1 1 0
+6 2 1 0
+$EndNodes
+$Elements
+4
+1 1 2 1 1 1 2
+2 1 2 1 1 2 3
+3 3 2 2 1 1 2 5 4
+4 3 2 2 1 2 5 6 3
+$EndElements
+"""
+
+def scene_with(old, new):
+    assert old in GOOD, old
+    return GOOD.replace(old, new)
+
+cases = [
+    ("missing scene file", None, ["does-not-exist.yaml"], ["does-not-exist.yaml", "does not exist"]),
+    ("missing mesh file",
+     scene_with("Type: rectangle\n    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}",
+                "Type: file\n    file: {Path: nowhere.msh}"),
+     [], ["nowhere.msh", "does not exist"]),
+    ("malformed YAML", GOOD.replace("{E: 100.0, nu: 0.3}", "{E: 100.0, nu: [0.3}"), [],
+     ["malformed YAML", "scene.yaml", "line"]),
+    ("unknown key", scene_with("{E: 100.0, nu: 0.3}", "{E: 100.0, nu: 0.3, Youngs: 3}"), [],
+     ["scene.yaml", "unknown key 'Youngs'", "Materials/body/linear-elastic", "valid keys: E, nu"]),
+    ("unknown top-level key", GOOD + "  Solverr: {}\n", [], ["unknown key 'Solverr'", "valid keys"]),
+    ("unknown Type name", GOOD + "  Linear Solver: {Type: superlu}\n", [],
+     ["'superlu'", "Linear Solver/Type", "mumps", "klu2", "belos"]),
+    ("unknown material type", scene_with("Type: linear-elastic", "Type: rubber"), [],
+     ["'rubber'", "Materials/body/Type", "linear-elastic"]),
+    ("unknown element type", scene_with("Element: quad4", "Element: quad5"), [],
+     ["quad5", "Mesh/rectangle/Element", "quad4"]),
+    ("E <= 0", scene_with("E: 100.0", "E: -5.0"), [], ["Materials/body", "E must be > 0"]),
+    ("nu outside (-1, 0.5)", scene_with("nu: 0.3", "nu: 0.5"), [], ["Materials/body", "(-1, 0.5)"]),
+    ("missing boundary group", scene_with("Group: bottom", "Group: bottm"), [],
+     ["'bottm'", "fix", "bottom, right, top, left"]),
+    ("wrong value type", scene_with("nx: 4", "nx: four"), [], ["Mesh/rectangle/nx", "integer"]),
+    ("inverted element",
+     scene_with("Type: rectangle\n    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}",
+                "Type: file\n    file: {Path: inverted.msh}").replace(
+         "    p: {Type: pressure, Group: top, Value: 1.0}\n", "    g: {Type: body-force, Vector: [0, -1]}\n"),
+     [], ["inverted", "element 1 (gmsh tag 4)", "block 'body'", "inverted.msh"]),
+    ("bad --set", GOOD, ["--set", "Mesh/rectangle/nx"], ["--set", "key=value"]),
+]
+
+open(os.path.join(work, "inverted.msh"), "w").write(INVERTED_MSH)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+failures = 0
+for name, scene, extra, expected in cases:
+    out = os.path.join(work, "out-" + name.replace(" ", "-"))
+    if scene is not None:
+        path = os.path.join(work, "scene.yaml")
+        open(path, "w").write(scene)
+        args = [path] + extra
+    else:
+        args = [os.path.join(work, extra[0])] + extra[1:]
+    run = subprocess.run([exe, "run"] + args + ["--out", out], capture_output=True, text=True,
+                         env=env, timeout=120)
+    err = run.stderr.strip()
+    problems = []
+    if run.returncode == 0:
+        problems.append("exit code 0")
+    lines = [l for l in err.splitlines() if l.strip()]
+    if not lines or not lines[0].startswith("contactlab: error:"):
+        problems.append("no 'contactlab: error:' line")
+    elif name != "bad --set" and len(lines) != 1:
+        problems.append(f"{len(lines)} lines on stderr instead of one")
+    for e in expected:
+        if e not in err:
+            problems.append(f"message lacks {e!r}")
+    if os.path.exists(out):
+        problems.append("an output folder was created")
+    status = "ok  " if not problems else "FAIL"
+    print(f"{status} {name}: {err.splitlines()[0] if err else '(no message)'}")
+    for p in problems:
+        print("       " + p)
+    failures += bool(problems)
+print(f"{len(cases) - failures} passed, {failures} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""Runs a scene with the contactlab command and checks the results contract (DESIGN.md §5):
+result.pvd and its pieces readable by VTK, steps.csv, summary.json with probes.
+
+usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [key=expected ...]
+A scene file states its own expectations in lines "# expect: key=value@tol ...".
+An expectation `probes.tip.value.1=-0.0123@1e-3` compares a summary.json value (dotted path,
+list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute."""
+import csv, json, os, shutil, subprocess, sys
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+exe, scene, out, ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+shutil.rmtree(out, ignore_errors=True)
+cmd = [exe, "run"] + ([scene] if scene != "-" else []) + ["--out", out]
+if ranks > 1:
+    cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
+print(run.stdout, run.stderr)
+assert run.returncode == 0, f"exit code {run.returncode}"
+assert "summary.json" in run.stdout and "result.pvd" in run.stdout
+
+summary = json.load(open(os.path.join(out, "summary.json")))
+assert summary["converged"] is True and summary["failure"] is None
+assert summary["ranks"] == ranks
+assert summary["dofs"] > 0 and summary["linear_solves"] >= 1
+
+rows = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
+assert len(rows) == summary["load_steps"]["requested"], rows
+assert float(rows[-1]["time"]) > 0
+
+reader = vtk.vtkPVDReader() if hasattr(vtk, "vtkPVDReader") else None
+pvd = open(os.path.join(out, "result.pvd")).read()
+assert pvd.count("<DataSet") == len(rows)
+last = pvd.split('file="')[-1].split('"')[0]
+path = os.path.join(out, last)
+r = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(path)
+r.Update()
+grid = r.GetOutput()
+assert grid.GetNumberOfCells() == summary["elements"], (grid.GetNumberOfCells(), summary["elements"])
+for name in ["displacement"]:
+    assert grid.GetPointData().GetArray(name) is not None, name
+for name in ["stress", "von_mises", "material", "rank"]:
+    assert grid.GetCellData().GetArray(name) is not None, name
+ranks_seen = set(vtk_to_numpy(grid.GetCellData().GetArray("rank")).astype(int).tolist())
+assert ranks_seen == set(range(ranks)), ranks_seen
+
+def lookup(obj, path):
+    for part in path.split("."):
+        obj = obj[int(part)] if isinstance(obj, list) else obj[part]
+    return obj
+
+# Expectations: command-line arguments, plus "# expect: key=value@tol" lines in the scene file.
+specs = list(sys.argv[5:])
+if scene != "-":
+    for line in open(scene):
+        if line.startswith("# expect:"):
+            specs += line.split(":", 1)[1].split()
+assert scene == "-" or specs, "a shipped scene must state at least one expectation"
+for spec in specs:
+    key, rest = spec.split("=", 1)
+    value, tol = (rest.split("@") + ["1e-9"])[:2]
+    got = float(lookup(summary, key))
+    want = float(value)
+    bound = float(tol[1:]) if tol.startswith("a") else float(tol) * abs(want)
+    assert abs(got - want) <= bound, f"{key}: got {got}, want {want} +- {bound}"
+    print(f"{key} = {got:.6g} (expected {want:.6g} +- {tol})")
+print("ok")

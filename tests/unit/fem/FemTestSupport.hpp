@@ -1,0 +1,126 @@
+#pragma once
+// Shared fixtures of the fem unit tests: element type lists, reference-cell sampling and small
+// materials (the project's LinearElastic lives elsewhere; these keep the tests self-contained).
+#include <array>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/fem/ReferenceElement.hpp"
+#include "core/materials/Material.hpp"
+#include "core/mesh/ElementType.hpp"
+
+namespace contactlab::test {
+
+inline std::vector<ElementType> allTypes() {
+  std::vector<ElementType> t;
+  for (int k = 0; k <= static_cast<int>(ElementType::Hex27); ++k)
+    t.push_back(static_cast<ElementType>(k));
+  return t;
+}
+
+inline std::vector<ElementType> solidTypes() {
+  std::vector<ElementType> t;
+  for (ElementType type : allTypes())
+    if (info(type).dim >= 2) t.push_back(type);
+  return t;
+}
+
+inline bool isSimplex(ElementType t) {
+  return t == ElementType::Tri3 || t == ElementType::Tri6 || t == ElementType::Tet4 ||
+         t == ElementType::Tet10;
+}
+
+inline std::string nameOf(ElementType t) { return info(t).name; }
+
+// A point strictly inside the reference cell.
+inline std::vector<double> randomPoint(ElementType type, std::mt19937& rng) {
+  const int d = info(type).dim;
+  std::uniform_real_distribution<double> u(0.02, 0.98);
+  std::vector<double> xi(d);
+  if (isSimplex(type)) {
+    double sum;
+    do {
+      sum = 0;
+      for (double& v : xi) v = u(rng), sum += v;
+    } while (sum > 0.97);
+  } else {
+    for (double& v : xi) v = 2 * u(rng) - 1;
+  }
+  return xi;
+}
+
+// Physical nodes of a mildly curved element: the reference nodes through a smooth map
+// x = A xi + c + eps * sin-terms (3 coordinates per node, z = 0 in 2D).
+inline std::vector<double> distortedNodes(ElementType type, double eps = 0.05) {
+  const auto& ref = ReferenceElement::get(type);
+  const int d = ref.dim();
+  const double A[3][3] = {{1.3, 0.2, -0.1}, {0.1, 0.9, 0.15}, {-0.05, 0.1, 1.1}};
+  const double c[3] = {0.4, -0.7, 1.2};
+  std::vector<double> x(3 * ref.numNodes(), 0.0);
+  for (int a = 0; a < ref.numNodes(); ++a) {
+    const double* xi = &ref.nodeCoordinates()[a * d];
+    for (int i = 0; i < d; ++i) {
+      double v = c[i];
+      for (int j = 0; j < d; ++j) v += A[i][j] * xi[j];
+      v += eps * std::sin(1.0 + xi[(i + 1) % d] * (i + 1.5));
+      x[3 * a + i] = v;
+    }
+  }
+  return x;
+}
+
+// Isotropic linear elasticity, small strain.
+class IsotropicElastic : public Material {
+ public:
+  IsotropicElastic(double E, double nu) {
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) C_[i * 6 + j] = lambda;
+      C_[i * 6 + i] += 2 * mu;
+      C_[(i + 3) * 6 + i + 3] = mu;
+    }
+  }
+  std::string name() const override { return "test-isotropic"; }
+  Kinematics kinematics() const override { return Kinematics::SmallStrain; }
+  void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
+    for (int i = 0; i < 6; ++i) {
+      out.stress[i] = 0;
+      for (int j = 0; j < 6; ++j) out.stress[i] += C_[i * 6 + j] * in.strain[j];
+    }
+    out.tangent = C_;
+  }
+  const std::array<double, 36>& C() const { return C_; }
+
+ private:
+  std::array<double, 36> C_{};
+};
+
+// Nonlinear, unsymmetric law with one internal variable (a counter), to exercise the kernel's
+// unsymmetric path and state handling: sigma = C eps + k (eps . eps) m + s eps_xx e_xy.
+class UnsymmetricNonlinear : public IsotropicElastic {
+ public:
+  UnsymmetricNonlinear() : IsotropicElastic(100.0, 0.3) {}
+  std::string name() const override { return "test-unsymmetric"; }
+  int stateSize() const override { return 1; }
+  void initializeState(double* state) const override { state[0] = 0; }
+  void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
+    IsotropicElastic::evaluate(in, out);
+    const double m[6] = {1, 0.5, -0.3, 0.2, 0.7, -0.4};
+    double ee = 0;
+    for (double e : in.strain) ee += e * e;
+    for (int i = 0; i < 6; ++i) {
+      out.stress[i] += kQuad * ee * m[i];
+      for (int j = 0; j < 6; ++j) out.tangent[i * 6 + j] += kQuad * 2 * in.strain[j] * m[i];
+    }
+    out.stress[3] += kSkew * in.strain[0];
+    out.tangent[3 * 6 + 0] += kSkew;
+    if (out.stateNew) out.stateNew[0] = (in.stateOld ? in.stateOld[0] : 0) + 1;
+  }
+
+ private:
+  static constexpr double kQuad = 500.0, kSkew = 30.0;
+};
+
+}  // namespace contactlab::test

@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "MeshTestUtils.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+namespace {
+
+class HalfDiscGenerator : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(HalfDiscGenerator, GroupsAreaBoundariesAndGrading) {
+  HalfDiscParams p;
+  p.centre = {0.5, 2.0};
+  p.radius = 1.5;
+  p.grading = {0.03, 0.3, 0.05, 0.5};
+  p.elementType = GetParam();
+  const Mesh mesh = generateHalfDisc(p);
+  const auto type = elementTypeFromName(GetParam());
+
+  EXPECT_EQ(mesh.dim, 2);
+  EXPECT_EQ(mesh.blockNames(), std::vector<std::string>{"body"});
+  ASSERT_EQ(mesh.blocks.size(), 1u);  // all-quad or all-tri, never mixed
+  EXPECT_EQ(mesh.blocks[0].type, type);
+  EXPECT_GT(test::minJacobian(mesh), 0.0);
+  // Corner-based area misses the circular segments at the arc: O(h^2) relative.
+  EXPECT_NEAR(test::blockMeasure(mesh, "body"), M_PI * 1.5 * 1.5 / 2, 0.01);
+
+  for (auto n : mesh.boundaryNodes("flat")) EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
+  std::vector<double> arcDistances;  // distance of arc nodes to the contact point
+  for (auto n : mesh.boundaryNodes("curved")) {
+    const auto x = test::node(mesh, n);
+    EXPECT_NEAR(std::hypot(x[0] - 0.5, x[1] - 2.0), 1.5, 1e-9);
+    EXPECT_LE(x[1], 2.0 + 1e-12);
+    arcDistances.push_back(std::hypot(x[0] - 0.5, x[1] - 0.5));
+  }
+  const auto contact = mesh.boundaryNodes("contact-point");
+  ASSERT_EQ(contact.size(), 1u);
+  EXPECT_NEAR(test::node(mesh, contact[0])[0], 0.5, 1e-12);
+  EXPECT_NEAR(test::node(mesh, contact[0])[1], 0.5, 1e-12);
+
+  // Graded: the arc nodes next to the contact point are about sizeContact (/order) away,
+  // while the flat side (far away) has few nodes.
+  std::sort(arcDistances.begin(), arcDistances.end());
+  ASSERT_GT(arcDistances.size(), 3u);
+  EXPECT_EQ(arcDistances[0], 0.0);
+  EXPECT_LT(arcDistances[1], 0.06);
+  EXPECT_LT(mesh.boundaryNodes("flat").size(), static_cast<std::size_t>(3 * 2 / 0.3 * 2 + 3));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTypes, HalfDiscGenerator,
+                         ::testing::Values("tri3", "tri6", "quad4", "quad8", "quad9"));
+
+TEST(HalfDiscGeneratorErrors, NameTheParameter) {
+  HalfDiscParams p;
+  p.grading.sizeFar = 0.01;
+  try {
+    generateHalfDisc(p);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("grading.sizeFar"), std::string::npos);
+  }
+  p = HalfDiscParams{};
+  p.elementType = "tet4";
+  EXPECT_THROW(generateHalfDisc(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace contactlab

@@ -1,0 +1,94 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "MeshTestUtils.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+namespace {
+
+struct RectangleCase {
+  std::string type;
+  ElementType cellType;
+  ElementType lineType;
+  std::size_t cells;  // for 3 x 2 divisions
+  std::size_t nodes;
+};
+
+class RectangleGenerator : public ::testing::TestWithParam<RectangleCase> {};
+
+TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {
+  const auto& tc = GetParam();
+  RectangleParams p;
+  p.origin = {1.0, -0.5};
+  p.lengths = {3.0, 2.0};
+  p.divisions = {3, 2};
+  p.elementType = tc.type;
+  const Mesh mesh = generateRectangle(p);
+
+  EXPECT_EQ(mesh.dim, 2);
+  EXPECT_EQ(mesh.numNodes(), tc.nodes);
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "body");
+  EXPECT_EQ(mesh.blocks[0].type, tc.cellType);
+  EXPECT_EQ(mesh.numElements(), tc.cells);
+  EXPECT_NEAR(test::blockMeasure(mesh, "body"), 6.0, 1e-12);
+  EXPECT_GT(test::minJacobian(mesh), 0.0);
+
+  const std::vector<std::string> names{"bottom",    "right",     "top",       "left",
+                                       "corner-bl", "corner-br", "corner-tr", "corner-tl"};
+  EXPECT_EQ(mesh.boundaryNames(), names);
+  const int order = info(tc.cellType).order;
+  for (const auto& [side, axis, value, n] :
+       {std::tuple{"bottom", 1, -0.5, 3}, std::tuple{"top", 1, 1.5, 3},
+        std::tuple{"left", 0, 1.0, 2}, std::tuple{"right", 0, 4.0, 2}}) {
+    const auto groups = mesh.findBoundaries(side);
+    ASSERT_EQ(groups.size(), 1u);
+    EXPECT_EQ(groups[0]->type, tc.lineType);
+    EXPECT_EQ(groups[0]->size(), static_cast<std::size_t>(n));
+    const auto nodes = mesh.boundaryNodes(side);
+    EXPECT_EQ(nodes.size(), static_cast<std::size_t>(order * n + 1));
+    for (auto k : nodes) EXPECT_NEAR(test::node(mesh, k)[axis], value, 1e-12) << side;
+  }
+  const auto bl = mesh.boundaryNodes("corner-bl");
+  ASSERT_EQ(bl.size(), 1u);
+  EXPECT_NEAR(test::node(mesh, bl[0])[0], 1.0, 1e-12);
+  EXPECT_NEAR(test::node(mesh, bl[0])[1], -0.5, 1e-12);
+  const auto tr = mesh.boundaryNodes("corner-tr");
+  ASSERT_EQ(tr.size(), 1u);
+  EXPECT_NEAR(test::node(mesh, tr[0])[0], 4.0, 1e-12);
+  EXPECT_NEAR(test::node(mesh, tr[0])[1], 1.5, 1e-12);
+}
+
+// 3 x 2 divisions: 7*5 = 35 grid points at order 2, 4*3 = 12 at order 1.
+INSTANTIATE_TEST_SUITE_P(
+    AllTypes, RectangleGenerator,
+    ::testing::Values(RectangleCase{"tri3", ElementType::Tri3, ElementType::Line2, 12, 12},
+                      RectangleCase{"tri6", ElementType::Tri6, ElementType::Line3, 12, 35},
+                      RectangleCase{"quad4", ElementType::Quad4, ElementType::Line2, 6, 12},
+                      RectangleCase{"quad8", ElementType::Quad8, ElementType::Line3, 6, 29},
+                      RectangleCase{"quad9", ElementType::Quad9, ElementType::Line3, 6, 35}),
+    [](const auto& info) { return info.param.type; });
+
+TEST(RectangleGeneratorErrors, NameTheParameter) {
+  RectangleParams p;
+  p.elementType = "hex8";
+  try {
+    generateRectangle(p);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "rectangle generator: element type 'hex8' is not supported; valid choices: "
+                 "tri3, tri6, quad4, quad8, quad9");
+  }
+  p.elementType = "quad4";
+  p.divisions = {0, 1};
+  EXPECT_THROW(generateRectangle(p), std::invalid_argument);
+  p.divisions = {1, 1};
+  p.lengths = {1.0, -1.0};
+  EXPECT_THROW(generateRectangle(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace contactlab
