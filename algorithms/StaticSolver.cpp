@@ -2,9 +2,16 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace contactlab {
 namespace {
+
+std::string sci(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", v);
+  return buffer;
+}
 
 double seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -22,7 +29,7 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validLoadSteps()
 Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
   p->set("Max Iterations", 20, "Newton iterations allowed per load step (>= 1)");
-  p->set("Relative Tolerance", 1e-10,
+  p->set("Relative Tolerance", 1e-8,
          "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate||");
   p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
   return p;
@@ -85,15 +92,16 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
         report.failure = "diverged";
         report.message = "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " +
-                         std::to_string(norm);
+                         sci(norm);
         break;
       }
       if (it == options_.maxIterations) {
         report.failure = "max-iterations";
         report.message = "Newton did not converge in " + std::to_string(it) +
-                         " iterations at step " + std::to_string(step) + " (||R|| = " +
-                         std::to_string(norm) + ", target " +
-                         std::to_string(options_.relativeTolerance * reference) + ")";
+                         " iterations at step " + std::to_string(step) + " (||R|| = " + sci(norm) +
+                         ", target " +
+                         sci(std::max(options_.absoluteTolerance,
+                                      options_.relativeTolerance * reference)) + ")";
         break;
       }
       t0 = clock::now();

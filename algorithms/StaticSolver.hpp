@@ -17,7 +17,7 @@ struct StaticSolverOptions {
   int steps = 1;
   double endTime = 1.0;
   int maxIterations = 20;
-  double relativeTolerance = 1e-10;
+  double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();

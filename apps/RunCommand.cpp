@@ -112,8 +112,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
               << " dofs on " << comm->getSize() << " rank(s), " << steps << " load step(s)\n";
 
   // 2. Solve; each converged step is written at once.
-  auto rawComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-  MPI_Comm mpiComm = rawComm.is_null() ? MPI_COMM_SELF : *rawComm->getRawMpiComm();
+  MPI_Comm mpiComm = rawMpiComm(comm);
   std::unique_ptr<VtkSeriesWriter> vtk;
   CsvWriter stepsCsv({"step", "time", "newton_iterations", "linear_solves", "residual",
                       "contact_points", "stick_points", "slip_points", "cycling_events",

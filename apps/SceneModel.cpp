@@ -18,11 +18,6 @@ namespace {
 
 using Teuchos::ParameterList;
 
-MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm) {
-  auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-  return mpi.is_null() ? MPI_COMM_SELF : *mpi->getRawMpiComm();
-}
-
 // Runs `build` on rank 0; an InputError there is rethrown on every rank.
 std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>()>& build,
                                       MPI_Comm comm) {
@@ -99,7 +94,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
           throw InputError(where + ": Mesh: " + e.what());
         }
       },
-      rawComm(comm));
+      rawMpiComm(comm));
   sm.model.mesh = mesh;
   const int dim = mesh->dim;
 

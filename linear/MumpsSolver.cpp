@@ -205,13 +205,13 @@ void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternCha
     throw LinearSolverError("MUMPS needs a fill-completed matrix (call fillComplete first)");
   int compare = MPI_UNEQUAL;
   MPI_Comm_compare(rawCommOf(*A->getComm()), m.comm, &compare);
-  if (compare != MPI_CONGRUENT)
+  if (compare != MPI_CONGRUENT && compare != MPI_IDENT)
     throw LinearSolverError("the matrix given to MUMPS lives on another communicator");
   const auto N = A->getGlobalNumRows();
   if (N != A->getGlobalNumCols())
     throw LinearSolverError("MUMPS needs a square matrix (got " + std::to_string(N) + " x " +
                             std::to_string(A->getGlobalNumCols()) + ")");
-  if (N > static_cast<decltype(N)>(std::numeric_limits<MUMPS_INT>::max()))
+  if (N > static_cast<Tpetra::global_size_t>(std::numeric_limits<MUMPS_INT>::max()))
     throw LinearSolverError("matrix order " + std::to_string(N) +
                             " exceeds MUMPS' 32-bit index range");
 

@@ -8,16 +8,25 @@ namespace {
 
 // Reference node coordinates, copied from gmsh::model::mesh::getElementProperties (gmsh 4.11)
 // and checked against it by the unit tests.
+// clang-format off
 const std::vector<double> kLine3 = {-1, 1, 0};
-const std::vector<double> kTri6 = {0, 0, 1, 0, 0, 1, 0.5, 0, 0.5, 0.5, 0, 0.5};
-const std::vector<double> kQuad9 = {-1, -1, 1, -1, 1, 1, -1, 1, 0, -1, 1, 0, -1, 0, 0, 1, 0, 0};
-const std::vector<double> kTet10 = {0, 0, 0,   1, 0,   0,   0, 1,   0,   0,   0,   1,   0.5, 0, 0,
-                                    0.5, 0.5, 0, 0, 0.5, 0, 0, 0, 0.5, 0, 0.5, 0.5, 0.5, 0,   0.5};
+const std::vector<double> kTri6 = {0, 0,  1, 0,  0, 1,  0.5, 0,  0.5, 0.5,  0, 0.5};
+const std::vector<double> kQuad9 = {-1, -1,  1, -1,  1, 1,  -1, 1,      // corners
+                                    0, -1,  1, 0,  0, 1,  -1, 0,        // edges 01 12 23 30
+                                    0, 0};                              // centre
+const std::vector<double> kTet10 = {0, 0, 0,  1, 0, 0,  0, 1, 0,  0, 0, 1,
+                                    0.5, 0, 0,  0.5, 0.5, 0,  0, 0.5, 0,   // edges 01 12 20
+                                    0, 0, 0.5,  0, 0.5, 0.5,  0.5, 0, 0.5}; // edges 03 23 13
 const std::vector<double> kHex27 = {
-    -1, -1, -1, 1,  -1, -1, 1,  1,  -1, -1, 1,  -1, -1, -1, 1,  1,  -1, 1,  1,  1,  1,
-    -1, 1,  1,  0,  -1, -1, -1, 0,  -1, -1, -1, 0,  1,  0,  -1, 1,  -1, 0,  0,  1,  -1,
-    1,  1,  0,  -1, 1,  0,  0,  -1, 1,  -1, 0,  1,  1,  0,  1,  0,  1,  1,  0,  0,  -1,
-    0,  -1, 0,  -1, 0,  0,  1,  0,  0,  0,  1,  0,  0,  0,  1,  0,  0,  0};
+    -1, -1, -1,  1, -1, -1,  1, 1, -1,  -1, 1, -1,  // corners 0-3
+    -1, -1, 1,   1, -1, 1,   1, 1, 1,   -1, 1, 1,   // corners 4-7
+    0, -1, -1,  -1, 0, -1,  -1, -1, 0,  1, 0, -1,   // edges 01 03 04 12
+    1, -1, 0,   0, 1, -1,   1, 1, 0,    -1, 1, 0,   // edges 15 23 26 37
+    0, -1, 1,   -1, 0, 1,   1, 0, 1,    0, 1, 1,    // edges 45 47 56 67
+    0, 0, -1,  0, -1, 0,  -1, 0, 0,  1, 0, 0,  0, 1, 0,  0, 0, 1,  // faces 0321 0154 0473
+                                                                   //       1265 2376 4567
+    0, 0, 0};                                                      // centre
+// clang-format on
 // Tri6 and tet10 edge nodes, as pairs of vertices, in gmsh order.
 const std::vector<int> kTriEdges = {0, 1, 1, 2, 2, 0};
 const std::vector<int> kTetEdges = {0, 1, 1, 2, 2, 0, 0, 3, 2, 3, 1, 3};

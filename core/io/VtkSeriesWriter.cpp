@@ -130,17 +130,11 @@ void VtkSeriesWriter::writeStep(double time, const MeshPiece& piece) {
                 : stepPath(step);
 
   // 1. Validate on every rank before any file of this step is touched.
+  const std::string problem = std::isfinite(time)
+                                  ? errorOf([&] { validateMeshPiece(piece); })
+                                  : "time " + fullPrecision(time) + " is not finite";
   throwIfAnyRankFailed(
-      errorOf([&] {
-        std::string problem;
-        if (!std::isfinite(time))
-          problem = "time " + fullPrecision(time) + " is not finite";
-        else
-          problem = errorOf([&] { validateMeshPiece(piece); });
-        if (!problem.empty())
-          throw std::runtime_error("cannot write results to '" + piecePath + "': " + problem);
-      }),
-      comm_);
+      problem.empty() ? problem : "cannot write results to '" + piecePath + "': " + problem, comm_);
   if (size_ > 1) {
     const std::string mine = fieldSignature(piece);
     std::string reference = mine;

@@ -97,6 +97,9 @@ Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
     throw std::runtime_error(label +
                              " has no 2D or 3D physical group; the element blocks must be a "
                              "physical surface (2D) or physical volume (3D)");
+  // Boundaries listed facets first: they are the ones scenes refer to most.
+  std::stable_sort(physicals.begin(), physicals.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [dim, tag] : physicals) {
     auto& list = dim == mesh.dim ? mesh.blocks : mesh.boundaries;
     for (auto& g : readGroup(dim, tag, label)) list.push_back(std::move(g));

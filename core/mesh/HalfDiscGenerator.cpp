@@ -42,10 +42,11 @@ Mesh generateHalfDisc(const HalfDiscParams& p) {
     const int contact = occ::addPoint(cx, cy - r, 0);
     const int left = occ::addPoint(cx - r, cy, 0);
     const int right = occ::addPoint(cx + r, cy, 0);
-    const int arcRight = occ::addCircleArc(right, centre, contact);
-    const int arcLeft = occ::addCircleArc(contact, centre, left);
-    const int flat = occ::addLine(left, right);
-    const int loop = occ::addCurveLoop({arcRight, arcLeft, flat});
+    // Counter-clockwise loop: the surface normal is +z, so the elements are too.
+    const int arcRight = occ::addCircleArc(contact, centre, right);
+    const int flat = occ::addLine(right, left);
+    const int arcLeft = occ::addCircleArc(left, centre, contact);
+    const int loop = occ::addCurveLoop({arcRight, flat, arcLeft});
     const int surface = occ::addPlaneSurface({loop});
     occ::remove({{0, centre}});
     occ::synchronize();

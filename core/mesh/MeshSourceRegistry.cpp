@@ -19,6 +19,11 @@ RCP<const Teuchos::ParameterEntryValidator> oneOf(const std::vector<std::string>
   return Teuchos::rcp(new Teuchos::StringValidator(Array<std::string>(names)));
 }
 
+template <class T>
+Array<T> arrayOf(const std::vector<T>& values) {
+  return Array<T>(values);
+}
+
 const std::vector<std::string> k2D{"tri3", "tri6", "quad4", "quad8", "quad9"};
 const std::vector<std::string> k3D{"tet4", "tet10", "hex8", "hex20", "hex27"};
 
@@ -53,7 +58,7 @@ RCP<const ParameterList> fileParameters() {
 
 RCP<const ParameterList> rectangleParameters() {
   auto p = Teuchos::rcp(new ParameterList("rectangle"));
-  p->set("Origin", Array<double>{0.0, 0.0}, "Lower-left corner");
+  p->set("Origin", arrayOf<double>({0.0, 0.0}), "Lower-left corner");
   p->set("Lx", 1.0, "Width");
   p->set("Ly", 1.0, "Height");
   p->set("nx", 4, "Divisions along x");
@@ -64,7 +69,7 @@ RCP<const ParameterList> rectangleParameters() {
 
 RCP<const ParameterList> boxParameters() {
   auto p = Teuchos::rcp(new ParameterList("box"));
-  p->set("Origin", Array<double>{0.0, 0.0, 0.0}, "Corner with the smallest coordinates");
+  p->set("Origin", arrayOf<double>({0.0, 0.0, 0.0}), "Corner with the smallest coordinates");
   p->set("Lx", 1.0, "Length along x");
   p->set("Ly", 1.0, "Length along y");
   p->set("Lz", 1.0, "Length along z");
@@ -78,7 +83,7 @@ RCP<const ParameterList> boxParameters() {
 RCP<const ParameterList> halfDiscParameters() {
   auto p = Teuchos::rcp(new ParameterList("half-disc"));
   HalfDiscParams d;
-  p->set("Centre", Array<double>{d.centre[0], d.centre[1]},
+  p->set("Centre", arrayOf<double>({d.centre[0], d.centre[1]}),
          "Centre of the disc; the flat side lies at its height");
   p->set("Radius", d.radius, "Radius");
   addGrading(*p, d.grading);
@@ -89,7 +94,7 @@ RCP<const ParameterList> halfDiscParameters() {
 RCP<const ParameterList> halfSphereParameters() {
   auto p = Teuchos::rcp(new ParameterList("half-sphere"));
   HalfSphereParams d;
-  p->set("Centre", Array<double>{d.centre[0], d.centre[1], d.centre[2]},
+  p->set("Centre", arrayOf<double>({d.centre[0], d.centre[1], d.centre[2]}),
          "Centre of the ball; the flat face lies at its height");
   p->set("Radius", d.radius, "Radius");
   addGrading(*p, d.grading);
@@ -99,13 +104,13 @@ RCP<const ParameterList> halfSphereParameters() {
 
 RCP<const ParameterList> stacked2DParameters() {
   auto p = Teuchos::rcp(new ParameterList("stacked-blocks-2d"));
-  p->set("Origin", Array<double>{0.0, 0.0}, "Lower-left corner of the lower block");
+  p->set("Origin", arrayOf<double>({0.0, 0.0}), "Lower-left corner of the lower block");
   p->set("Width", 1.0, "Width of both blocks");
   p->set("Lower Height", 1.0, "Height of the lower block");
   p->set("Upper Height", 1.0, "Height of the upper block");
   p->set("Gap", 0.0, "Initial gap between the blocks (negative: overlap)");
-  p->set("Lower Divisions", Array<int>{2, 2}, "nx, ny of the lower block");
-  p->set("Upper Divisions", Array<int>{3, 3}, "nx, ny of the upper block");
+  p->set("Lower Divisions", arrayOf<int>({2, 2}), "nx, ny of the lower block");
+  p->set("Upper Divisions", arrayOf<int>({3, 3}), "nx, ny of the upper block");
   p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh, degrees");
   p->set("Element", "quad4", "Element type", oneOf(k2D));
   return p;
@@ -113,13 +118,13 @@ RCP<const ParameterList> stacked2DParameters() {
 
 RCP<const ParameterList> stacked3DParameters() {
   auto p = Teuchos::rcp(new ParameterList("stacked-blocks-3d"));
-  p->set("Origin", Array<double>{0.0, 0.0, 0.0}, "Lowest corner of the lower block");
-  p->set("Footprint", Array<double>{1.0, 1.0}, "Lx, Ly of both blocks");
+  p->set("Origin", arrayOf<double>({0.0, 0.0, 0.0}), "Lowest corner of the lower block");
+  p->set("Footprint", arrayOf<double>({1.0, 1.0}), "Lx, Ly of both blocks");
   p->set("Lower Height", 1.0, "Height of the lower block");
   p->set("Upper Height", 1.0, "Height of the upper block");
   p->set("Gap", 0.0, "Initial gap between the blocks (negative: overlap)");
-  p->set("Lower Divisions", Array<int>{2, 2, 2}, "nx, ny, nz of the lower block");
-  p->set("Upper Divisions", Array<int>{3, 3, 3}, "nx, ny, nz of the upper block");
+  p->set("Lower Divisions", arrayOf<int>({2, 2, 2}), "nx, ny, nz of the lower block");
+  p->set("Upper Divisions", arrayOf<int>({3, 3, 3}), "nx, ny, nz of the upper block");
   p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh about z, degrees");
   p->set("Element", "hex8", "Element type", oneOf(k3D));
   return p;

@@ -1,6 +1,7 @@
 #pragma once
 // The Tpetra types used by contactlab. Debian's Trilinos 13.2 is instantiated for exactly
 // Scalar=double, LO=int, GO=long long, Node=Serial: use nothing else.
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsGraph.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
@@ -21,5 +22,11 @@ using Vector = Tpetra::Vector<Scalar, LO, GO, Node>;
 using Import = Tpetra::Import<LO, GO, Node>;
 using Export = Tpetra::Export<LO, GO, Node>;
 using Comm = Teuchos::Comm<int>;
+
+// The MPI communicator under a Teuchos one (MPI_COMM_SELF for a serial Teuchos comm).
+inline MPI_Comm rawMpiComm(const Teuchos::RCP<const Comm>& comm) {
+  auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+  return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
+}
 
 }  // namespace contactlab

@@ -38,9 +38,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     : model_(std::move(model)), comm_(comm) {
   const Mesh& mesh = *model_.mesh;
   checkModel();
-  auto rawComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-  MPI_Comm mpiComm = rawComm.is_null() ? MPI_COMM_SELF : *rawComm->getRawMpiComm();
-  const auto partition = partitionElements(mesh, mpiComm);
+  const auto partition = partitionElements(mesh, rawMpiComm(comm));
   dofs_ = std::make_unique<DofMap>(mesh, partition, comm);
 
   blockMaterial_.resize(mesh.blocks.size());
@@ -181,9 +179,7 @@ void Problem::locateSurfaceLoads() {
       if (loadedNodes.count(n)) elementsOfNode[n].push_back(static_cast<int>(e));
     }
   }
-  auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_);
-  MPI_Comm mpiComm = comm.is_null() ? MPI_COMM_SELF : *comm->getRawMpiComm();
-  const auto partition = partitionElements(mesh, mpiComm);
+  const auto partition = partitionElements(mesh, rawMpiComm(comm_));
   for (int l = 0; l < static_cast<int>(model_.surfaceLoads.size()); ++l) {
     for (const auto* g : mesh.findBoundaries(model_.surfaceLoads[l].group)) {
       const int npc = g->nodesPerCell();

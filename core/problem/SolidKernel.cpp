@@ -99,8 +99,10 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
     for (int k = 0; k < 6; ++k) averageStress[k] = 0.0;
 
   double dNdx[kMaxNodes * D];
-  double G[kMaxNodes * V * D];  // w C B_b, node by node
-  double S[kMaxNodes * V * D];  // w (C^T - C) B_b, only for unsymmetric material tangents
+  // w C B and, for unsymmetric material tangents, w (C - C^T) B, as V x nd row-major
+  // matrices: K's rows are then contiguous fused axpys of their rows, which vectorize.
+  double CB[V * kMaxNodes * D];
+  double SB[V * kMaxNodes * D];
   MaterialInput in;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
@@ -135,56 +137,10 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
           residual[a * D + i] += f;
         }
     }
-    if (!tangent) continue;
-
-    double C[V][V];
-    bool symmetric = true;
-    for (int p = 0; p < V; ++p)
-      for (int r = 0; r < V; ++r) {
-        const int rp = D == 3 ? p : kPlaneRows[p], rr = D == 3 ? r : kPlaneRows[r];
-        C[p][r] = out.tangent[rp * 6 + rr];
-      }
-    for (int p = 0; p < V; ++p)
-      for (int r = 0; r < p; ++r) symmetric = symmetric && C[p][r] == C[r][p];
-    // G_b[v][k] = w sum_l C[v][voigt(k, l)] dN_b/dx_l: C B_b uses B's 1-3 nonzeros per column.
-    for (int b = 0; b < n; ++b) {
-      const double* g = &dNdx[b * D];
-      for (int v = 0; v < V; ++v)
-        for (int k = 0; k < D; ++k) {
-          double s = 0.0, t = 0.0;
-          for (int l = 0; l < D; ++l) {
-            s += C[v][voigt<D>(k, l)] * g[l];
-            if (!symmetric) t += (C[voigt<D>(k, l)][v] - C[v][voigt<D>(k, l)]) * g[l];
-          }
-          G[(b * V + v) * D + k] = w * s;
-          if (!symmetric) S[(b * V + v) * D + k] = w * t;
-        }
-    }
-    // Upper blocks K_ab = B_a^T G_b (b >= a); the lower ones are mirrored after the loop, plus
-    // the unsymmetric correction B_a^T (C^T - C) B_b accumulated here, transposed.
-    for (int a = 0; a < n; ++a) {
-      const double* g = &dNdx[a * D];
-      for (int b = a; b < n; ++b) {
-        const double* Gb = &G[b * V * D];
-        for (int i = 0; i < D; ++i) {
-          double* row = &tangent[(a * D + i) * nd + b * D];
-          for (int k = 0; k < D; ++k) {
-            double s = 0.0;
-            for (int j = 0; j < D; ++j) s += g[j] * Gb[voigt<D>(i, j) * D + k];
-            row[k] += s;
-          }
-        }
-        if (symmetric || b == a) continue;
-        const double* Sb = &S[b * V * D];
-        for (int i = 0; i < D; ++i)
-          for (int k = 0; k < D; ++k) {
-            double s = 0.0;
-            for (int j = 0; j < D; ++j) s += g[j] * Sb[voigt<D>(i, j) * D + k];
-            tangent[(b * D + k) * nd + a * D + i] += s;
-          }
-      }
-    }
+    if (tangent) accumulateTangent<D>(out.tangent.data(), w, dNdx, CB, SB, tangent);
   }
+  // Only the blocks b >= a were accumulated (plus unsymmetric corrections below the diagonal):
+  // mirror the strictly upper blocks.
   if (tangent)
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b)
@@ -193,6 +149,59 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
             tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
   if (averageStress)
     for (int k = 0; k < 6; ++k) averageStress[k] /= volume;
+}
+
+// Adds w B^T C B at one quadrature point. Only the blocks b >= a of K_ab = B_a^T C B_b are
+// added: computeImpl mirrors them to b < a at the end. When C is unsymmetric, the mirror would
+// give B_a^T C^T B_b there instead, so the difference B_a^T (C - C^T) B_b is added now.
+template <int D>
+void SolidKernel::accumulateTangent(const double* C6, double w, const double* dNdx, double* CB,
+                                    double* SB, double* tangent) const {
+  constexpr int V = D == 2 ? 3 : 6;
+  const int n = numNodes_, nd = D * n;
+  double C[V][V];
+  for (int p = 0; p < V; ++p)
+    for (int r = 0; r < V; ++r) {
+      const int rp = D == 3 ? p : kPlaneRows[p], rr = D == 3 ? r : kPlaneRows[r];
+      C[p][r] = C6[rp * 6 + rr];
+    }
+  bool symmetric = true;
+  for (int p = 0; p < V; ++p)
+    for (int r = 0; r < p; ++r) symmetric = symmetric && C[p][r] == C[r][p];
+  // (C B)[v][b D + k] = sum_l C[v][voigt(k, l)] dN_b/dx_l: B's columns have 1 to 3 nonzeros.
+  for (int b = 0; b < n; ++b) {
+    const double* g = &dNdx[b * D];
+    for (int k = 0; k < D; ++k)
+      for (int v = 0; v < V; ++v) {
+        double s = 0.0, t = 0.0;
+        for (int l = 0; l < D; ++l) {
+          s += C[v][voigt<D>(k, l)] * g[l];
+          if (!symmetric) t += (C[v][voigt<D>(k, l)] - C[voigt<D>(k, l)][v]) * g[l];
+        }
+        CB[v * nd + b * D + k] = w * s;
+        if (!symmetric) SB[v * nd + b * D + k] = w * t;
+      }
+  }
+  // Row (a, i) of B^T M is sum_j dN_a/dx_j M[voigt(i, j)]: D fused rows of M.
+  for (int a = 0; a < n; ++a) {
+    const double* g = &dNdx[a * D];
+    for (int i = 0; i < D; ++i) {
+      double* row = &tangent[(a * D + i) * nd];
+      const double* m0 = &CB[voigt<D>(i, 0) * nd];
+      const double* m1 = &CB[voigt<D>(i, 1) * nd];
+      if constexpr (D == 2) {
+        for (int c = a * D; c < nd; ++c) row[c] += g[0] * m0[c] + g[1] * m1[c];
+      } else {
+        const double* m2 = &CB[voigt<D>(i, 2) * nd];
+        for (int c = a * D; c < nd; ++c) row[c] += g[0] * m0[c] + g[1] * m1[c] + g[2] * m2[c];
+      }
+      if (symmetric) continue;
+      for (int j = 0; j < D; ++j) {
+        const double* s = &SB[voigt<D>(i, j) * nd];
+        for (int c = 0; c < a * D; ++c) row[c] += g[j] * s[c];
+      }
+    }
+  }
 }
 
 void SolidKernel::quadraturePoints(const double* x, double* points) const {

@@ -63,6 +63,9 @@ class SolidKernel {
   void computeImpl(const double* x, const double* u, const Material& material,
                    const double* stateOld, double* stateNew, double* residual,
                    double* tangent, double* pointStress, double* averageStress) const;
+  template <int D>
+  void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
+                         double* tangent) const;
   // Physical gradients at quadrature point q; returns det J times the weight.
   double gradients(int q, const double* x, double* dNdx) const;
   double measure(int q, const double* x) const;

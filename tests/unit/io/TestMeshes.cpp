@@ -25,15 +25,16 @@ const Coords kTet10 = {{0, 0, 0},     {1, 0, 0},   {0, 1, 0},   {0, 0, 1},     {
 // lower-order element's nodes first, so prefixes give the linear and serendipity types.
 Coords unitCoords(ElementType type) {
   const int n = info(type).nodes;
-  auto prefix = [n](const Coords& c, bool symmetric) {
+  const int dim = info(type).dim;
+  auto prefix = [n, dim](const Coords& c, bool symmetric) {
     Coords out(c.begin(), c.begin() + n);
     if (symmetric)
       for (auto& p : out)
-        for (auto& x : p)
-          x = (x + 1) / 2;
+        for (int d = 0; d < dim; ++d)
+          p[d] = (p[d] + 1) / 2;
     return out;
   };
-  switch (info(type).dim) {
+  switch (dim) {
     case 0:
       return {{0, 0, 0}};
     case 1:

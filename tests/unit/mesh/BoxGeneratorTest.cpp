@@ -15,6 +15,8 @@ struct BoxCase {
   std::size_t zminCells;
 };
 
+void PrintTo(const BoxCase& c, std::ostream* os) { *os << c.type; }
+
 class BoxGenerator : public ::testing::TestWithParam<BoxCase> {};
 
 TEST_P(BoxGenerator, CountsGroupsVolumeAndFaces) {

@@ -1,1 +1,145 @@
-// placeholder
+#include <gtest/gtest.h>
+
+#include "MeshTestUtils.hpp"
+#include "core/mesh/GmshReader.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
+namespace contactlab {
+namespace {
+
+void expectSameGroups(const std::vector<CellGroup>& a, const std::vector<CellGroup>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].name, b[i].name);
+    EXPECT_EQ(a[i].dim, b[i].dim);
+    EXPECT_EQ(a[i].type, b[i].type);
+    EXPECT_EQ(a[i].nodes, b[i].nodes) << a[i].name;
+    EXPECT_EQ(a[i].tags, b[i].tags) << a[i].name;
+  }
+}
+
+class GmshRoundTrip : public ::testing::TestWithParam<double> {};
+
+TEST_P(GmshRoundTrip, GeneratedMeshesReadBackIdentically) {
+  const std::string dir = test::freshTempDir("roundtrip");
+  RectangleParams rect;
+  rect.divisions = {3, 2};
+  rect.elementType = "quad9";
+  StackedBlocks3DParams stacked;
+  stacked.elementType = "tet10";
+  stacked.lowerDivisions = {1, 1, 1};
+  stacked.upperDivisions = {2, 1, 1};
+  BoxParams box;
+  box.divisions = {2, 1, 1};
+  box.elementType = "hex20";
+  int i = 0;
+  for (const Mesh& mesh :
+       {generateRectangle(rect), generateBox(box), generateStackedBlocks3D(stacked)}) {
+    const std::string path = dir + "/mesh" + std::to_string(i++) + ".msh";
+    test::writeWithGmsh(mesh, path, GetParam());
+    const Mesh read = readGmshFile(path);
+    EXPECT_EQ(read.source, path);
+    EXPECT_EQ(read.dim, mesh.dim);
+    ASSERT_EQ(read.coords.size(), mesh.coords.size());
+    for (std::size_t k = 0; k < read.coords.size(); ++k)  // gmsh writes 16 digits
+      EXPECT_NEAR(read.coords[k], mesh.coords[k], 1e-15 * 4);
+    expectSameGroups(read.blocks, mesh.blocks);
+    expectSameGroups(read.boundaries, mesh.boundaries);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Versions, GmshRoundTrip, ::testing::Values(2.2, 4.1),
+                         [](const auto& info) { return info.param < 3 ? "msh22" : "msh41"; });
+
+const char* kHeader = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+const char* kSquareNodes = "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n9 5 5 0\n$EndNodes\n";
+
+TEST(GmshReader, KeepsInvertedElementsNamesUnnamedGroupsAndDropsUnusedNodes) {
+  const std::string path = test::freshTempDir("reader") + "/inverted.msh";
+  test::writeText(path, std::string(kHeader) +
+                            "$PhysicalNames\n1\n2 7 \"plate\"\n$EndPhysicalNames\n" +
+                            kSquareNodes +
+                            "$Elements\n3\n10 2 2 7 1 1 2 3\n11 2 2 7 1 1 4 3\n"
+                            "12 1 2 3 2 1 2\n$EndElements\n");
+  const Mesh mesh = readGmshFile(path);
+  EXPECT_EQ(mesh.dim, 2);
+  EXPECT_EQ(mesh.numNodes(), 4u);  // node 9 is used by no element
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "plate");
+  EXPECT_EQ(mesh.blocks[0].tags, (std::vector<std::int64_t>{10, 11}));
+  EXPECT_EQ(mesh.blocks[0].nodes, (std::vector<std::int64_t>{0, 1, 2, 0, 3, 2}));
+  EXPECT_GT(test::cellMeasure(mesh, mesh.blocks[0], 0), 0.0);
+  EXPECT_LT(test::cellMeasure(mesh, mesh.blocks[0], 1), 0.0);  // inverted, not "fixed"
+  EXPECT_EQ(mesh.boundaryNames(), std::vector<std::string>{"curve-3"});
+}
+
+TEST(GmshReader, MissingFile) {
+  try {
+    readGmshFile("no/such/mesh.msh");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "mesh file 'no/such/mesh.msh' does not exist");
+  }
+}
+
+TEST(GmshReader, RejectsDirectoriesAndOtherExtensions) {
+  const std::string dir = test::freshTempDir("reader-ext");
+  EXPECT_THROW(readGmshFile(dir), std::invalid_argument);
+  test::writeText(dir + "/mesh.vtk", "");
+  try {
+    readGmshFile(dir + "/mesh.vtk");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("does not end in .msh"), std::string::npos);
+  }
+}
+
+TEST(GmshReader, FileWithoutPhysicalGroups) {
+  const std::string path = test::freshTempDir("reader-nophys") + "/plain.msh";
+  test::writeText(path, std::string(kHeader) + kSquareNodes +
+                            "$Elements\n1\n1 2 2 0 1 1 2 3\n$EndElements\n");
+  try {
+    readGmshFile(path);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("mesh file '" + path + "' has no physical groups", 0),
+              0u)
+        << e.what();
+  }
+}
+
+TEST(GmshReader, FileWithOnlyLinePhysicalGroups) {
+  const std::string path = test::freshTempDir("reader-1d") + "/lines.msh";
+  test::writeText(path, std::string(kHeader) + kSquareNodes +
+                            "$Elements\n1\n1 1 2 4 1 1 2\n$EndElements\n");
+  try {
+    readGmshFile(path);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no 2D or 3D physical group"), std::string::npos);
+  }
+}
+
+TEST(GmshReader, UnsupportedElementType) {
+  const std::string path = test::freshTempDir("reader-prism") + "/prism.msh";
+  test::writeText(path, std::string(kHeader) +
+                            "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 0 1\n6 0 1 1\n"
+                            "$EndNodes\n$Elements\n1\n1 6 2 1 1 1 2 3 4 5 6\n$EndElements\n");
+  try {
+    readGmshFile(path);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(path), std::string::npos) << what;
+    EXPECT_NE(what.find("gmsh element type 6 is not supported"), std::string::npos) << what;
+  }
+}
+
+TEST(GmshReader, GarbageFileIsARuntimeError) {
+  const std::string path = test::freshTempDir("reader-garbage") + "/garbage.msh";
+  test::writeText(path, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0\n");
+  EXPECT_THROW(readGmshFile(path), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace contactlab

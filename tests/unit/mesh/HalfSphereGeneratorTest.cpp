@@ -23,7 +23,10 @@ TEST_P(HalfSphereGenerator, GroupsVolumeAndBoundaries) {
   EXPECT_EQ(mesh.blocks[0].name, "body");
   EXPECT_EQ(mesh.blocks[0].type, elementTypeFromName(GetParam()));
   EXPECT_GT(test::minJacobian(mesh), 0.0);
-  EXPECT_NEAR(test::blockMeasure(mesh, "body"), 2 * M_PI / 3, 0.08);
+  // Straight-sided cells under the sphere: a few percent less than the exact volume.
+  const double volume = test::blockMeasure(mesh, "body");
+  EXPECT_LT(volume, 2 * M_PI / 3);
+  EXPECT_GT(volume, 0.93 * 2 * M_PI / 3);
 
   for (auto n : mesh.boundaryNodes("flat")) EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-9);
   for (auto n : mesh.boundaryNodes("curved")) {

@@ -16,6 +16,8 @@ struct RectangleCase {
   std::size_t nodes;
 };
 
+void PrintTo(const RectangleCase& c, std::ostream* os) { *os << c.type; }
+
 class RectangleGenerator : public ::testing::TestWithParam<RectangleCase> {};
 
 TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {

@@ -1,0 +1,101 @@
+// Benchmark: 3D linear elasticity on a unit cube (bottom clamped, top pressed) with MUMPS.
+// Prints one Markdown table row: element, dofs, nonzeros, ranks, seconds for mesh, setup,
+// assembly (one full residual + tangent), MUMPS analysis, factorization and solve, and the
+// peak memory per rank.
+//
+//   bench_elasticity ELEMENT N [--header]     (N divisions per direction)
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "core/materials/LinearElastic.hpp"
+#include "core/mesh/MeshBroadcast.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+#include "core/problem/Problem.hpp"
+#include "linear/LinearSolverRegistry.hpp"
+
+using namespace contactlab;
+
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  if (argc < 3) {
+    if (root) std::cerr << "usage: bench_elasticity ELEMENT N [--header]\n";
+    return 2;
+  }
+  const std::string type = argv[1];
+  const int n = std::stoi(argv[2]);
+  if (argc > 3 && root)
+    std::cout << "| element | dofs | nonzeros | ranks | mesh s | setup s | assembly s | analysis s "
+                 "| factorization s | solve s | assembly / factorization | peak MB/rank |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  MPI_Comm raw = rawMpiComm(comm);
+
+  double t0 = now();
+  auto mesh = std::make_shared<Mesh>();
+  if (root) {
+    BoxParams p;
+    p.divisions = {n, n, n};
+    p.elementType = type;
+    *mesh = generateBox(p);
+  }
+  broadcastMesh(*mesh, raw, 0);
+  const double meshSeconds = now() - t0;
+
+  SolidModel model;
+  model.mesh = mesh;
+  model.materials["body"] = std::make_shared<LinearElastic>(2.0e5, 0.3);
+  model.dirichlet.push_back({"clamp", "zmin", {0, 1, 2}, 0.0, {}, {}});
+  model.dirichlet.push_back({"press", "zmax", {2}, -0.01, {}, {}});
+  t0 = now();
+  Problem problem(model, comm);
+  const double setupSeconds = now() - t0;
+
+  auto u = problem.createVector();
+  auto r = problem.createVector();
+  problem.applyDirichlet(1.0, *u);
+  comm->barrier();
+  t0 = now();
+  problem.assemble(*u, 1.0, r.get(), true);
+  comm->barrier();
+  const double assemblySeconds = now() - t0;
+
+  registerLinearSolvers();
+  Teuchos::ParameterList params;
+  params.set("Mode", "symmetric");
+  auto solver = linearSolverRegistry().get("mumps").build(params, comm);
+  solver->setMatrix(problem.tangent(), true);
+  auto du = problem.createVector();
+  r->scale(-1.0);
+  solver->solve(*r, *du);
+  const auto& stats = solver->stats();
+
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  double memory = usage.ru_maxrss / 1024.0, maxMemory = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &memory, &maxMemory);
+  if (root)
+    std::printf("| %s | %lld | %zu | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f %% | %.0f |\n",
+                type.c_str(), static_cast<long long>(problem.dofs().numGlobalDofs()),
+                static_cast<size_t>(problem.tangent()->getGlobalNumEntries()), comm->getSize(),
+                meshSeconds, setupSeconds, assemblySeconds, stats.analysisSeconds,
+                stats.factorizationSeconds, stats.solveSeconds,
+                100.0 * assemblySeconds / stats.factorizationSeconds, maxMemory);
+  return 0;
+}

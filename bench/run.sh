@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Runs the benchmarks and writes their tables into doc/performance.md (between markers).
+# usage: bench/run.sh [--large]     (--large adds the ~600 000-dof cases: long, ~20 GB)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${BUILD_DIR:-build}
+exe=$BUILD/bench/bench_elasticity
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cases=("hex27 17" "tet10 22")
+if [[ "${1:-}" == "--large" ]]; then cases+=("hex27 29" "tet10 37"); fi
+table=$(mktemp)
+first=1
+for c in "${cases[@]}"; do
+  for np in 1 2; do
+    args=($c)
+    [[ $first == 1 ]] && args+=(--header) && first=0
+    mpirun -np $np --oversubscribe "$exe" "${args[@]}" | tee -a "$table"
+  done
+done
+python3 - "$table" <<'PY'
+import re, sys, datetime
+table = open(sys.argv[1]).read()
+doc = "doc/performance.md"
+text = open(doc).read()
+start, end = "<!-- bench:elasticity:start -->", "<!-- bench:elasticity:end -->"
+block = f"{start}\nMeasured {datetime.date.today()} by `bench/run.sh`:\n\n{table}{end}"
+text = re.sub(re.escape(start) + ".*?" + re.escape(end), block, text, flags=re.S)
+open(doc, "w").write(text)
+PY
+echo "bench: doc/performance.md updated"

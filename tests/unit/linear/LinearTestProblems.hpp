@@ -1,0 +1,53 @@
+#pragma once
+// Test matrices for the linear solvers, built on any number of ranks with either a contiguous
+// row map or a scattered one (rows dealt round-robin to the ranks and listed in decreasing order,
+// so the map is non-contiguous even on one rank). The matrix entry (i, j) is the same whatever
+// the layout: solutions compare by global id.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Teuchos_RCP.hpp>
+
+#include "core/problem/LinearAlgebra.hpp"
+
+namespace contactlab::test {
+
+enum class Layout { contiguous, scattered };
+std::string nameOf(Layout layout);
+
+Teuchos::RCP<const Map> makeMap(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm);
+
+// Fills the columns and values of global row `row`.
+using RowFunction = std::function<void(GO row, std::vector<GO>& cols, std::vector<double>& vals)>;
+Teuchos::RCP<Matrix> makeMatrix(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm,
+                                const RowFunction& rowOf);
+
+// 5-point Laplacian on an nx x ny grid, Dirichlet boundary (SPD).
+Teuchos::RCP<Matrix> laplacian2D(int nx, int ny, Layout layout,
+                                 const Teuchos::RCP<const Comm>& comm);
+// 7-point Laplacian on an n x n x n grid (SPD).
+Teuchos::RCP<Matrix> laplacian3D(int n, Layout layout, const Teuchos::RCP<const Comm>& comm);
+// [K B^T; B 0], K the nx x nx Laplacian, B m rows u_k - u_{k+1} = ... (symmetric indefinite,
+// exactly m negative eigenvalues).
+Teuchos::RCP<Matrix> saddlePoint(int nx, int m, Layout layout,
+                                 const Teuchos::RCP<const Comm>& comm);
+// -Laplace(u) + a (du/dx + du/dy), upwinded on an nx x nx grid (non-symmetric M-matrix).
+Teuchos::RCP<Matrix> convectionDiffusion(int nx, double a, Layout layout,
+                                         const Teuchos::RCP<const Comm>& comm);
+// tridiag(-1, 2, -1) of order n (det = n + 1).
+Teuchos::RCP<Matrix> tridiagonal(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm);
+// diag(d(0), ..., d(n-1)).
+Teuchos::RCP<Matrix> diagonal(GO n, const std::function<double(GO)>& d, Layout layout,
+                              const Teuchos::RCP<const Comm>& comm);
+
+// Right-hand side with `columns` columns, b(g, j) a smooth function of the global id g.
+Teuchos::RCP<MultiVector> rightHandSide(const Matrix& A, size_t columns);
+// Column `col` of v, on every rank, indexed by global id.
+std::vector<double> gathered(const MultiVector& v, size_t col);
+// max_j ||b_j - A x_j|| / ||b_j||.
+double relativeResidual(const Matrix& A, const MultiVector& b, const MultiVector& x);
+// max_j ||x_j - y_j|| / ||y_j||, comparing by global id (x and y may have different maps).
+double relativeDifference(const MultiVector& x, const MultiVector& y);
+
+}  // namespace contactlab::test
