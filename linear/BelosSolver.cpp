@@ -1,16 +1,16 @@
 #include "linear/BelosSolver.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <exception>
-#include <vector>
+#include "linear/SolverParameters.hpp"
 
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory_Tpetra.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "linear/SolverParameters.hpp"
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <vector>
 
 namespace contactlab {
 
@@ -43,7 +43,9 @@ const char* nameOf(Kind kind) {
   return "?";
 }
 
-std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string firstLine(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
 
 // A solve whose true residual exceeds this multiple of the tolerance throws even when Belos
 // reports convergence (its implicit residual can drift from the true one).
@@ -62,29 +64,26 @@ struct BelosSolver::Impl {
 };
 
 Teuchos::RCP<const Teuchos::ParameterList> BelosSolver::validParameters() {
-  using Teuchos::tuple;
   using Teuchos::rcp;
+  using Teuchos::tuple;
   using IntRange = Teuchos::EnhancedNumberValidator<int>;
   using RealRange = Teuchos::EnhancedNumberValidator<double>;
   auto p = rcp(new Teuchos::ParameterList("belos"));
   Teuchos::setStringToIntegralParameter<Method>(
-      "Method", "cg", "Krylov method",
-      tuple<std::string>("cg", "gmres"),
+      "Method", "cg", "Krylov method", tuple<std::string>("cg", "gmres"),
       tuple<std::string>("conjugate gradients: symmetric positive definite A and preconditioner",
                          "restarted GMRES, right-preconditioned: any nonsingular A"),
       tuple<Method>(Method::cg, Method::gmres), p.get());
   Teuchos::setStringToIntegralParameter<Kind>(
       "Preconditioner", "ifpack2-sgs", "Preconditioner, rebuilt at each new matrix",
       tuple<std::string>("none", "ifpack2-sgs", "ifpack2-riluk", "ifpack2-ilut", "muelu"),
-      tuple<std::string>("no preconditioner",
-                         "Ifpack2 symmetric Gauss-Seidel (Sweeps, Damping)",
+      tuple<std::string>("no preconditioner", "Ifpack2 symmetric Gauss-Seidel (Sweeps, Damping)",
                          "Ifpack2 additive Schwarz with ILU(k) subdomains (Fill Level, Overlap)",
                          "Ifpack2 additive Schwarz with ILUT subdomains (Fill Ratio, Drop "
-                         "Tolerance, Overlap)",
+                         "Tolerance, Overlap); gmres only: ILUT is not symmetric",
                          "MueLu smoothed aggregation AMG with Gauss-Seidel smoothing and a "
                          "relaxed coarse level; uses the near-null space when one is given"),
-      tuple<Kind>(Kind::none, Kind::ifpack2Sgs, Kind::ifpack2Riluk, Kind::ifpack2Ilut,
-                  Kind::muelu),
+      tuple<Kind>(Kind::none, Kind::ifpack2Sgs, Kind::ifpack2Riluk, Kind::ifpack2Ilut, Kind::muelu),
       p.get());
   p->set("Tolerance", 1e-10, "Convergence when ||b - A x|| <= Tolerance * ||b||",
          rcp(new RealRange(0.0, 1.0)));
@@ -116,8 +115,7 @@ Teuchos::RCP<const Teuchos::ParameterList> BelosSolver::validParameters() {
   p->set("Block Size", d.blockSize,
          "MueLu: unknowns per mesh node, kept together in aggregates (2 or 3 in elasticity)",
          rcp(new IntRange(1, 100)));
-  p->set("Max Levels", d.maxLevels, "MueLu: maximum number of levels",
-         rcp(new IntRange(1, 100)));
+  p->set("Max Levels", d.maxLevels, "MueLu: maximum number of levels", rcp(new IntRange(1, 100)));
   p->set("Coarse Max Size", d.coarseMaxSize,
          "MueLu: coarsening stops below this number of unknowns", rcp(new IntRange(1, 10000000)));
   p->set("Coarse Sweeps", d.coarseSweeps,
@@ -154,6 +152,11 @@ BelosSolver::Options BelosSolver::optionsFrom(const Teuchos::ParameterList& para
 BelosSolver::BelosSolver(const Options& options, const Teuchos::RCP<const Comm>& comm)
     : options_(options), impl_(std::make_unique<Impl>()) {
   if (comm.is_null()) throw LinearSolverError("Belos needs a communicator (got null)");
+  if (options.method == Method::cg && options.preconditioner.kind == Kind::ifpack2Ilut)
+    throw LinearSolverError(
+        "Belos cg cannot use ifpack2-ilut: ILUT drops entries differently in L and U, so the "
+        "preconditioner is not symmetric and CG stagnates; use gmres, or ifpack2-riluk, "
+        "ifpack2-sgs or muelu with cg");
   impl_->comm = comm;
   auto params = Teuchos::rcp(new Teuchos::ParameterList);
   params->set("Convergence Tolerance", options.tolerance);
@@ -215,8 +218,8 @@ void BelosSolver::solve(const MultiVector& b, MultiVector& x) {
   std::vector<double> bNorm(nrhs), rNorm(nrhs);
   b.norm2(bNorm);
   if (*std::max_element(bNorm.begin(), bNorm.end()) > 0) {
-    auto problem = Teuchos::rcp(new Impl::Problem(m.A, Teuchos::rcpFromRef(x),
-                                                  Teuchos::rcpFromRef(b)));
+    auto problem =
+        Teuchos::rcp(new Impl::Problem(m.A, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
     if (!m.preconditioner.is_null()) {
       if (options_.method == Method::cg)
         problem->setLeftPrec(m.preconditioner);
@@ -244,12 +247,12 @@ void BelosSolver::solve(const MultiVector& b, MultiVector& x) {
       worst = std::max(worst, bNorm[j] > 0 ? rNorm[j] / bNorm[j] : rNorm[j]);
     stats_.relativeResidual = worst;
     if (result != Belos::Converged || !(worst <= kDriftFactor * options_.tolerance))
-      throw LinearSolverError(
-          std::string("Belos ") + nameOf(options_.method) + " with preconditioner " +
-          nameOf(options_.preconditioner.kind) + " did not converge: relative residual " +
-          formatNumber(worst) + " after " + std::to_string(iterations) +
-          " iterations (Tolerance " + formatNumber(options_.tolerance) + ", Max Iterations " +
-          std::to_string(options_.maxIterations) + ")");
+      throw LinearSolverError(std::string("Belos ") + nameOf(options_.method) +
+                              " with preconditioner " + nameOf(options_.preconditioner.kind) +
+                              " did not converge: relative residual " + formatNumber(worst) +
+                              " after " + std::to_string(iterations) + " iterations (Tolerance " +
+                              formatNumber(options_.tolerance) + ", Max Iterations " +
+                              std::to_string(options_.maxIterations) + ")");
   } else {
     stats_.relativeResidual = 0;  // x = 0 is exact
     stats_.iterations = 0;

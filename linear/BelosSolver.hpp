@@ -4,13 +4,13 @@
 // ||b - A x|| <= Tolerance * ||b|| for every column of b (unpreconditioned residual: CG applies
 // the preconditioner on the left but iterates on the true residual, GMRES on the right). A solve
 // that does not converge throws. The initial guess is zero, as for the direct solvers.
-#include <memory>
+#include "linear/LinearSolver.hpp"
+#include "linear/Preconditioners.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
-#include "linear/LinearSolver.hpp"
-#include "linear/Preconditioners.hpp"
+#include <memory>
 
 namespace contactlab {
 

@@ -1,9 +1,9 @@
 // Ifpack2 preconditioners (see Preconditioners.hpp).
-#include <Ifpack2_Factory.hpp>
-#include <Teuchos_ParameterList.hpp>
-
 #include "linear/LinearSolver.hpp"
 #include "linear/Preconditioners.hpp"
+
+#include <Ifpack2_Factory.hpp>
+#include <Teuchos_ParameterList.hpp>
 
 namespace contactlab {
 

@@ -1,16 +1,16 @@
 #include "linear/Klu2Solver.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <exception>
-#include <numeric>
-#include <vector>
+#include "linear/SolverParameters.hpp"
 
 #include <Amesos2.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "linear/SolverParameters.hpp"
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <numeric>
+#include <vector>
 
 namespace contactlab {
 
@@ -25,8 +25,7 @@ double secondsSince(Clock::time_point t0) {
 // leave the collective call together: prefix + what() for LinearSolverError, prefix + `meaning`
 // for anything else (Amesos2's own messages are pages of file names and line numbers).
 template <class Work>
-void onRoot(const Comm& comm, const std::string& prefix, const std::string& meaning,
-            Work&& work) {
+void onRoot(const Comm& comm, const std::string& prefix, const std::string& meaning, Work&& work) {
   std::string error;
   if (comm.getRank() == 0) {
     try {
@@ -99,8 +98,7 @@ void Klu2Solver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChan
   if (!A->isFillComplete())
     throw LinearSolverError("KLU2 needs a fill-completed matrix (call fillComplete first)");
   const auto N = A->getGlobalNumRows();
-  if (N != A->getGlobalNumCols())
-    throw LinearSolverError("KLU2 needs a square matrix");
+  if (N != A->getGlobalNumCols()) throw LinearSolverError("KLU2 needs a square matrix");
 
   // The importer of rows to rank 0 depends on the row map only.
   if (m.rowMap.is_null() || !m.rowMap->isSameAs(*A->getRowMap())) {
@@ -197,6 +195,7 @@ void Klu2Solver::solve(const MultiVector& b, MultiVector& x) {
     throw LinearSolverError("KLU2 solve: b and x have different numbers of columns");
   if (!b.getMap()->isSameAs(*m.rangeMap) || !x.getMap()->isSameAs(*m.domainMap))
     throw LinearSolverError("KLU2 solve: b and x must live on the matrix's range / domain map");
+  if (nrhs == 0) return;
   const auto t0 = Clock::now();
 
   MultiVector root(m.rootMap, nrhs);

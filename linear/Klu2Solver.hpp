@@ -7,12 +7,12 @@
 // that works. It runs on any number of ranks (serially on rank 0), and every solve is checked
 // against the original matrix: a relative residual above the tolerance throws, so a wrong answer
 // is never returned silently. Prefer MUMPS for anything large.
-#include <memory>
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
-#include "linear/LinearSolver.hpp"
+#include <memory>
 
 namespace contactlab {
 

@@ -5,13 +5,13 @@
 // unchanged. Failures throw LinearSolverError with a sentence that names the cause.
 // Every method is collective over the communicator the solver was built with (and A's, which
 // must be the same): all ranks call them in the same order, and all ranks throw together.
-#include <optional>
-#include <stdexcept>
-#include <string>
+#include "core/problem/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 
-#include "core/problem/LinearAlgebra.hpp"
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace contactlab {
 
@@ -32,9 +32,9 @@ struct Determinant {
 
 struct LinearSolverStats {
   int analyses = 0;
-  int factorizations = 0;  // numeric factorizations (preconditioner setups for Belos)
-  int solves = 0;          // solve() calls, whatever the number of right-hand sides
-  int iterations = 0;      // last solve, iterative solvers only (max over right-hand sides)
+  int factorizations = 0;        // numeric factorizations (preconditioner setups for Belos)
+  int solves = 0;                // solve() calls, whatever the number of right-hand sides
+  int iterations = 0;            // last solve, iterative solvers only (max over right-hand sides)
   double relativeResidual = -1;  // last solve, max_j ||b_j - A x_j|| / ||b_j||; -1: not computed
   double analysisSeconds = 0;    // cumulated
   double factorizationSeconds = 0;

@@ -1,8 +1,8 @@
 // MueLu smoothed aggregation (see Preconditioners.hpp). The only file that includes MueLu.
+#include "linear/Preconditioners.hpp"
+
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <Teuchos_ParameterList.hpp>
-
-#include "linear/Preconditioners.hpp"
 
 namespace contactlab {
 
@@ -30,8 +30,7 @@ Teuchos::RCP<Operator> createMueLuPreconditioner(const Teuchos::RCP<const Matrix
   coarse.set("relaxation: sweeps", options.coarseSweeps);
   params.set("coarse: params", coarse);
   if (!nullSpace.is_null())
-    params.sublist("user data")
-        .set("Nullspace", Teuchos::rcp_const_cast<MultiVector>(nullSpace));
+    params.sublist("user data").set("Nullspace", Teuchos::rcp_const_cast<MultiVector>(nullSpace));
   // MueLu takes a non-const operator but does not modify it.
   auto op = Teuchos::rcp_const_cast<Operator>(Teuchos::rcp_implicit_cast<const Operator>(A));
   return MueLu::CreateTpetraPreconditioner(op, params);

@@ -4,14 +4,14 @@
 // passing its own rows; right-hand side and solution are centralized on rank 0 for the solve.
 // Construction and destruction are collective (MUMPS JOB = -1 / -2): every rank must create
 // and destroy the solver, in the same order as its other collective objects.
-#include <memory>
-#include <optional>
-#include <string>
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
-#include "linear/LinearSolver.hpp"
+#include <memory>
+#include <optional>
+#include <string>
 
 namespace contactlab {
 
@@ -26,8 +26,8 @@ class MumpsSolver : public LinearSolver {
   struct Options {
     Mode mode = Mode::general;
     Ordering ordering = Ordering::pord;
-    int memoryRelaxation = 20;  // ICNTL(14), percent over the analysis' estimate
-    bool determinant = false;   // ICNTL(33) at each factorization
+    int memoryRelaxation = 20;       // ICNTL(14), percent over the analysis' estimate
+    bool determinant = false;        // ICNTL(33) at each factorization
     bool conditionEstimate = false;  // ICNTL(11) = 1 at each solve (costs more than the solve)
   };
 

@@ -1,13 +1,14 @@
 #pragma once
-// Helpers shared by the solvers: number formatting for messages, and parameter handling: validation of a user list against the
-// valid one (errors become LinearSolverError) and typed reads of enumerated strings through the
-// validators declared in the valid list, so each name <-> value table exists once.
-#include <string>
+// Helpers shared by the solvers: number formatting for messages, and parameter handling: validation
+// of a user list against the valid one (errors become LinearSolverError) and typed reads of
+// enumerated strings through the validators declared in the valid list, so each name <-> value
+// table exists once.
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "linear/LinearSolver.hpp"
+#include <string>
 
 namespace contactlab {
 
@@ -24,9 +25,9 @@ Teuchos::ParameterList validatedParameters(const Teuchos::ParameterList& params,
 template <class Enum>
 Enum enumParameter(const Teuchos::ParameterList& params, const Teuchos::ParameterList& valid,
                    const std::string& name) {
-  auto validator = Teuchos::rcp_dynamic_cast<
-      const Teuchos::StringToIntegralParameterEntryValidator<Enum>>(
-      valid.getEntry(name).validator(), true);
+  auto validator =
+      Teuchos::rcp_dynamic_cast<const Teuchos::StringToIntegralParameterEntryValidator<Enum>>(
+          valid.getEntry(name).validator(), true);
   return validator->getIntegralValue(params.get<std::string>(name), name);
 }
 

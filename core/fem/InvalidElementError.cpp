@@ -8,9 +8,8 @@ namespace {
 std::string message(InvalidElementError::Kind kind, const std::string& quantity, double value,
                     const std::string& label) {
   std::ostringstream s;
-  s << label << " is "
-    << (kind == InvalidElementError::Kind::Inverted ? "inverted" : "degenerate") << ": "
-    << quantity << " = " << value << " at a quadrature point";
+  s << label << " is " << (kind == InvalidElementError::Kind::Inverted ? "inverted" : "degenerate")
+    << ": " << quantity << " = " << value << " at a quadrature point";
   return s.str();
 }
 

@@ -5,10 +5,12 @@
 namespace contactlab {
 
 void jacobian(int dim, int numNodes, const double* x, const double* dNdxi, double* J) {
-  for (int k = 0; k < dim * dim; ++k) J[k] = 0.0;
+  for (int k = 0; k < dim * dim; ++k)
+    J[k] = 0.0;
   for (int a = 0; a < numNodes; ++a)
     for (int i = 0; i < dim; ++i)
-      for (int j = 0; j < dim; ++j) J[i * dim + j] += x[3 * a + i] * dNdxi[a * dim + j];
+      for (int j = 0; j < dim; ++j)
+        J[i * dim + j] += x[3 * a + i] * dNdxi[a * dim + j];
 }
 
 double invert(int dim, const double* J, double* Jinv) {
@@ -55,7 +57,8 @@ double physicalGradients(int dim, int numNodes, const double* x, const double* d
   double scale = 1.0;
   for (int j = 0; j < dim; ++j) {
     double column = 0.0;
-    for (int i = 0; i < dim; ++i) column += J[i * dim + j] * J[i * dim + j];
+    for (int i = 0; i < dim; ++i)
+      column += J[i * dim + j] * J[i * dim + j];
     scale *= std::sqrt(column);
   }
   if (!(std::abs(det) > kDegenerateTolerance * scale))
@@ -65,7 +68,8 @@ double physicalGradients(int dim, int numNodes, const double* x, const double* d
   for (int a = 0; a < numNodes; ++a)
     for (int i = 0; i < dim; ++i) {
       double g = 0.0;
-      for (int j = 0; j < dim; ++j) g += dNdxi[a * dim + j] * Jinv[j * dim + i];
+      for (int j = 0; j < dim; ++j)
+        g += dNdxi[a * dim + j] * Jinv[j * dim + i];
       dNdx[a * dim + i] = g;
     }
   return det;
@@ -77,7 +81,8 @@ double facetGeometry(int spaceDim, int numNodes, const double* x, const double* 
   double t[2][3] = {{0, 0, 0}, {0, 0, 0}};  // tangents dx/dxi_j
   for (int a = 0; a < numNodes; ++a)
     for (int j = 0; j < refDim; ++j)
-      for (int i = 0; i < 3; ++i) t[j][i] += x[3 * a + i] * dNdxi[a * refDim + j];
+      for (int i = 0; i < 3; ++i)
+        t[j][i] += x[3 * a + i] * dNdxi[a * refDim + j];
   double n[3], scale;
   if (spaceDim == 2) {
     n[0] = t[0][1], n[1] = -t[0][0], n[2] = 0.0;
@@ -95,14 +100,16 @@ double facetGeometry(int spaceDim, int numNodes, const double* x, const double* 
   const double dA = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (!(dA > kDegenerateTolerance * scale) || dA == 0.0)
     throw InvalidElementError(InvalidElementError::Kind::Degenerate, "dA", dA);
-  for (int i = 0; i < 3; ++i) normal[i] = n[i] / dA;
+  for (int i = 0; i < 3; ++i)
+    normal[i] = n[i] / dA;
   return dA;
 }
 
 void interpolatePosition(int numNodes, const double* x, const double* N, double* point) {
   point[0] = point[1] = point[2] = 0.0;
   for (int a = 0; a < numNodes; ++a)
-    for (int i = 0; i < 3; ++i) point[i] += N[a] * x[3 * a + i];
+    for (int i = 0; i < 3; ++i)
+      point[i] += N[a] * x[3 * a + i];
 }
 
 }  // namespace contactlab

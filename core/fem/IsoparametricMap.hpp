@@ -26,8 +26,7 @@ double invert(int dim, const double* J, double* Jinv);
 
 // Physical gradients dNdx[a * dim + i] = dN_a / dx_i of a dim-cell in dim-space; returns
 // det J (> 0). Throws InvalidElementError when inverted or degenerate.
-double physicalGradients(int dim, int numNodes, const double* x, const double* dNdxi,
-                         double* dNdx);
+double physicalGradients(int dim, int numNodes, const double* x, const double* dNdxi, double* dNdx);
 
 // Area element dA (length element in 2D) of a (spaceDim - 1)-facet in spaceDim-space
 // (spaceDim = 2 or 3) and its unit normal (3 components, z = 0 in 2D). Throws

@@ -81,7 +81,8 @@ QuadratureRule tensorRule(int dim, int degree) {
 // Gauss-Legendre mapped to [0, 1].
 void unitGauss(int n, std::vector<double>& x, std::vector<double>& w) {
   gaussLegendre(n, x, w);
-  for (int i = 0; i < n; ++i) x[i] = 0.5 * (x[i] + 1), w[i] *= 0.5;
+  for (int i = 0; i < n; ++i)
+    x[i] = 0.5 * (x[i] + 1), w[i] *= 0.5;
 }
 
 // Duffy collapse of the unit square/cube. The Jacobian (1-v) resp. (1-v)(1-w)^2 raises the
@@ -115,7 +116,8 @@ QuadratureRule collapsedRule(int dim, int degree) {
 void addOrbit(QuadratureRule& r, double a, double b, double weight) {
   const int vertices = r.dim + 1;
   for (int v = 0; v < vertices; ++v) {
-    for (int i = 1; i < vertices; ++i) r.points.push_back(i == v ? a : b);
+    for (int i = 1; i < vertices; ++i)
+      r.points.push_back(i == v ? a : b);
     r.weights.push_back(weight);
   }
 }

@@ -7,9 +7,9 @@
 //  - tetrahedra: centroid (degree <= 1), 4-point rule (2), collapsed Gauss-Legendre above.
 // Simplex rules are exact for polynomials of total degree `degree`. All weights are positive
 // and sum to the reference measure (2^d for tensor cells, 1/d! for simplices).
-#include <vector>
-
 #include "core/mesh/ElementType.hpp"
+
+#include <vector>
 
 namespace contactlab {
 

@@ -6,7 +6,7 @@
 namespace contactlab {
 namespace {
 
-// Reference node coordinates, copied from gmsh::model::mesh::getElementProperties (gmsh 4.11)
+// Reference node coordinates, copied from gmsh::model::mesh::getElementProperties (gmsh 4.8.4)
 // and checked against it by the unit tests.
 // clang-format off
 const std::vector<double> kLine3 = {-1, 1, 0};
@@ -50,10 +50,7 @@ const ReferenceElement& ReferenceElement::get(ElementType type) {
 }
 
 ReferenceElement::ReferenceElement(ElementType type)
-    : type_(type),
-      dim_(info(type).dim),
-      numNodes_(info(type).nodes),
-      order_(info(type).order) {
+    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes), order_(info(type).order) {
   using ET = ElementType;
   switch (type) {
     case ET::Point1:
@@ -146,7 +143,8 @@ void ReferenceElement::tensorShape(const double* xi, double* N, double* dN) cons
     const int* id = &index1d_[a * dim_];
     if (N) {
       double v = 1.0;
-      for (int i = 0; i < dim_; ++i) v *= l[i][id[i]];
+      for (int i = 0; i < dim_; ++i)
+        v *= l[i][id[i]];
       N[a] = v;
     }
     if (dN) {
@@ -174,7 +172,8 @@ void ReferenceElement::serendipityShape(const double* xi, double* N, double* dN)
     if (zero < 0) {
       // Corner: scale * prod(p) * (sum xi_i c_i - (dim - 1)).
       double s = 1 - dim_, prod = cornerScale;
-      for (int i = 0; i < dim_; ++i) s += xi[i] * c[i], prod *= p[i];
+      for (int i = 0; i < dim_; ++i)
+        s += xi[i] * c[i], prod *= p[i];
       if (N) N[a] = prod * s;
       if (dN) {
         for (int j = 0; j < dim_; ++j) {
@@ -212,21 +211,24 @@ void ReferenceElement::simplexShape(const double* xi, double* N, double* dN) con
   // delta_{v-1,j} otherwise.
   double L[4];
   L[0] = 1.0;
-  for (int i = 0; i < dim_; ++i) L[0] -= xi[i], L[i + 1] = xi[i];
+  for (int i = 0; i < dim_; ++i)
+    L[0] -= xi[i], L[i + 1] = xi[i];
   auto dL = [](int v, int j) { return v == 0 ? -1.0 : (v - 1 == j ? 1.0 : 0.0); };
   const int vertices = dim_ + 1;
   for (int v = 0; v < vertices; ++v) {
     const double f = order_ == 1 ? 1.0 : 4 * L[v] - 1;
     if (N) N[v] = order_ == 1 ? L[v] : L[v] * (2 * L[v] - 1);
     if (dN)
-      for (int j = 0; j < dim_; ++j) dN[v * dim_ + j] = f * dL(v, j);
+      for (int j = 0; j < dim_; ++j)
+        dN[v * dim_ + j] = f * dL(v, j);
   }
   if (order_ == 1) return;
   for (int e = 0; vertices + e < numNodes_; ++e) {
     const int a = vertices + e, i = edgeVertices_[2 * e], k = edgeVertices_[2 * e + 1];
     if (N) N[a] = 4 * L[i] * L[k];
     if (dN)
-      for (int j = 0; j < dim_; ++j) dN[a * dim_ + j] = 4 * (L[k] * dL(i, j) + L[i] * dL(k, j));
+      for (int j = 0; j < dim_; ++j)
+        dN[a * dim_ + j] = 4 * (L[k] * dL(i, j) + L[i] * dL(k, j));
   }
 }
 

@@ -3,9 +3,9 @@
 // tensor cells on [-1,1]^d, simplices on the unit simplex with node 0 at the origin. Quad8 and
 // hex20 are serendipity elements. shape()/shapeDerivatives() run in the assembly inner loop:
 // they never allocate.
-#include <vector>
-
 #include "core/mesh/ElementType.hpp"
+
+#include <vector>
 
 namespace contactlab {
 

@@ -1,9 +1,9 @@
-#include <gmsh.h>
-
 #include "core/mesh/GeneratorSupport.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gmsh.h>
 
 namespace contactlab {
 
@@ -16,15 +16,15 @@ Mesh generateBox(const BoxParams& p) {
     requireDivisions("box", "divisions[" + std::to_string(i) + "]", p.divisions[i]);
   }
   const std::string source = "generated box (" + p.elementType + ", " +
-                             std::to_string(p.divisions[0]) + "x" +
-                             std::to_string(p.divisions[1]) + "x" +
-                             std::to_string(p.divisions[2]) + ")";
+                             std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
+                             "x" + std::to_string(p.divisions[2]) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
     const auto b = addStructuredBox(p.origin, p.lengths, p.divisions, !spec.simplex);
     addGroup(3, {b.volume}, "body");
     const char* faces[] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
-    for (int i = 0; i < 6; ++i) addGroup(2, {b.faces[i]}, faces[i]);
+    for (int i = 0; i < 6; ++i)
+      addGroup(2, {b.faces[i]}, faces[i]);
     gmsh::model::mesh::generate(3);
     applyOrder(spec);
     return meshFromGmshModel(source, source);

@@ -4,13 +4,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace contactlab {
 
+std::string formatNumber(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
 std::string typeList(std::initializer_list<ElementType> types) {
   std::string s;
-  for (auto t : types) s += (s.empty() ? "" : ", ") + std::string(info(t).name);
+  for (auto t : types)
+    s += (s.empty() ? "" : ", ") + std::string(info(t).name);
   return s;
 }
 
@@ -29,14 +37,14 @@ ElementSpec elementSpec(const std::string& generator, const std::string& name,
 
 void requirePositive(const std::string& generator, const std::string& param, double value) {
   if (!(value > 0) || !std::isfinite(value))
-    throw std::invalid_argument(generator + " generator: " + param + " = " +
-                                std::to_string(value) + " must be a positive number");
+    throw std::invalid_argument(generator + " generator: " + param + " = " + formatNumber(value) +
+                                " must be a positive number");
 }
 
 void requireDivisions(const std::string& generator, const std::string& param, int value) {
   if (value < 1)
-    throw std::invalid_argument(generator + " generator: " + param + " = " +
-                                std::to_string(value) + " must be at least 1");
+    throw std::invalid_argument(generator + " generator: " + param + " = " + std::to_string(value) +
+                                " must be at least 1");
 }
 
 void requireGrading(const std::string& generator, const ContactGrading& g) {
@@ -45,12 +53,11 @@ void requireGrading(const std::string& generator, const ContactGrading& g) {
   requirePositive(generator, "grading.transitionLength", g.transitionLength);
   if (!(g.fineRadius >= 0))
     throw std::invalid_argument(generator + " generator: grading.fineRadius = " +
-                                std::to_string(g.fineRadius) + " must not be negative");
+                                formatNumber(g.fineRadius) + " must not be negative");
   if (g.sizeFar < g.sizeContact)
-    throw std::invalid_argument(generator + " generator: grading.sizeFar = " +
-                                std::to_string(g.sizeFar) +
-                                " must not be smaller than grading.sizeContact = " +
-                                std::to_string(g.sizeContact));
+    throw std::invalid_argument(
+        generator + " generator: grading.sizeFar = " + formatNumber(g.sizeFar) +
+        " must not be smaller than grading.sizeContact = " + formatNumber(g.sizeContact));
 }
 
 void resetMeshOptions() {
@@ -107,7 +114,8 @@ std::vector<int> curvesOf(const gmsh::vectorpair& surfaces) {
   gmsh::vectorpair curves;
   gmsh::model::getBoundary(surfaces, curves, false, false, false);
   std::vector<int> tags;
-  for (const auto& c : curves) tags.push_back(std::abs(c.second));
+  for (const auto& c : curves)
+    tags.push_back(std::abs(c.second));
   std::sort(tags.begin(), tags.end());
   tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
   return tags;
@@ -133,8 +141,7 @@ RectangleEntities addStructuredRectangle(const std::array<double, 2>& origin,
   occ::synchronize();
   const double tol = 1e-8 * std::max(lengths[0], lengths[1]);
   const double x1 = origin[0] + lengths[0], y1 = origin[1] + lengths[1];
-  const std::vector<std::pair<int, double>> sides{
-      {1, origin[1]}, {0, x1}, {1, y1}, {0, origin[0]}};
+  const std::vector<std::pair<int, double>> sides{{1, origin[1]}, {0, x1}, {1, y1}, {0, origin[0]}};
   for (int c : curvesOf({{2, r.surface}})) {
     r.sides[planeIndex(centerOfMass(1, c), sides, tol)] = c;
     setCurveDivisions(c, {divisions[0], divisions[1], 1});
@@ -167,9 +174,12 @@ BoxEntities addStructuredBox(const std::array<double, 3>& origin,
   }
   gmsh::vectorpair faces;
   gmsh::model::getBoundary({{3, b.volume}}, faces, false, false, false);
-  for (auto& f : faces) f.second = std::abs(f.second);
-  for (const auto& f : faces) b.faces[planeIndex(centerOfMass(2, f.second), planes, tol)] = f.second;
-  for (int c : curvesOf(faces)) setCurveDivisions(c, divisions);
+  for (auto& f : faces)
+    f.second = std::abs(f.second);
+  for (const auto& f : faces)
+    b.faces[planeIndex(centerOfMass(2, f.second), planes, tol)] = f.second;
+  for (int c : curvesOf(faces))
+    setCurveDivisions(c, divisions);
   for (const auto& f : faces) {
     gmsh::model::mesh::setTransfiniteSurface(f.second);
     if (recombine) gmsh::model::mesh::setRecombine(2, f.second);
@@ -181,8 +191,8 @@ BoxEntities addStructuredBox(const std::array<double, 3>& origin,
 
 void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& g,
                     double sizeFactor) {
-  // A size callback instead of Distance/Threshold fields: the field option names changed
-  // between gmsh versions, the callback did not.
+  // A size callback instead of Distance/Threshold fields: the grading stays plain C++ and does
+  // not depend on field option names, which gmsh has renamed across versions.
   gmsh::model::mesh::setSizeCallback([point, g, sizeFactor](int, int, double x, double y,
                                                             double z) {
     const double d = std::sqrt((x - point[0]) * (x - point[0]) + (y - point[1]) * (y - point[1]) +
@@ -201,11 +211,11 @@ void generateGraded(int dim, const std::array<double, 3>& point, const ContactGr
   gmsh::model::mesh::removeSizeCallback();
 }
 
-void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy,
-                       double degrees) {
+void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees) {
   if (degrees == 0) return;
   std::vector<std::int64_t> nodes;
-  for (const auto* g : mesh.findBlocks(name)) nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
+  for (const auto* g : mesh.findBlocks(name))
+    nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);

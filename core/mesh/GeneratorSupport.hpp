@@ -1,14 +1,14 @@
 #pragma once
 // Internal to core/mesh: pieces shared by the built-in generators. All functions act on gmsh's
 // current model and must run inside inGmshModel.
+#include "core/mesh/ElementType.hpp"
+#include "core/mesh/Mesh.hpp"
+#include "core/mesh/MeshGenerators.hpp"
+
 #include <array>
 #include <initializer_list>
 #include <string>
 #include <vector>
-
-#include "core/mesh/ElementType.hpp"
-#include "core/mesh/Mesh.hpp"
-#include "core/mesh/MeshGenerators.hpp"
 
 namespace contactlab {
 
@@ -65,8 +65,10 @@ void generateGraded(int dim, const std::array<double, 3>& point, const ContactGr
                     double sizeFactor);
 
 // Rotates the nodes of block `name` about the vertical axis through (cx, cy), in degrees.
-void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy,
-                       double degrees);
+void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees);
+
+// Shortest faithful text of a number for messages ("0.05", not "0.050000").
+std::string formatNumber(double value);
 
 // "tri3, tri6, ..." for messages.
 std::string typeList(std::initializer_list<ElementType> types);

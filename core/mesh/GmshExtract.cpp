@@ -1,12 +1,12 @@
 #include "core/mesh/GmshExtract.hpp"
 
+#include "core/mesh/MeshChecks.hpp"
+
 #include <gmsh.h>
 
 #include <algorithm>
 #include <map>
 #include <stdexcept>
-
-#include "core/mesh/MeshChecks.hpp"
 
 namespace contactlab {
 namespace {
@@ -45,7 +45,8 @@ std::vector<CellGroup> readGroup(int dim, int tag, const std::string& label) {
     }
   }
   std::vector<CellGroup> groups;
-  for (auto& entry : byType) groups.push_back(std::move(entry.second));
+  for (auto& entry : byType)
+    groups.push_back(std::move(entry.second));
   return groups;
 }
 
@@ -53,7 +54,8 @@ std::vector<CellGroup> readGroup(int dim, int tag, const std::string& label) {
 void renumberNodes(Mesh& mesh, const std::string& label) {
   std::vector<std::int64_t> used;
   for (auto* list : {&mesh.blocks, &mesh.boundaries})
-    for (const auto& g : *list) used.insert(used.end(), g.nodes.begin(), g.nodes.end());
+    for (const auto& g : *list)
+      used.insert(used.end(), g.nodes.begin(), g.nodes.end());
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
   auto index = [&](std::int64_t tag) {
@@ -61,7 +63,8 @@ void renumberNodes(Mesh& mesh, const std::string& label) {
   };
   for (auto* list : {&mesh.blocks, &mesh.boundaries})
     for (auto& g : *list)
-      for (auto& n : g.nodes) n = index(n);
+      for (auto& n : g.nodes)
+        n = index(n);
 
   std::vector<std::size_t> tags;
   std::vector<double> coords, parametric;
@@ -92,7 +95,8 @@ Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
                              "boundaries from (named) physical groups only");
   Mesh mesh;
   mesh.source = source;
-  for (const auto& p : physicals) mesh.dim = std::max(mesh.dim, p.first);
+  for (const auto& p : physicals)
+    mesh.dim = std::max(mesh.dim, p.first);
   if (mesh.dim < 2)
     throw std::runtime_error(label +
                              " has no 2D or 3D physical group; the element blocks must be a "
@@ -102,7 +106,8 @@ Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [dim, tag] : physicals) {
     auto& list = dim == mesh.dim ? mesh.blocks : mesh.boundaries;
-    for (auto& g : readGroup(dim, tag, label)) list.push_back(std::move(g));
+    for (auto& g : readGroup(dim, tag, label))
+      list.push_back(std::move(g));
   }
   if (mesh.blocks.empty())
     throw std::runtime_error(label + " has physical groups of dimension " +

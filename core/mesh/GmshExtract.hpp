@@ -1,9 +1,9 @@
 #pragma once
 // Internal to core/mesh: turns gmsh's current model into a Mesh (used by the reader and the
 // generators).
-#include <string>
-
 #include "core/mesh/Mesh.hpp"
+
+#include <string>
 
 namespace contactlab {
 

@@ -1,10 +1,10 @@
 #pragma once
 // Internal to core/mesh: a scratch gmsh model for one reader/generator call, so that calls
 // nest inside a caller's own gmsh session without touching its models.
+#include "core/mesh/GmshSession.hpp"
+
 #include <stdexcept>
 #include <string>
-
-#include "core/mesh/GmshSession.hpp"
 
 namespace contactlab {
 

@@ -1,12 +1,12 @@
 #include "core/mesh/GmshReader.hpp"
 
+#include "core/mesh/GmshExtract.hpp"
+#include "core/mesh/GmshModel.hpp"
+
 #include <gmsh.h>
 
 #include <filesystem>
 #include <stdexcept>
-
-#include "core/mesh/GmshExtract.hpp"
-#include "core/mesh/GmshModel.hpp"
 
 namespace contactlab {
 

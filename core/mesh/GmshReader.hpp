@@ -1,8 +1,8 @@
 #pragma once
 // Reads gmsh .msh files (format 2.2 and 4.x, ASCII or binary) through gmsh's API.
-#include <string>
-
 #include "core/mesh/Mesh.hpp"
+
+#include <string>
 
 namespace contactlab {
 

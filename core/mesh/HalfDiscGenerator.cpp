@@ -1,11 +1,11 @@
-#include <gmsh.h>
-
-#include <stdexcept>
-
 #include "core/mesh/GeneratorSupport.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gmsh.h>
+
+#include <stdexcept>
 
 namespace contactlab {
 namespace {
@@ -29,10 +29,9 @@ Mesh generateHalfDisc(const HalfDiscParams& p) {
                                 {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
   requirePositive("half-disc", "radius", p.radius);
   requireGrading("half-disc", p.grading);
-  const std::string source = "generated half-disc (" + p.elementType + ", R = " +
-                             std::to_string(p.radius) + ", sizes " +
-                             std::to_string(p.grading.sizeContact) + " to " +
-                             std::to_string(p.grading.sizeFar) + ")";
+  const std::string source =
+      "generated half-disc (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
+      formatNumber(p.grading.sizeContact) + " to " + formatNumber(p.grading.sizeFar) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();

@@ -1,11 +1,11 @@
-#include <gmsh.h>
-
-#include <cmath>
-
 #include "core/mesh/GeneratorSupport.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gmsh.h>
+
+#include <cmath>
 
 namespace contactlab {
 
@@ -15,10 +15,9 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
                                 {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
   requirePositive("half-sphere", "radius", p.radius);
   requireGrading("half-sphere", p.grading);
-  const std::string source = "generated half-sphere (" + p.elementType + ", R = " +
-                             std::to_string(p.radius) + ", sizes " +
-                             std::to_string(p.grading.sizeContact) + " to " +
-                             std::to_string(p.grading.sizeFar) + ")";
+  const std::string source =
+      "generated half-sphere (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
+      formatNumber(p.grading.sizeContact) + " to " + formatNumber(p.grading.sizeFar) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();

@@ -1,8 +1,8 @@
 #pragma once
 // Meshes are read or generated on one rank (gmsh runs on one rank only) and then copied to all.
-#include <mpi.h>
-
 #include "core/mesh/Mesh.hpp"
+
+#include <mpi.h>
 
 namespace contactlab {
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -51,12 +52,17 @@ void checkMesh(const Mesh& mesh) {
     // Relative tolerance: 2D models must lie in z = 0, up to rounding of the mesher.
     const double tol = 1e-12 * std::max(extent, 1.0);
     for (std::size_t i = 0; i < mesh.numNodes(); ++i)
-      if (std::abs(mesh.coords[3 * i + 2]) > tol)
-        fail(mesh, "is 2D but node " + std::to_string(i) + " has z = " +
-                       std::to_string(mesh.coords[3 * i + 2]) + "; 2D meshes must lie in z = 0");
+      if (std::abs(mesh.coords[3 * i + 2]) > tol) {
+        std::ostringstream z;
+        z << mesh.coords[3 * i + 2];
+        fail(mesh, "is 2D but node " + std::to_string(i) + " has z = " + z.str() +
+                       "; 2D meshes must lie in z = 0");
+      }
   }
-  for (const auto& g : mesh.blocks) checkGroup(mesh, g, true);
-  for (const auto& g : mesh.boundaries) checkGroup(mesh, g, false);
+  for (const auto& g : mesh.blocks)
+    checkGroup(mesh, g, true);
+  for (const auto& g : mesh.boundaries)
+    checkGroup(mesh, g, false);
 }
 
 }  // namespace contactlab

@@ -5,10 +5,10 @@
 // (quad8, hex20). Structured generators give exactly the requested number of cells. Invalid
 // parameters throw std::invalid_argument naming the generator, the parameter and the valid
 // choices. Group names are listed with each generator.
+#include "core/mesh/Mesh.hpp"
+
 #include <array>
 #include <string>
-
-#include "core/mesh/Mesh.hpp"
 
 namespace contactlab {
 

@@ -1,31 +1,33 @@
-#include <gmsh.h>
-
 #include "core/mesh/GeneratorSupport.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 
+#include <gmsh.h>
+
 namespace contactlab {
 
 Mesh generateRectangle(const RectangleParams& p) {
   using ET = ElementType;
-  const auto spec =
-      elementSpec("rectangle", p.elementType, {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
+  const auto spec = elementSpec("rectangle", p.elementType,
+                                {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
   requirePositive("rectangle", "lengths[0]", p.lengths[0]);
   requirePositive("rectangle", "lengths[1]", p.lengths[1]);
   requireDivisions("rectangle", "divisions[0]", p.divisions[0]);
   requireDivisions("rectangle", "divisions[1]", p.divisions[1]);
   const std::string source = "generated rectangle (" + p.elementType + ", " +
-                             std::to_string(p.divisions[0]) + "x" +
-                             std::to_string(p.divisions[1]) + ")";
+                             std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
+                             ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
     const auto r = addStructuredRectangle(p.origin, p.lengths, p.divisions, !spec.simplex);
     addGroup(2, {r.surface}, "body");
     const char* sides[] = {"bottom", "right", "top", "left"};
     const char* corners[] = {"corner-bl", "corner-br", "corner-tr", "corner-tl"};
-    for (int i = 0; i < 4; ++i) addGroup(1, {r.sides[i]}, sides[i]);
-    for (int i = 0; i < 4; ++i) addGroup(0, {r.corners[i]}, corners[i]);
+    for (int i = 0; i < 4; ++i)
+      addGroup(1, {r.sides[i]}, sides[i]);
+    for (int i = 0; i < 4; ++i)
+      addGroup(0, {r.corners[i]}, corners[i]);
     gmsh::model::mesh::generate(2);
     applyOrder(spec);
     return meshFromGmshModel(source, source);

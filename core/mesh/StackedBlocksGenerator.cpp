@@ -1,19 +1,20 @@
-#include <gmsh.h>
-
-#include <cmath>
-#include <stdexcept>
-
 #include "core/mesh/GeneratorSupport.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <stdexcept>
 
 namespace contactlab {
 namespace {
 
 std::string divisionsText(const int* d, int n) {
   std::string s;
-  for (int i = 0; i < n; ++i) s += (i ? "x" : "") + std::to_string(d[i]);
+  for (int i = 0; i < n; ++i)
+    s += (i ? "x" : "") + std::to_string(d[i]);
   return s;
 }
 
@@ -22,11 +23,11 @@ void requireStacking(const std::string& generator, double lowerHeight, double up
   requirePositive(generator, "lowerHeight", lowerHeight);
   requirePositive(generator, "upperHeight", upperHeight);
   if (!std::isfinite(gap) || gap <= -std::min(lowerHeight, upperHeight))
-    throw std::invalid_argument(generator + " generator: gap = " + std::to_string(gap) +
+    throw std::invalid_argument(generator + " generator: gap = " + formatNumber(gap) +
                                 " must be a number larger than minus the smaller block height");
   if (!std::isfinite(rotation) || std::abs(rotation) > 45)
     throw std::invalid_argument(generator + " generator: upperRotationDeg = " +
-                                std::to_string(rotation) + " must lie in [-45, 45] degrees");
+                                formatNumber(rotation) + " must lie in [-45, 45] degrees");
 }
 
 }  // namespace
@@ -50,14 +51,15 @@ Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p) {
   const double upperY = p.origin[1] + p.lowerHeight + p.gap;
   Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
-    const auto lower = addStructuredRectangle(p.origin, {p.width, p.lowerHeight},
-                                              p.lowerDivisions, !spec.simplex);
+    const auto lower =
+        addStructuredRectangle(p.origin, {p.width, p.lowerHeight}, p.lowerDivisions, !spec.simplex);
     const auto upper = addStructuredRectangle({p.origin[0], upperY}, {p.width, p.upperHeight},
                                               p.upperDivisions, !spec.simplex);
     const char* sides[] = {"bottom", "right", "top", "left"};
     for (const auto& [block, r] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
       addGroup(2, {r.surface}, block);
-      for (int i = 0; i < 4; ++i) addGroup(1, {r.sides[i]}, std::string(block) + "-" + sides[i]);
+      for (int i = 0; i < 4; ++i)
+        addGroup(1, {r.sides[i]}, std::string(block) + "-" + sides[i]);
     }
     gmsh::model::mesh::generate(2);
     applyOrder(spec);
@@ -89,12 +91,13 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p) {
     const auto [lx, ly] = p.footprint;
     const auto lower =
         addStructuredBox(p.origin, {lx, ly, p.lowerHeight}, p.lowerDivisions, !spec.simplex);
-    const auto upper = addStructuredBox({p.origin[0], p.origin[1], upperZ},
-                                        {lx, ly, p.upperHeight}, p.upperDivisions, !spec.simplex);
+    const auto upper = addStructuredBox({p.origin[0], p.origin[1], upperZ}, {lx, ly, p.upperHeight},
+                                        p.upperDivisions, !spec.simplex);
     const char* faces[] = {"xmin", "xmax", "ymin", "ymax", "bottom", "top"};
     for (const auto& [block, b] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
       addGroup(3, {b.volume}, block);
-      for (int i = 0; i < 6; ++i) addGroup(2, {b.faces[i]}, std::string(block) + "-" + faces[i]);
+      for (int i = 0; i < 6; ++i)
+        addGroup(2, {b.faces[i]}, std::string(block) + "-" + faces[i]);
     }
     gmsh::model::mesh::generate(3);
     applyOrder(spec);

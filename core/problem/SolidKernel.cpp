@@ -1,11 +1,11 @@
 #include "core/problem/SolidKernel.hpp"
 
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/ReferenceElement.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-
-#include "core/fem/IsoparametricMap.hpp"
-#include "core/fem/ReferenceElement.hpp"
 
 namespace contactlab {
 namespace {
@@ -28,8 +28,8 @@ SolidKernel::SolidKernel(ElementType type, int quadratureDegree)
   if (dim_ != 2 && dim_ != 3)
     throw std::invalid_argument(std::string("SolidKernel needs a 2D or 3D cell type, got ") +
                                 info(type).name);
-  rule_ = &quadratureRule(type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type)
-                                                     : quadratureDegree);
+  rule_ = &quadratureRule(
+      type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type) : quadratureDegree);
   numPoints_ = rule_->size();
   const ReferenceElement& ref = ReferenceElement::get(type);
   N_.resize(numPoints_ * numNodes_);
@@ -44,7 +44,8 @@ SolidKernel::SolidKernel(ElementType type, int quadratureDegree)
 void SolidKernel::initializeState(const Material& material, double* state) const {
   const int ss = material.stateSize();
   if (ss == 0) return;
-  for (int q = 0; q < numPoints_; ++q) material.initializeState(state + q * ss);
+  for (int q = 0; q < numPoints_; ++q)
+    material.initializeState(state + q * ss);
 }
 
 double SolidKernel::gradients(int q, const double* x, double* dNdx) const {
@@ -80,8 +81,7 @@ void SolidKernel::stresses(const double* x, const double* u, const Material& mat
 template <int D>
 void SolidKernel::computeImpl(const double* x, const double* u, const Material& material,
                               const double* stateOld, double* stateNew, double* residual,
-                              double* tangent, double* pointStress,
-                              double* averageStress) const {
+                              double* tangent, double* pointStress, double* averageStress) const {
   constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
   const int n = numNodes_, nd = D * n, ss = material.stateSize();
   if (material.kinematics() != Kinematics::SmallStrain)
@@ -91,12 +91,15 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
     throw std::invalid_argument("material '" + material.name() +
                                 "' has internal variables: SolidKernel needs state arrays");
   if (residual)
-    for (int k = 0; k < nd; ++k) residual[k] = 0.0;
+    for (int k = 0; k < nd; ++k)
+      residual[k] = 0.0;
   if (tangent)
-    for (int k = 0; k < nd * nd; ++k) tangent[k] = 0.0;
+    for (int k = 0; k < nd * nd; ++k)
+      tangent[k] = 0.0;
   double volume = 0.0;
   if (averageStress)
-    for (int k = 0; k < 6; ++k) averageStress[k] = 0.0;
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] = 0.0;
 
   double dNdx[kMaxNodes * D];
   // w C B and, for unsymmetric material tangents, w (C - C^T) B, as V x nd row-major
@@ -110,10 +113,12 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
     double H[D][D] = {};  // displacement gradient
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) H[i][j] += u[a * D + i] * dNdx[a * D + j];
+        for (int j = 0; j < D; ++j)
+          H[i][j] += u[a * D + i] * dNdx[a * D + j];
     in.strain.fill(0.0);
     for (int i = 0; i < D; ++i)
-      for (int j = i; j < D; ++j) in.strain[kVoigt3[i][j]] = i == j ? H[i][i] : H[i][j] + H[j][i];
+      for (int j = i; j < D; ++j)
+        in.strain[kVoigt3[i][j]] = i == j ? H[i][i] : H[i][j] + H[j][i];
     in.stateOld = ss ? stateOld + q * ss : nullptr;
     out.stateNew = ss ? stateNew + q * ss : nullptr;
     out.stress.fill(0.0);
@@ -121,19 +126,23 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
     material.evaluate(in, out);
 
     if (pointStress)
-      for (int k = 0; k < 6; ++k) pointStress[6 * q + k] = out.stress[k];
+      for (int k = 0; k < 6; ++k)
+        pointStress[6 * q + k] = out.stress[k];
     if (averageStress) {
-      for (int k = 0; k < 6; ++k) averageStress[k] += w * out.stress[k];
+      for (int k = 0; k < 6; ++k)
+        averageStress[k] += w * out.stress[k];
       volume += w;
     }
     if (residual) {
       double sigma[D][D];
       for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) sigma[i][j] = w * out.stress[kVoigt3[i][j]];
+        for (int j = 0; j < D; ++j)
+          sigma[i][j] = w * out.stress[kVoigt3[i][j]];
       for (int a = 0; a < n; ++a)
         for (int i = 0; i < D; ++i) {
           double f = 0.0;
-          for (int j = 0; j < D; ++j) f += sigma[i][j] * dNdx[a * D + j];
+          for (int j = 0; j < D; ++j)
+            f += sigma[i][j] * dNdx[a * D + j];
           residual[a * D + i] += f;
         }
     }
@@ -148,7 +157,8 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
           for (int k = 0; k < D; ++k)
             tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
   if (averageStress)
-    for (int k = 0; k < 6; ++k) averageStress[k] /= volume;
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
 }
 
 // Adds w B^T C B at one quadrature point. Only the blocks b >= a of K_ab = B_a^T C B_b are
@@ -167,7 +177,8 @@ void SolidKernel::accumulateTangent(const double* C6, double w, const double* dN
     }
   bool symmetric = true;
   for (int p = 0; p < V; ++p)
-    for (int r = 0; r < p; ++r) symmetric = symmetric && C[p][r] == C[r][p];
+    for (int r = 0; r < p; ++r)
+      symmetric = symmetric && C[p][r] == C[r][p];
   // (C B)[v][b D + k] = sum_l C[v][voigt(k, l)] dN_b/dx_l: B's columns have 1 to 3 nonzeros.
   for (int b = 0; b < n; ++b) {
     const double* g = &dNdx[b * D];
@@ -190,15 +201,18 @@ void SolidKernel::accumulateTangent(const double* C6, double w, const double* dN
       const double* m0 = &CB[voigt<D>(i, 0) * nd];
       const double* m1 = &CB[voigt<D>(i, 1) * nd];
       if constexpr (D == 2) {
-        for (int c = a * D; c < nd; ++c) row[c] += g[0] * m0[c] + g[1] * m1[c];
+        for (int c = a * D; c < nd; ++c)
+          row[c] += g[0] * m0[c] + g[1] * m1[c];
       } else {
         const double* m2 = &CB[voigt<D>(i, 2) * nd];
-        for (int c = a * D; c < nd; ++c) row[c] += g[0] * m0[c] + g[1] * m1[c] + g[2] * m2[c];
+        for (int c = a * D; c < nd; ++c)
+          row[c] += g[0] * m0[c] + g[1] * m1[c] + g[2] * m2[c];
       }
       if (symmetric) continue;
       for (int j = 0; j < D; ++j) {
         const double* s = &SB[voigt<D>(i, j) * nd];
-        for (int c = 0; c < a * D; ++c) row[c] += g[j] * s[c];
+        for (int c = 0; c < a * D; ++c)
+          row[c] += g[j] * s[c];
       }
     }
   }
@@ -211,7 +225,8 @@ void SolidKernel::quadraturePoints(const double* x, double* points) const {
 
 double SolidKernel::volume(const double* x) const {
   double v = 0.0;
-  for (int q = 0; q < numPoints_; ++q) v += measure(q, x);
+  for (int q = 0; q < numPoints_; ++q)
+    v += measure(q, x);
   return v;
 }
 
@@ -223,7 +238,8 @@ void SolidKernel::bodyForce(const double* x, const double* b, double* f) const {
 void SolidKernel::bodyForce(const double* x,
                             const std::function<void(const double* x, double* b)>& b,
                             double* f) const {
-  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  for (int k = 0; k < numDofs(); ++k)
+    f[k] = 0.0;
   for (int q = 0; q < numPoints_; ++q) {
     const double w = measure(q, x);
     const double* N = &N_[q * numNodes_];
@@ -231,7 +247,8 @@ void SolidKernel::bodyForce(const double* x,
     interpolatePosition(numNodes_, x, N, point);
     b(point, value);
     for (int a = 0; a < numNodes_; ++a)
-      for (int i = 0; i < dim_; ++i) f[a * dim_ + i] += w * N[a] * value[i];
+      for (int i = 0; i < dim_; ++i)
+        f[a * dim_ + i] += w * N[a] * value[i];
   }
 }
 

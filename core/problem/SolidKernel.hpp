@@ -10,12 +10,12 @@
 // points are tabulated at construction, and the const methods use only stack workspace, so
 // one kernel may serve several threads. Invalid geometry throws InvalidElementError without the
 // element's identity: the caller adds it with withLabel().
-#include <functional>
-#include <vector>
-
 #include "core/fem/QuadratureRule.hpp"
 #include "core/materials/Material.hpp"
 #include "core/mesh/ElementType.hpp"
+
+#include <functional>
+#include <vector>
 
 namespace contactlab {
 
@@ -37,15 +37,13 @@ class SolidKernel {
 
   // Internal force (the residual's element contribution) and, unless tangent is nullptr, its
   // derivative with respect to u. The tangent is symmetric when the material's is.
-  void compute(const double* x, const double* u, const Material& material,
-               const double* stateOld, double* stateNew, double* residual,
-               double* tangent) const;
+  void compute(const double* x, const double* u, const Material& material, const double* stateOld,
+               double* stateNew, double* residual, double* tangent) const;
 
   // Cauchy stress (6 Voigt components, sigma_zz included in 2D) at each quadrature point
   // (6 * numQuadraturePoints(), may be nullptr) and/or its volume average (6, may be nullptr).
-  void stresses(const double* x, const double* u, const Material& material,
-                const double* stateOld, double* stateNew, double* pointStress,
-                double* averageStress) const;
+  void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
+                double* stateNew, double* pointStress, double* averageStress) const;
 
   // Physical coordinates of the quadrature points, 3 per point.
   void quadraturePoints(const double* x, double* points) const;
@@ -61,8 +59,8 @@ class SolidKernel {
  private:
   template <int D>
   void computeImpl(const double* x, const double* u, const Material& material,
-                   const double* stateOld, double* stateNew, double* residual,
-                   double* tangent, double* pointStress, double* averageStress) const;
+                   const double* stateOld, double* stateNew, double* residual, double* tangent,
+                   double* pointStress, double* averageStress) const;
   template <int D>
   void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
                          double* tangent) const;

@@ -1,11 +1,11 @@
 #include "core/problem/SurfaceLoadKernel.hpp"
 
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/ReferenceElement.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-
-#include "core/fem/IsoparametricMap.hpp"
-#include "core/fem/ReferenceElement.hpp"
 
 namespace contactlab {
 
@@ -55,29 +55,33 @@ void SurfaceLoadKernel::traction(const double* x, const double* t, double* f) co
 void SurfaceLoadKernel::traction(const double* x,
                                  const std::function<void(const double* x, double* t)>& t,
                                  double* f) const {
-  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  for (int k = 0; k < numDofs(); ++k)
+    f[k] = 0.0;
   forEachPoint(x, [&](int q, const double* point, const double*, double w) {
     double value[3] = {0.0, 0.0, 0.0};
     t(point, value);
     const double* N = &N_[q * numNodes_];
     for (int a = 0; a < numNodes_; ++a)
-      for (int i = 0; i < spaceDim_; ++i) f[a * spaceDim_ + i] += w * N[a] * value[i];
+      for (int i = 0; i < spaceDim_; ++i)
+        f[a * spaceDim_ + i] += w * N[a] * value[i];
   });
 }
 
 void SurfaceLoadKernel::pressure(const double* x, double p, double* f) const {
-  pressure(x, [p](const double*) { return p; }, f);
+  pressure(
+      x, [p](const double*) { return p; }, f);
 }
 
-void SurfaceLoadKernel::pressure(const double* x,
-                                 const std::function<double(const double* x)>& p,
+void SurfaceLoadKernel::pressure(const double* x, const std::function<double(const double* x)>& p,
                                  double* f) const {
-  for (int k = 0; k < numDofs(); ++k) f[k] = 0.0;
+  for (int k = 0; k < numDofs(); ++k)
+    f[k] = 0.0;
   forEachPoint(x, [&](int q, const double* point, const double* normal, double w) {
     const double s = -w * p(point);
     const double* N = &N_[q * numNodes_];
     for (int a = 0; a < numNodes_; ++a)
-      for (int i = 0; i < spaceDim_; ++i) f[a * spaceDim_ + i] += s * N[a] * normal[i];
+      for (int i = 0; i < spaceDim_; ++i)
+        f[a * spaceDim_ + i] += s * N[a] * normal[i];
   });
 }
 

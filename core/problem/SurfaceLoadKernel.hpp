@@ -7,11 +7,11 @@
 // Facets: line2/line3 in 2D (per unit thickness), tri3/tri6/quad4/quad8/quad9 in 3D. x holds
 // 3 coordinates per node; f holds spaceDim() values per node. The default quadrature degree,
 // 2 * order + 1, integrates a constant pressure exactly even on curved facets.
-#include <functional>
-#include <vector>
-
 #include "core/fem/QuadratureRule.hpp"
 #include "core/mesh/ElementType.hpp"
+
+#include <functional>
+#include <vector>
 
 namespace contactlab {
 
@@ -37,8 +37,7 @@ class SurfaceLoadKernel {
                 double* f) const;
   // Pressure: constant or a function of the position.
   void pressure(const double* x, double p, double* f) const;
-  void pressure(const double* x, const std::function<double(const double* x)>& p,
-                double* f) const;
+  void pressure(const double* x, const std::function<double(const double* x)>& p, double* f) const;
 
  private:
   // Calls visit(q, point, normal, weight * dA) at every quadrature point.

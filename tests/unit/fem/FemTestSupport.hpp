@@ -1,15 +1,15 @@
 #pragma once
 // Shared fixtures of the fem unit tests: element type lists, reference-cell sampling and small
 // materials (the project's LinearElastic lives elsewhere; these keep the tests self-contained).
+#include "core/fem/ReferenceElement.hpp"
+#include "core/materials/Material.hpp"
+#include "core/mesh/ElementType.hpp"
+
 #include <array>
 #include <cmath>
 #include <random>
 #include <string>
 #include <vector>
-
-#include "core/fem/ReferenceElement.hpp"
-#include "core/materials/Material.hpp"
-#include "core/mesh/ElementType.hpp"
 
 namespace contactlab::test {
 
@@ -32,7 +32,9 @@ inline bool isSimplex(ElementType t) {
          t == ElementType::Tet10;
 }
 
-inline std::string nameOf(ElementType t) { return info(t).name; }
+inline std::string nameOf(ElementType t) {
+  return info(t).name;
+}
 
 // A point strictly inside the reference cell.
 inline std::vector<double> randomPoint(ElementType type, std::mt19937& rng) {
@@ -43,10 +45,12 @@ inline std::vector<double> randomPoint(ElementType type, std::mt19937& rng) {
     double sum;
     do {
       sum = 0;
-      for (double& v : xi) v = u(rng), sum += v;
+      for (double& v : xi)
+        v = u(rng), sum += v;
     } while (sum > 0.97);
   } else {
-    for (double& v : xi) v = 2 * u(rng) - 1;
+    for (double& v : xi)
+      v = 2 * u(rng) - 1;
   }
   return xi;
 }
@@ -63,7 +67,8 @@ inline std::vector<double> distortedNodes(ElementType type, double eps = 0.05) {
     const double* xi = &ref.nodeCoordinates()[a * d];
     for (int i = 0; i < d; ++i) {
       double v = c[i];
-      for (int j = 0; j < d; ++j) v += A[i][j] * xi[j];
+      for (int j = 0; j < d; ++j)
+        v += A[i][j] * xi[j];
       v += eps * std::sin(1.0 + xi[(i + 1) % d] * (i + 1.5));
       x[3 * a + i] = v;
     }
@@ -77,7 +82,8 @@ class IsotropicElastic : public Material {
   IsotropicElastic(double E, double nu) {
     const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) C_[i * 6 + j] = lambda;
+      for (int j = 0; j < 3; ++j)
+        C_[i * 6 + j] = lambda;
       C_[i * 6 + i] += 2 * mu;
       C_[(i + 3) * 6 + i + 3] = mu;
     }
@@ -87,7 +93,8 @@ class IsotropicElastic : public Material {
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
     for (int i = 0; i < 6; ++i) {
       out.stress[i] = 0;
-      for (int j = 0; j < 6; ++j) out.stress[i] += C_[i * 6 + j] * in.strain[j];
+      for (int j = 0; j < 6; ++j)
+        out.stress[i] += C_[i * 6 + j] * in.strain[j];
     }
     out.tangent = C_;
   }
@@ -109,10 +116,12 @@ class UnsymmetricNonlinear : public IsotropicElastic {
     IsotropicElastic::evaluate(in, out);
     const double m[6] = {1, 0.5, -0.3, 0.2, 0.7, -0.4};
     double ee = 0;
-    for (double e : in.strain) ee += e * e;
+    for (double e : in.strain)
+      ee += e * e;
     for (int i = 0; i < 6; ++i) {
       out.stress[i] += kQuad * ee * m[i];
-      for (int j = 0; j < 6; ++j) out.tangent[i * 6 + j] += kQuad * 2 * in.strain[j] * m[i];
+      for (int j = 0; j < 6; ++j)
+        out.tangent[i * 6 + j] += kQuad * 2 * in.strain[j] * m[i];
     }
     out.stress[3] += kSkew * in.strain[0];
     out.tangent[3 * 6 + 0] += kSkew;

@@ -1,12 +1,13 @@
 // The reference elements must be gmsh's exactly (node coordinates, order and basis), since
 // meshes come from gmsh with their connectivity untouched.
-#include <gtest/gtest.h>
-
-#include <gmsh.h>
+#include "tests/unit/fem/FemTestSupport.hpp"
 
 #include "core/fem/ReferenceElement.hpp"
 #include "core/mesh/GmshSession.hpp"
-#include "tests/unit/fem/FemTestSupport.hpp"
+
+#include <gmsh.h>
+
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -46,7 +47,8 @@ TEST_F(GmshConsistency, BasisFunctionsAndGradients) {
     std::vector<std::vector<double>> points;
     for (int k = 0; k < 6; ++k) {
       points.push_back(test::randomPoint(t, rng));
-      for (int i = 0; i < 3; ++i) local.push_back(i < d ? points.back()[i] : 0.0);
+      for (int i = 0; i < 3; ++i)
+        local.push_back(i < d ? points.back()[i] : 0.0);
     }
     int components, orientations;
     std::vector<double> values, gradients;

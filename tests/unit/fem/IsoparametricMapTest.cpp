@@ -1,13 +1,12 @@
+#include "tests/unit/fem/FemTestSupport.hpp"
+
 #include "core/fem/IsoparametricMap.hpp"
-
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <string>
-
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
-#include "tests/unit/fem/FemTestSupport.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <string>
 
 namespace contactlab {
 namespace {
@@ -23,7 +22,8 @@ std::vector<double> affineNodes(ElementType t, const double (&A)[3][3], const do
   for (int a = 0; a < ref.numNodes(); ++a)
     for (int i = 0; i < d; ++i) {
       x[3 * a + i] = c[i];
-      for (int j = 0; j < d; ++j) x[3 * a + i] += A[i][j] * ref.nodeCoordinates()[a * d + j];
+      for (int j = 0; j < d; ++j)
+        x[3 * a + i] += A[i][j] * ref.nodeCoordinates()[a * d + j];
     }
   return x;
 }
@@ -38,7 +38,8 @@ TEST(IsoparametricMap, AffineMapGivesExactJacobianAndGradients) {
     const auto x = affineNodes(t, A, c);
     double Ad[9], Ainv[9];
     for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j) Ad[i * d + j] = A[i][j];
+      for (int j = 0; j < d; ++j)
+        Ad[i * d + j] = A[i][j];
     const double detA = invert(d, Ad, Ainv);
     std::vector<double> dNdxi(n * d), dNdx(n * d);
     for (int trial = 0; trial < 4; ++trial) {
@@ -46,13 +47,15 @@ TEST(IsoparametricMap, AffineMapGivesExactJacobianAndGradients) {
       ref.shapeDerivatives(xi.data(), dNdxi.data());
       double J[9];
       jacobian(d, n, x.data(), dNdxi.data(), J);
-      for (int k = 0; k < d * d; ++k) EXPECT_NEAR(J[k], Ad[k], 1e-13) << nameOf(t);
+      for (int k = 0; k < d * d; ++k)
+        EXPECT_NEAR(J[k], Ad[k], 1e-13) << nameOf(t);
       EXPECT_NEAR(physicalGradients(d, n, x.data(), dNdxi.data(), dNdx.data()), detA, 1e-13)
           << nameOf(t);
       for (int a = 0; a < n; ++a)
         for (int i = 0; i < d; ++i) {
           double expected = 0;
-          for (int j = 0; j < d; ++j) expected += dNdxi[a * d + j] * Ainv[j * d + i];
+          for (int j = 0; j < d; ++j)
+            expected += dNdxi[a * d + j] * Ainv[j * d + i];
           EXPECT_NEAR(dNdx[a * d + i], expected, 1e-13) << nameOf(t);
         }
     }
@@ -74,11 +77,9 @@ TEST(IsoparametricMap, InvertedElementThrows) {
     } catch (const InvalidElementError& e) {
       EXPECT_EQ(e.kind(), InvalidElementError::Kind::Inverted);
       EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
-      const std::string labelled =
-          e.withLabel("element 42 (gmsh tag 1234) of block 'body'").what();
-      EXPECT_EQ(labelled.rfind("element 42 (gmsh tag 1234) of block 'body' is inverted: det J = ",
-                               0),
-                0u)
+      const std::string labelled = e.withLabel("element 42 (gmsh tag 1234) of block 'body'").what();
+      EXPECT_EQ(
+          labelled.rfind("element 42 (gmsh tag 1234) of block 'body' is inverted: det J = ", 0), 0u)
           << labelled;
       EXPECT_NE(labelled.find("at a quadrature point"), std::string::npos);
     }
@@ -108,8 +109,7 @@ TEST(IsoparametricMap, CollapsedElementThrows) {
   std::vector<double> x(3 * 8, 1.0), dNdxi(24), dNdx(24);
   const double xi[3] = {0.1, 0.2, 0.3};
   ReferenceElement::get(ElementType::Hex8).shapeDerivatives(xi, dNdxi.data());
-  EXPECT_THROW(physicalGradients(3, 8, x.data(), dNdxi.data(), dNdx.data()),
-               InvalidElementError);
+  EXPECT_THROW(physicalGradients(3, 8, x.data(), dNdxi.data(), dNdx.data()), InvalidElementError);
 }
 
 TEST(IsoparametricMap, LargeButValidElementsPass) {
@@ -191,7 +191,8 @@ void rotate(const double* p, double* out) {
   const double kp = k[0] * p[0] + k[1] * p[1] + k[2] * p[2];
   const double kxp[3] = {k[1] * p[2] - k[2] * p[1], k[2] * p[0] - k[0] * p[2],
                          k[0] * p[1] - k[1] * p[0]};
-  for (int i = 0; i < 3; ++i) out[i] = p[i] * c + kxp[i] * s + k[i] * kp * (1 - c);
+  for (int i = 0; i < 3; ++i)
+    out[i] = p[i] * c + kxp[i] * s + k[i] * kp * (1 - c);
 }
 
 TEST(IsoparametricMap, TiltedFlatSurfaceFacets) {
@@ -214,7 +215,8 @@ TEST(IsoparametricMap, TiltedFlatSurfaceFacets) {
     double n[3];
     const double xi[2] = {0.2, 0.3};
     facetAt(t, x, xi, n);
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(n[i], nExpected[i], 1e-14) << nameOf(t);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(n[i], nExpected[i], 1e-14) << nameOf(t);
     EXPECT_NEAR(facetArea(t, x, 4), test::isSimplex(t) ? 3.0 : 6.0, 1e-13) << nameOf(t);
   }
 }

@@ -1,8 +1,8 @@
+#include "tests/unit/fem/FemTestSupport.hpp"
+
 #include "core/fem/ReferenceElement.hpp"
 
 #include <gtest/gtest.h>
-
-#include "tests/unit/fem/FemTestSupport.hpp"
 
 namespace contactlab {
 namespace {
@@ -16,8 +16,7 @@ TEST(ReferenceElement, SizesMatchElementTypeInfo) {
     EXPECT_EQ(ref.type(), t);
     EXPECT_EQ(ref.dim(), info(t).dim) << nameOf(t);
     EXPECT_EQ(ref.numNodes(), info(t).nodes) << nameOf(t);
-    EXPECT_EQ(ref.nodeCoordinates().size(), std::size_t(info(t).dim * info(t).nodes))
-        << nameOf(t);
+    EXPECT_EQ(ref.nodeCoordinates().size(), std::size_t(info(t).dim * info(t).nodes)) << nameOf(t);
     EXPECT_EQ(&ReferenceElement::get(t), &ref);
   }
 }
@@ -33,11 +32,13 @@ TEST(ReferenceElement, PartitionOfUnity) {
       ref.shape(xi.data(), N.data());
       ref.shapeDerivatives(xi.data(), dN.data());
       double sum = 0;
-      for (double v : N) sum += v;
+      for (double v : N)
+        sum += v;
       EXPECT_NEAR(sum, 1.0, 1e-14) << nameOf(t);
       for (int i = 0; i < d; ++i) {
         double dsum = 0;
-        for (int a = 0; a < n; ++a) dsum += dN[a * d + i];
+        for (int a = 0; a < n; ++a)
+          dsum += dN[a * d + i];
         EXPECT_NEAR(dsum, 0.0, 1e-13) << nameOf(t);
       }
     }
@@ -52,8 +53,8 @@ TEST(ReferenceElement, KroneckerAtNodes) {
     for (int b = 0; b < n; ++b) {
       ref.shape(&ref.nodeCoordinates()[b * d], N.data());
       for (int a = 0; a < n; ++a)
-        EXPECT_NEAR(N[a], a == b ? 1.0 : 0.0, 1e-15) << nameOf(t) << " N_" << a << "(x_" << b
-                                                    << ")";
+        EXPECT_NEAR(N[a], a == b ? 1.0 : 0.0, 1e-15)
+            << nameOf(t) << " N_" << a << "(x_" << b << ")";
     }
   }
 }
@@ -94,7 +95,8 @@ TEST(ReferenceElement, ReproducesLinearFields) {
       ref.shape(xi.data(), N.data());
       for (int i = 0; i < d; ++i) {
         double v = 0;
-        for (int a = 0; a < n; ++a) v += N[a] * ref.nodeCoordinates()[a * d + i];
+        for (int a = 0; a < n; ++a)
+          v += N[a] * ref.nodeCoordinates()[a * d + i];
         EXPECT_NEAR(v, xi[i], 1e-14) << nameOf(t);
       }
     }
@@ -107,11 +109,15 @@ TEST(ReferenceElement, SerendipityCentreValues) {
   std::vector<double> N(20);
   const double centre[3] = {0, 0, 0};
   ReferenceElement::get(ElementType::Quad8).shape(centre, N.data());
-  for (int a = 0; a < 4; ++a) EXPECT_NEAR(N[a], -0.25, 1e-15);
-  for (int a = 4; a < 8; ++a) EXPECT_NEAR(N[a], 0.5, 1e-15);
+  for (int a = 0; a < 4; ++a)
+    EXPECT_NEAR(N[a], -0.25, 1e-15);
+  for (int a = 4; a < 8; ++a)
+    EXPECT_NEAR(N[a], 0.5, 1e-15);
   ReferenceElement::get(ElementType::Hex20).shape(centre, N.data());
-  for (int a = 0; a < 8; ++a) EXPECT_NEAR(N[a], -0.25, 1e-15);
-  for (int a = 8; a < 20; ++a) EXPECT_NEAR(N[a], 0.25, 1e-15);
+  for (int a = 0; a < 8; ++a)
+    EXPECT_NEAR(N[a], -0.25, 1e-15);
+  for (int a = 8; a < 20; ++a)
+    EXPECT_NEAR(N[a], 0.25, 1e-15);
 }
 
 }  // namespace

@@ -1,13 +1,12 @@
-#include "core/problem/SolidKernel.hpp"
+#include "tests/unit/fem/FemTestSupport.hpp"
 
-#include <gtest/gtest.h>
+#include "core/fem/InvalidElementError.hpp"
+#include "core/problem/SolidKernel.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <stdexcept>
-
-#include "core/fem/InvalidElementError.hpp"
-#include "tests/unit/fem/FemTestSupport.hpp"
 
 namespace contactlab {
 namespace {
@@ -16,7 +15,8 @@ using test::nameOf;
 
 double maxAbs(const std::vector<double>& v) {
   double m = 0;
-  for (double e : v) m = std::max(m, std::abs(e));
+  for (double e : v)
+    m = std::max(m, std::abs(e));
   return m;
 }
 
@@ -32,7 +32,8 @@ struct Element {
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < d; ++i) {
         u[a * d + i] = c[i];
-        for (int j = 0; j < d; ++j) u[a * d + i] += G[i][j] * x[3 * a + j];
+        for (int j = 0; j < d; ++j)
+          u[a * d + i] += G[i][j] * x[3 * a + j];
       }
     return u;
   }
@@ -45,8 +46,8 @@ TEST(SolidKernel, RigidBodyMotionsGiveZeroResidual) {
     std::vector<double> f(e.n * e.d);
     const double zero[3][3] = {};
     const double c[3] = {0.3, -0.2, 0.1};
-    e.kernel.compute(e.x.data(), e.affineDisplacement(zero, c).data(), material, nullptr,
-                     nullptr, f.data(), nullptr);
+    e.kernel.compute(e.x.data(), e.affineDisplacement(zero, c).data(), material, nullptr, nullptr,
+                     f.data(), nullptr);
     EXPECT_LT(maxAbs(f), 1e-12) << nameOf(t) << " translation";
     // Infinitesimal rotation: skew-symmetric displacement gradient.
     const double W[3][3] = {{0, -0.01, 0.02}, {0.01, 0, -0.03}, {-0.02, 0.03, 0}};
@@ -71,7 +72,8 @@ TEST(SolidKernel, ConstantStrainGivesExactStress) {
     }
     double expected[6] = {};
     for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) expected[i] += material.C()[i * 6 + j] * eps[j];
+      for (int j = 0; j < 6; ++j)
+        expected[i] += material.C()[i * 6 + j] * eps[j];
     const auto u = e.affineDisplacement(G, c);
     std::vector<double> stress(6 * e.kernel.numQuadraturePoints());
     double average[6];
@@ -79,7 +81,8 @@ TEST(SolidKernel, ConstantStrainGivesExactStress) {
     for (int q = 0; q < e.kernel.numQuadraturePoints(); ++q)
       for (int k = 0; k < 6; ++k)
         EXPECT_NEAR(stress[6 * q + k], expected[k], 1e-12) << nameOf(t) << " q=" << q;
-    for (int k = 0; k < 6; ++k) EXPECT_NEAR(average[k], expected[k], 1e-12) << nameOf(t);
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(average[k], expected[k], 1e-12) << nameOf(t);
   }
 }
 
@@ -91,7 +94,8 @@ TEST(SolidKernel, LinearTangentIsSymmetricAndGivesTheResidual) {
     Element e(t);
     const int nd = e.n * e.d;
     std::vector<double> u(nd), f(nd), K(nd * nd);
-    for (double& v : u) v = r(rng);
+    for (double& v : u)
+      v = r(rng);
     e.kernel.compute(e.x.data(), u.data(), material, nullptr, nullptr, f.data(), K.data());
     const double scale = maxAbs(K);
     for (int i = 0; i < nd; ++i) {
@@ -103,7 +107,8 @@ TEST(SolidKernel, LinearTangentIsSymmetricAndGivesTheResidual) {
       EXPECT_NEAR(Ku, f[i], 1e-12 * scale) << nameOf(t);
     }
     // Positive diagonal; residual without tangent is the same.
-    for (int i = 0; i < nd; ++i) EXPECT_GT(K[i * nd + i], 0.0);
+    for (int i = 0; i < nd; ++i)
+      EXPECT_GT(K[i * nd + i], 0.0);
     std::vector<double> f2(nd);
     e.kernel.compute(e.x.data(), u.data(), material, nullptr, nullptr, f2.data(), nullptr);
     EXPECT_EQ(f, f2);
@@ -120,20 +125,23 @@ TEST(SolidKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMaterial
     std::vector<double> u(nd), f(nd), K(nd * nd), fp(nd), fm(nd);
     std::vector<double> stateOld(nq), stateNew(nq);
     e.kernel.initializeState(material, stateOld.data());
-    for (int q = 0; q < nq; ++q) stateOld[q] = 10 + q;
-    for (double& v : u) v = r(rng);
+    for (int q = 0; q < nq; ++q)
+      stateOld[q] = 10 + q;
+    for (double& v : u)
+      v = r(rng);
     e.kernel.compute(e.x.data(), u.data(), material, stateOld.data(), stateNew.data(), f.data(),
                      K.data());
-    for (int q = 0; q < nq; ++q) EXPECT_EQ(stateNew[q], 11 + q);
+    for (int q = 0; q < nq; ++q)
+      EXPECT_EQ(stateNew[q], 11 + q);
     const double h = 1e-6, scale = maxAbs(K);
     bool unsymmetric = false;
     for (int k = 0; k < nd; ++k) {
       auto up = u, um = u;
       up[k] += h, um[k] -= h;
-      e.kernel.compute(e.x.data(), up.data(), material, stateOld.data(), stateNew.data(),
-                       fp.data(), nullptr);
-      e.kernel.compute(e.x.data(), um.data(), material, stateOld.data(), stateNew.data(),
-                       fm.data(), nullptr);
+      e.kernel.compute(e.x.data(), up.data(), material, stateOld.data(), stateNew.data(), fp.data(),
+                       nullptr);
+      e.kernel.compute(e.x.data(), um.data(), material, stateOld.data(), stateNew.data(), fm.data(),
+                       nullptr);
       for (int i = 0; i < nd; ++i) {
         EXPECT_NEAR(K[i * nd + k], (fp[i] - fm[i]) / (2 * h), 1e-6 * scale)
             << nameOf(t) << " K(" << i << "," << k << ")";
@@ -154,7 +162,8 @@ TEST(SolidKernel, BodyForceAndVolume) {
     EXPECT_GT(volume, 0.0);
     for (int i = 0; i < e.d; ++i) {
       double sum = 0;
-      for (int a = 0; a < e.n; ++a) sum += f[a * e.d + i];
+      for (int a = 0; a < e.n; ++a)
+        sum += f[a * e.d + i];
       EXPECT_NEAR(sum, b[i] * volume, 1e-12) << nameOf(t);
     }
     // A position-dependent load integrates like the quadrature rule says.
@@ -164,13 +173,15 @@ TEST(SolidKernel, BodyForceAndVolume) {
     std::vector<double> points(3 * e.kernel.numQuadraturePoints());
     e.kernel.quadraturePoints(e.x.data(), points.data());
     double sum = 0;
-    for (int a = 0; a < e.n; ++a) sum += f[a * e.d];
+    for (int a = 0; a < e.n; ++a)
+      sum += f[a * e.d];
     EXPECT_GT(sum, 0.0);
     for (int q = 0; q < e.kernel.numQuadraturePoints(); ++q) {
       // Quadrature points lie inside the element's bounding box.
       for (int i = 0; i < e.d; ++i) {
         double lo = 1e300, hi = -1e300;
-        for (int a = 0; a < e.n; ++a) lo = std::min(lo, e.x[3 * a + i]), hi = std::max(hi, e.x[3 * a + i]);
+        for (int a = 0; a < e.n; ++a)
+          lo = std::min(lo, e.x[3 * a + i]), hi = std::max(hi, e.x[3 * a + i]);
         EXPECT_GT(points[3 * q + i], lo);
         EXPECT_LT(points[3 * q + i], hi);
       }
@@ -186,20 +197,20 @@ TEST(SolidKernel, RejectsWrongInputs) {
   Element e(ElementType::Hex8);
   std::vector<double> u(24, 0.0), f(24);
   const test::UnsymmetricNonlinear stateful;
-  EXPECT_THROW(e.kernel.compute(e.x.data(), u.data(), stateful, nullptr, nullptr, f.data(),
-                                nullptr),
-               std::invalid_argument);
+  EXPECT_THROW(
+      e.kernel.compute(e.x.data(), u.data(), stateful, nullptr, nullptr, f.data(), nullptr),
+      std::invalid_argument);
   struct Finite : test::IsotropicElastic {
     Finite() : IsotropicElastic(1, 0.3) {}
     Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
   } finite;
-  EXPECT_THROW(e.kernel.compute(e.x.data(), u.data(), finite, nullptr, nullptr, f.data(),
-                                nullptr),
+  EXPECT_THROW(e.kernel.compute(e.x.data(), u.data(), finite, nullptr, nullptr, f.data(), nullptr),
                std::invalid_argument);
   // Inverted: swap the bottom and top faces.
   auto x = e.x;
   for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) std::swap(x[3 * a + i], x[3 * (a + 4) + i]);
+    for (int i = 0; i < 3; ++i)
+      std::swap(x[3 * a + i], x[3 * (a + 4) + i]);
   const test::IsotropicElastic elastic(1, 0.3);
   EXPECT_THROW(e.kernel.compute(x.data(), u.data(), elastic, nullptr, nullptr, f.data(), nullptr),
                InvalidElementError);

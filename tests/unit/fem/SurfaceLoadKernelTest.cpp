@@ -1,11 +1,10 @@
+#include "tests/unit/fem/FemTestSupport.hpp"
+
 #include "core/problem/SurfaceLoadKernel.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <stdexcept>
-
-#include "tests/unit/fem/FemTestSupport.hpp"
 
 namespace contactlab {
 namespace {
@@ -26,7 +25,8 @@ std::vector<double> flatFacet(ElementType t) {
     const double* xi = &ref.nodeCoordinates()[2 * a];
     const double s = test::isSimplex(t) ? 3 * xi[0] : 1.5 * (xi[0] + 1);
     const double r = test::isSimplex(t) ? 2 * xi[1] : xi[1] + 1;
-    for (int i = 0; i < 3; ++i) x[3 * a + i] = o[i] + s * e1[i] + r * e2[i];
+    for (int i = 0; i < 3; ++i)
+      x[3 * a + i] = o[i] + s * e1[i] + r * e2[i];
   }
   return x;
 }
@@ -42,14 +42,16 @@ TEST(SurfaceLoadKernel, UniformPressureOnFlatFacetsSumsToPAlongMinusN) {
     kernel.pressure(x.data(), p, f.data());
     for (int i = 0; i < 3; ++i) {
       double sum = 0;
-      for (int a = 0; a < kernel.numNodes(); ++a) sum += f[3 * a + i];
+      for (int a = 0; a < kernel.numNodes(); ++a)
+        sum += f[3 * a + i];
       EXPECT_NEAR(sum, -p * area * n[i], 1e-12) << nameOf(t);
     }
     // Same as the traction -p n.
     std::vector<double> g(kernel.numDofs());
     const double tr[3] = {-p * n[0], -p * n[1], -p * n[2]};
     kernel.traction(x.data(), tr, g.data());
-    for (int k = 0; k < kernel.numDofs(); ++k) EXPECT_NEAR(f[k], g[k], 1e-12) << nameOf(t);
+    for (int k = 0; k < kernel.numDofs(); ++k)
+      EXPECT_NEAR(f[k], g[k], 1e-12) << nameOf(t);
   }
 }
 
@@ -63,7 +65,8 @@ TEST(SurfaceLoadKernel, ConsistentNodalShares) {
   };
   const Case cases[] = {
       {ElementType::Tri6, {0, 0, 0, 1. / 3, 1. / 3, 1. / 3}},
-      {ElementType::Quad8, {-1. / 12, -1. / 12, -1. / 12, -1. / 12, 1. / 3, 1. / 3, 1. / 3, 1. / 3}},
+      {ElementType::Quad8,
+       {-1. / 12, -1. / 12, -1. / 12, -1. / 12, 1. / 3, 1. / 3, 1. / 3, 1. / 3}},
       {ElementType::Quad9,
        {1. / 36, 1. / 36, 1. / 36, 1. / 36, 1. / 9, 1. / 9, 1. / 9, 1. / 9, 4. / 9}},
   };
@@ -111,7 +114,8 @@ TEST(SurfaceLoadKernel, PressureOnCurvedFacetsIsExact) {
   dome.pressure(x.data(), 2.0, g.data());
   double sum[3] = {};
   for (int a = 0; a < 9; ++a)
-    for (int i = 0; i < 3; ++i) sum[i] += g[3 * a + i];
+    for (int i = 0; i < 3; ++i)
+      sum[i] += g[3 * a + i];
   EXPECT_NEAR(sum[0], 0.0, 1e-12);
   EXPECT_NEAR(sum[1], 0.0, 1e-12);
   EXPECT_NEAR(sum[2], -2.0 * 4.0, 1e-12);
@@ -123,11 +127,12 @@ TEST(SurfaceLoadKernel, PositionDependentLoads) {
   SurfaceLoadKernel line(ElementType::Line2, 2);
   const std::vector<double> x = {0, 0, 0, 2, 0, 0};
   std::vector<double> f(4);
-  line.pressure(x.data(), [](const double* p) { return p[0]; }, f.data());
+  line.pressure(
+      x.data(), [](const double* p) { return p[0]; }, f.data());
   EXPECT_NEAR(f[1], 2.0 / 3, 1e-14);
   EXPECT_NEAR(f[3], 4.0 / 3, 1e-14);
-  line.traction(x.data(), [](const double* p, double* t) { t[0] = p[0], t[1] = 0, t[2] = 9; },
-                f.data());
+  line.traction(
+      x.data(), [](const double* p, double* t) { t[0] = p[0], t[1] = 0, t[2] = 9; }, f.data());
   EXPECT_NEAR(f[0], 2.0 / 3, 1e-14);
   EXPECT_NEAR(f[2], 4.0 / 3, 1e-14);
   EXPECT_NEAR(f[1], 0.0, 1e-14);

@@ -1,17 +1,21 @@
 // Klu2Solver: correct on any number of ranks and map layout (gathered to rank 0), residual guard.
-#include <gtest/gtest.h>
-#include <Tpetra_Core.hpp>
-
 #include "LinearTestProblems.hpp"
+
 #include "linear/Klu2Solver.hpp"
 #include "linear/MumpsSolver.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
 
 using test::Layout;
 
-Teuchos::RCP<const Comm> world() { return Tpetra::getDefaultComm(); }
+Teuchos::RCP<const Comm> world() {
+  return Tpetra::getDefaultComm();
+}
 
 class Klu2Layouts : public ::testing::TestWithParam<Layout> {};
 

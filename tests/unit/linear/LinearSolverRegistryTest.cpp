@@ -1,19 +1,21 @@
 // The linear solver registry: names, documented parameters, builders, validation errors.
-#include <gtest/gtest.h>
+#include "linear/LinearSolverRegistry.hpp"
+
 #include <Tpetra_Core.hpp>
 
-#include "linear/LinearSolverRegistry.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
 
-Teuchos::RCP<const Comm> world() { return Tpetra::getDefaultComm(); }
+Teuchos::RCP<const Comm> world() {
+  return Tpetra::getDefaultComm();
+}
 
 TEST(LinearSolverRegistry, HasMumpsKlu2AndBelosInThatOrder) {
   registerLinearSolvers();
   registerLinearSolvers();  // idempotent
-  EXPECT_EQ(linearSolverRegistry().names(),
-            (std::vector<std::string>{"mumps", "klu2", "belos"}));
+  EXPECT_EQ(linearSolverRegistry().names(), (std::vector<std::string>{"mumps", "klu2", "belos"}));
 }
 
 TEST(LinearSolverRegistry, UnknownNameErrorListsTheValidNames) {

@@ -1,9 +1,9 @@
 #include "LinearTestProblems.hpp"
 
+#include <Tpetra_Import.hpp>
+
 #include <algorithm>
 #include <cmath>
-
-#include <Tpetra_Import.hpp>
 
 namespace contactlab::test {
 
@@ -25,15 +25,16 @@ Teuchos::RCP<Matrix> makeMatrix(GO n, Layout layout, const Teuchos::RCP<const Co
                                 const RowFunction& rowOf) {
   const auto map = makeMap(n, layout, comm);
   const auto mine = map->getNodeElementList();
-  std::vector<std::vector<GO>> cols(mine.size());
-  std::vector<std::vector<double>> vals(mine.size());
-  Teuchos::Array<size_t> counts(mine.size());
-  for (size_t l = 0; l < mine.size(); ++l) {
+  const size_t count = mine.size();
+  std::vector<std::vector<GO>> cols(count);
+  std::vector<std::vector<double>> vals(count);
+  Teuchos::Array<size_t> counts(count);
+  for (size_t l = 0; l < count; ++l) {
     rowOf(mine[l], cols[l], vals[l]);
     counts[l] = cols[l].size();
   }
   auto A = Teuchos::rcp(new Matrix(map, counts()));
-  for (size_t l = 0; l < mine.size(); ++l)
+  for (size_t l = 0; l < count; ++l)
     A->insertGlobalValues(mine[l], Teuchos::ArrayView<const GO>(cols[l]),
                           Teuchos::ArrayView<const double>(vals[l]));
   A->fillComplete();
@@ -57,9 +58,8 @@ void addLaplacian2D(GO g, int nx, int ny, std::vector<GO>& cols, std::vector<dou
 
 Teuchos::RCP<Matrix> laplacian2D(int nx, int ny, Layout layout,
                                  const Teuchos::RCP<const Comm>& comm) {
-  return makeMatrix(GO(nx) * ny, layout, comm, [&](GO g, auto& cols, auto& vals) {
-    addLaplacian2D(g, nx, ny, cols, vals);
-  });
+  return makeMatrix(GO(nx) * ny, layout, comm,
+                    [&](GO g, auto& cols, auto& vals) { addLaplacian2D(g, nx, ny, cols, vals); });
 }
 
 Teuchos::RCP<Matrix> laplacian3D(int n, Layout layout, const Teuchos::RCP<const Comm>& comm) {
@@ -109,6 +109,21 @@ Teuchos::RCP<Matrix> convectionDiffusion(int nx, double a, Layout layout,
   });
 }
 
+Teuchos::RCP<Matrix> tinyDiagonalIndefinite(int nx, Layout layout,
+                                            const Teuchos::RCP<const Comm>& comm) {
+  // Off-diagonal (g, h) depends on min(g, h) only: symmetric.
+  const auto horizontal = [](GO g) { return 1.0 + 0.1 * ((g * 13) % 5); };
+  const auto vertical = [](GO g) { return -1.0 - 0.01 * (g % 3); };
+  return makeMatrix(GO(nx) * nx, layout, comm, [&](GO g, auto& cols, auto& vals) {
+    const int i = static_cast<int>(g % nx), j = static_cast<int>(g / nx);
+    cols.push_back(g), vals.push_back(1e-10 * ((g % 7) - 3));
+    if (i > 0) cols.push_back(g - 1), vals.push_back(horizontal(g - 1));
+    if (i + 1 < nx) cols.push_back(g + 1), vals.push_back(horizontal(g));
+    if (j > 0) cols.push_back(g - nx), vals.push_back(vertical(g - nx));
+    if (j + 1 < nx) cols.push_back(g + nx), vals.push_back(vertical(g));
+  });
+}
+
 Teuchos::RCP<Matrix> tridiagonal(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm) {
   return makeMatrix(n, layout, comm, [&](GO g, auto& cols, auto& vals) {
     cols.push_back(g), vals.push_back(2.0);
@@ -119,9 +134,8 @@ Teuchos::RCP<Matrix> tridiagonal(GO n, Layout layout, const Teuchos::RCP<const C
 
 Teuchos::RCP<Matrix> diagonal(GO n, const std::function<double(GO)>& d, Layout layout,
                               const Teuchos::RCP<const Comm>& comm) {
-  return makeMatrix(n, layout, comm, [&](GO g, auto& cols, auto& vals) {
-    cols.push_back(g), vals.push_back(d(g));
-  });
+  return makeMatrix(n, layout, comm,
+                    [&](GO g, auto& cols, auto& vals) { cols.push_back(g), vals.push_back(d(g)); });
 }
 
 Teuchos::RCP<MultiVector> rightHandSide(const Matrix& A, size_t columns) {
@@ -146,7 +160,8 @@ std::vector<double> gathered(const MultiVector& v, size_t col) {
   copy.doImport(*v.getVector(col), importer, Tpetra::INSERT);
   const auto data = copy.getData();
   std::vector<double> out(n);
-  for (GO l = 0; l < n; ++l) out[all->getGlobalElement(static_cast<LO>(l))] = data[l];
+  for (GO l = 0; l < n; ++l)
+    out[all->getGlobalElement(static_cast<LO>(l))] = data[l];
   return out;
 }
 
@@ -157,7 +172,8 @@ double relativeResidual(const Matrix& A, const MultiVector& b, const MultiVector
   r.norm2(rn);
   b.norm2(bn);
   double worst = 0;
-  for (size_t j = 0; j < rn.size(); ++j) worst = std::max(worst, rn[j] / bn[j]);
+  for (size_t j = 0; j < rn.size(); ++j)
+    worst = std::max(worst, rn[j] / bn[j]);
   return worst;
 }
 

@@ -3,13 +3,13 @@
 // row map or a scattered one (rows dealt round-robin to the ranks and listed in decreasing order,
 // so the map is non-contiguous even on one rank). The matrix entry (i, j) is the same whatever
 // the layout: solutions compare by global id.
-#include <functional>
-#include <string>
-#include <vector>
+#include "core/problem/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 
-#include "core/problem/LinearAlgebra.hpp"
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace contactlab::test {
 
@@ -35,6 +35,10 @@ Teuchos::RCP<Matrix> saddlePoint(int nx, int m, Layout layout,
 // -Laplace(u) + a (du/dx + du/dy), upwinded on an nx x nx grid (non-symmetric M-matrix).
 Teuchos::RCP<Matrix> convectionDiffusion(int nx, double a, Layout layout,
                                          const Teuchos::RCP<const Comm>& comm);
+// Symmetric indefinite, 5-point pattern on an nx x nx grid with tiny diagonal entries (~1e-10):
+// a symmetric factorization must delay most pivots.
+Teuchos::RCP<Matrix> tinyDiagonalIndefinite(int nx, Layout layout,
+                                            const Teuchos::RCP<const Comm>& comm);
 // tridiag(-1, 2, -1) of order n (det = n + 1).
 Teuchos::RCP<Matrix> tridiagonal(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm);
 // diag(d(0), ..., d(n-1)).

@@ -1,7 +1,8 @@
-#include <gtest/gtest.h>
-
 #include "MeshTestUtils.hpp"
+
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -15,7 +16,9 @@ struct BoxCase {
   std::size_t zminCells;
 };
 
-void PrintTo(const BoxCase& c, std::ostream* os) { *os << c.type; }
+void PrintTo(const BoxCase& c, std::ostream* os) {
+  *os << c.type;
+}
 
 class BoxGenerator : public ::testing::TestWithParam<BoxCase> {};
 

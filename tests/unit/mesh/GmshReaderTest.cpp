@@ -1,8 +1,9 @@
-#include <gtest/gtest.h>
-
 #include "MeshTestUtils.hpp"
+
 #include "core/mesh/GmshReader.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -57,8 +58,7 @@ const char* kSquareNodes = "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n9 5 5
 TEST(GmshReader, KeepsInvertedElementsNamesUnnamedGroupsAndDropsUnusedNodes) {
   const std::string path = test::freshTempDir("reader") + "/inverted.msh";
   test::writeText(path, std::string(kHeader) +
-                            "$PhysicalNames\n1\n2 7 \"plate\"\n$EndPhysicalNames\n" +
-                            kSquareNodes +
+                            "$PhysicalNames\n1\n2 7 \"plate\"\n$EndPhysicalNames\n" + kSquareNodes +
                             "$Elements\n3\n10 2 2 7 1 1 2 3\n11 2 2 7 1 1 4 3\n"
                             "12 1 2 3 2 1 2\n$EndElements\n");
   const Mesh mesh = readGmshFile(path);
@@ -96,22 +96,21 @@ TEST(GmshReader, RejectsDirectoriesAndOtherExtensions) {
 
 TEST(GmshReader, FileWithoutPhysicalGroups) {
   const std::string path = test::freshTempDir("reader-nophys") + "/plain.msh";
-  test::writeText(path, std::string(kHeader) + kSquareNodes +
-                            "$Elements\n1\n1 2 2 0 1 1 2 3\n$EndElements\n");
+  test::writeText(
+      path, std::string(kHeader) + kSquareNodes + "$Elements\n1\n1 2 2 0 1 1 2 3\n$EndElements\n");
   try {
     readGmshFile(path);
     FAIL();
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("mesh file '" + path + "' has no physical groups", 0),
-              0u)
+    EXPECT_EQ(std::string(e.what()).rfind("mesh file '" + path + "' has no physical groups", 0), 0u)
         << e.what();
   }
 }
 
 TEST(GmshReader, FileWithOnlyLinePhysicalGroups) {
   const std::string path = test::freshTempDir("reader-1d") + "/lines.msh";
-  test::writeText(path, std::string(kHeader) + kSquareNodes +
-                            "$Elements\n1\n1 1 2 4 1 1 2\n$EndElements\n");
+  test::writeText(
+      path, std::string(kHeader) + kSquareNodes + "$Elements\n1\n1 1 2 4 1 1 2\n$EndElements\n");
   try {
     readGmshFile(path);
     FAIL();

@@ -1,9 +1,9 @@
-#include <gtest/gtest.h>
+#include "core/mesh/GmshSession.hpp"
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <gmsh.h>
 
-#include "core/mesh/GmshSession.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {

@@ -1,9 +1,9 @@
-#include <gtest/gtest.h>
+#include "MeshTestUtils.hpp"
+
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <cmath>
-
-#include "MeshTestUtils.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -29,7 +29,8 @@ TEST_P(HalfDiscGenerator, GroupsAreaBoundariesAndGrading) {
   EXPECT_LT(area, exact);
   EXPECT_GT(area, 0.99 * exact);
 
-  for (auto n : mesh.boundaryNodes("flat")) EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("flat"))
+    EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
   std::vector<double> arcDistances;  // distance of arc nodes to the contact point
   for (auto n : mesh.boundaryNodes("curved")) {
     const auto x = test::node(mesh, n);

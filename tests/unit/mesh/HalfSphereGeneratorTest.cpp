@@ -1,9 +1,9 @@
-#include <gtest/gtest.h>
+#include "MeshTestUtils.hpp"
+
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <cmath>
-
-#include "MeshTestUtils.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -28,12 +28,13 @@ TEST_P(HalfSphereGenerator, GroupsVolumeAndBoundaries) {
   EXPECT_LT(volume, 2 * M_PI / 3);
   EXPECT_GT(volume, 0.93 * 2 * M_PI / 3);
 
-  for (auto n : mesh.boundaryNodes("flat")) EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-9);
+  for (auto n : mesh.boundaryNodes("flat"))
+    EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-9);
   for (auto n : mesh.boundaryNodes("curved")) {
     const auto x = test::node(mesh, n);
-    EXPECT_NEAR(std::sqrt((x[0] - 1) * (x[0] - 1) + (x[1] + 1) * (x[1] + 1) +
-                          (x[2] - 2) * (x[2] - 2)),
-                1.0, 1e-6);
+    EXPECT_NEAR(
+        std::sqrt((x[0] - 1) * (x[0] - 1) + (x[1] + 1) * (x[1] + 1) + (x[2] - 2) * (x[2] - 2)), 1.0,
+        1e-6);
     EXPECT_LE(x[2], 2.0 + 1e-9);
   }
   const auto contact = mesh.boundaryNodes("contact-point");
@@ -54,7 +55,7 @@ TEST(HalfSphereGeneratorErrors, NameTheParameter) {
     generateHalfSphere(p);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "half-sphere generator: radius = 0.000000 must be a positive number");
+    EXPECT_STREQ(e.what(), "half-sphere generator: radius = 0 must be a positive number");
   }
 }
 

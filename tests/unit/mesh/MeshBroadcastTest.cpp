@@ -1,11 +1,10 @@
-#include <gtest/gtest.h>
+#include "core/mesh/MeshBroadcast.hpp"
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <mpi.h>
 
 #include <cstring>
-
-#include "core/mesh/MeshBroadcast.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -14,7 +13,8 @@ namespace {
 std::uint64_t fingerprint(const Mesh& m) {
   std::uint64_t h = 1469598103934665603ull;
   auto mix = [&](const void* p, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<const unsigned char*>(p)[i]) * 1099511628211ull;
+    for (std::size_t i = 0; i < n; ++i)
+      h = (h ^ static_cast<const unsigned char*>(p)[i]) * 1099511628211ull;
   };
   mix(&m.dim, sizeof m.dim);
   mix(m.source.data(), m.source.size());

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "core/mesh/MeshChecks.hpp"
+
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -29,7 +29,9 @@ std::string errorOf(const Mesh& m) {
   return "";
 }
 
-TEST(MeshChecks, AcceptsValidMeshWithInvertedElement) { EXPECT_NO_THROW(checkMesh(twoTriangles())); }
+TEST(MeshChecks, AcceptsValidMeshWithInvertedElement) {
+  EXPECT_NO_THROW(checkMesh(twoTriangles()));
+}
 
 TEST(MeshChecks, NodeOutOfRangeNamesGroupAndElement) {
   auto m = twoTriangles();

@@ -1,5 +1,7 @@
 #include "MeshTestUtils.hpp"
 
+#include "core/mesh/GmshSession.hpp"
+
 #include <gmsh.h>
 
 #include <algorithm>
@@ -7,10 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
-
 #include <unistd.h>
-
-#include "core/mesh/GmshSession.hpp"
 
 namespace contactlab::test {
 namespace {
@@ -22,7 +21,9 @@ double det3(const Vec& a, const Vec& b, const Vec& c) {
          a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec sub(const Vec& a, const Vec& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 // Jacobian determinants and weights at 2x2(x2) Gauss points of the corner map.
 std::vector<std::pair<double, double>> cornerJacobians(const Mesh& mesh, const CellGroup& g,
@@ -57,13 +58,14 @@ std::vector<std::pair<double, double>> cornerJacobians(const Mesh& mesh, const C
         double d = ref[k][j] * 0.5;
         for (int m = 0; m < (hex ? 3 : 2); ++m)
           if (m != j) d *= 0.5 * (1 + ref[k][m] * xi[m]);
-        for (int i = 0; i < 3; ++i) jac[i][j] += p[i] * d;
+        for (int i = 0; i < 3; ++i)
+          jac[i][j] += p[i] * d;
       }
     }
-    const double det = hex ? det3({jac[0][0], jac[1][0], jac[2][0]},
-                                  {jac[0][1], jac[1][1], jac[2][1]},
-                                  {jac[0][2], jac[1][2], jac[2][2]})
-                           : jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
+    const double det =
+        hex ? det3({jac[0][0], jac[1][0], jac[2][0]}, {jac[0][1], jac[1][1], jac[2][1]},
+                   {jac[0][2], jac[1][2], jac[2][2]})
+            : jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
     out.emplace_back(det, 1.0);
   }
   return out;
@@ -77,39 +79,45 @@ std::array<double, 3> node(const Mesh& mesh, std::int64_t n) {
 
 double cellMeasure(const Mesh& mesh, const CellGroup& g, std::size_t c) {
   double sum = 0;
-  for (const auto& [det, w] : cornerJacobians(mesh, g, c)) sum += det * w;
+  for (const auto& [det, w] : cornerJacobians(mesh, g, c))
+    sum += det * w;
   return sum;
 }
 
 double minCornerJacobian(const Mesh& mesh, const CellGroup& g, std::size_t c) {
   double m = 1e300;
-  for (const auto& jw : cornerJacobians(mesh, g, c)) m = std::min(m, jw.first);
+  for (const auto& jw : cornerJacobians(mesh, g, c))
+    m = std::min(m, jw.first);
   return m;
 }
 
 double blockMeasure(const Mesh& mesh, const std::string& name) {
   double sum = 0;
   for (const auto* g : mesh.findBlocks(name))
-    for (std::size_t c = 0; c < g->size(); ++c) sum += cellMeasure(mesh, *g, c);
+    for (std::size_t c = 0; c < g->size(); ++c)
+      sum += cellMeasure(mesh, *g, c);
   return sum;
 }
 
 double minJacobian(const Mesh& mesh) {
   double m = 1e300;
   for (const auto& g : mesh.blocks)
-    for (std::size_t c = 0; c < g.size(); ++c) m = std::min(m, minCornerJacobian(mesh, g, c));
+    for (std::size_t c = 0; c < g.size(); ++c)
+      m = std::min(m, minCornerJacobian(mesh, g, c));
   return m;
 }
 
 std::set<std::int64_t> blockNodes(const Mesh& mesh, const std::string& name) {
   std::set<std::int64_t> nodes;
-  for (const auto* g : mesh.findBlocks(name)) nodes.insert(g->nodes.begin(), g->nodes.end());
+  for (const auto* g : mesh.findBlocks(name))
+    nodes.insert(g->nodes.begin(), g->nodes.end());
   return nodes;
 }
 
 std::size_t cellCount(const std::vector<const CellGroup*>& groups) {
   std::size_t n = 0;
-  for (const auto* g : groups) n += g->size();
+  for (const auto* g : groups)
+    n += g->size();
   return n;
 }
 
@@ -125,7 +133,8 @@ void writeWithGmsh(const Mesh& mesh, const std::string& path, double version) {
       if (!nodesPlaced) gmsh::model::mesh::addNodes(g.dim, entity, nodeTags, mesh.coords);
       nodesPlaced = true;
       std::vector<std::size_t> tags(g.tags.begin(), g.tags.end()), nodes;
-      for (auto n : g.nodes) nodes.push_back(static_cast<std::size_t>(n) + 1);
+      for (auto n : g.nodes)
+        nodes.push_back(static_cast<std::size_t>(n) + 1);
       gmsh::model::mesh::addElementsByType(entity, info(g.type).gmshType, tags, nodes);
       const int physical = gmsh::model::addPhysicalGroup(g.dim, {entity});
       gmsh::model::setPhysicalName(g.dim, physical, g.name);
@@ -139,10 +148,20 @@ void writeWithGmsh(const Mesh& mesh, const std::string& path, double version) {
 }
 
 std::string freshTempDir(const std::string& name) {
+  // Removed when the test binary exits, so repeated runs leave nothing behind.
+  static struct Cleanup {
+    std::vector<std::filesystem::path> dirs;
+    ~Cleanup() {
+      std::error_code ignored;
+      for (const auto& d : dirs)
+        std::filesystem::remove_all(d, ignored);
+    }
+  } cleanup;
   const auto dir = std::filesystem::temp_directory_path() /
                    ("contactlab-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  cleanup.dirs.push_back(dir);
   return dir.string();
 }
 

@@ -1,11 +1,11 @@
 #pragma once
 // Geometry measures and a gmsh writer used by the mesh tests only.
+#include "core/mesh/Mesh.hpp"
+
 #include <array>
 #include <set>
 #include <string>
 #include <vector>
-
-#include "core/mesh/Mesh.hpp"
 
 namespace contactlab::test {
 

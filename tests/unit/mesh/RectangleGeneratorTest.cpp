@@ -1,9 +1,9 @@
-#include <gtest/gtest.h>
+#include "MeshTestUtils.hpp"
+
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <cmath>
-
-#include "MeshTestUtils.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -16,7 +16,9 @@ struct RectangleCase {
   std::size_t nodes;
 };
 
-void PrintTo(const RectangleCase& c, std::ostream* os) { *os << c.type; }
+void PrintTo(const RectangleCase& c, std::ostream* os) {
+  *os << c.type;
+}
 
 class RectangleGenerator : public ::testing::TestWithParam<RectangleCase> {};
 
@@ -51,7 +53,8 @@ TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {
     EXPECT_EQ(groups[0]->size(), static_cast<std::size_t>(n));
     const auto nodes = mesh.boundaryNodes(side);
     EXPECT_EQ(nodes.size(), static_cast<std::size_t>(order * n + 1));
-    for (auto k : nodes) EXPECT_NEAR(test::node(mesh, k)[axis], value, 1e-12) << side;
+    for (auto k : nodes)
+      EXPECT_NEAR(test::node(mesh, k)[axis], value, 1e-12) << side;
   }
   const auto bl = mesh.boundaryNodes("corner-bl");
   ASSERT_EQ(bl.size(), 1u);

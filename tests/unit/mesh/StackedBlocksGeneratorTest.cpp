@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
+#include "MeshTestUtils.hpp"
+
+#include "core/mesh/MeshGenerators.hpp"
 
 #include <algorithm>
 #include <cmath>
-
-#include "MeshTestUtils.hpp"
-#include "core/mesh/MeshGenerators.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab {
 namespace {
@@ -18,7 +18,8 @@ std::size_t unmatched(const Mesh& mesh, const std::vector<std::int64_t>& a,
     n += std::none_of(b.begin(), b.end(), [&](std::int64_t j) {
       const auto y = test::node(mesh, j);
       double d = 0;
-      for (int k = 0; k < axes; ++k) d += std::abs(x[k] - y[k]);
+      for (int k = 0; k < axes; ++k)
+        d += std::abs(x[k] - y[k]);
       return d < 1e-9;
     });
   }
@@ -33,9 +34,8 @@ TEST_P(StackedBlocks2D, PatchTestGeometry) {
   const Mesh mesh = generateStackedBlocks2D(p);
   EXPECT_EQ(mesh.dim, 2);
   EXPECT_EQ(mesh.blockNames(), (std::vector<std::string>{"lower", "upper"}));
-  const std::vector<std::string> sides{"lower-bottom", "lower-right", "lower-top",
-                                       "lower-left",   "upper-bottom", "upper-right",
-                                       "upper-top",    "upper-left"};
+  const std::vector<std::string> sides{"lower-bottom", "lower-right", "lower-top", "lower-left",
+                                       "upper-bottom", "upper-right", "upper-top", "upper-left"};
   EXPECT_EQ(mesh.boundaryNames(), sides);
   EXPECT_NEAR(test::blockMeasure(mesh, "lower"), 1.0, 1e-12);
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 1.0, 1e-12);
@@ -46,10 +46,12 @@ TEST_P(StackedBlocks2D, PatchTestGeometry) {
 
   const auto lower = test::blockNodes(mesh, "lower"), upper = test::blockNodes(mesh, "upper");
   EXPECT_EQ(lower.size() + upper.size(), mesh.numNodes());  // disjoint, all used
-  for (auto n : mesh.boundaryNodes("lower-top")) EXPECT_NEAR(test::node(mesh, n)[1], 1.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("lower-top"))
+    EXPECT_NEAR(test::node(mesh, n)[1], 1.0, 1e-12);
   for (auto n : mesh.boundaryNodes("upper-bottom"))
     EXPECT_NEAR(test::node(mesh, n)[1], 1.0, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-top")) EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("upper-top"))
+    EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
   // 2 vs 3 divisions: the end points coincide, and at order 2 also x = 0.5.
   const auto lt = mesh.boundaryNodes("lower-top"), ub = mesh.boundaryNodes("upper-bottom");
   EXPECT_EQ(unmatched(mesh, lt, ub, 2), info(elementTypeFromName(GetParam())).order == 1 ? 1u : 2u);
@@ -67,7 +69,8 @@ TEST(StackedBlocks2DGenerator, GapAndRotation) {
   p.gap = 0.25;
   p.upperRotationDeg = 5.0;
   const Mesh mesh = generateStackedBlocks2D(p);
-  for (auto n : mesh.boundaryNodes("lower-top")) EXPECT_NEAR(test::node(mesh, n)[1], 1.5, 1e-12);
+  for (auto n : mesh.boundaryNodes("lower-top"))
+    EXPECT_NEAR(test::node(mesh, n)[1], 1.5, 1e-12);
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 2.0, 1e-12);
   // Upper block turned about its centre (2, 2.25): its bottom corners moved off y = 1.75.
   double ymin = 1e9, ymax = -1e9;
@@ -93,9 +96,9 @@ TEST_P(StackedBlocks3D, PatchTestGeometry) {
   const Mesh mesh = generateStackedBlocks3D(p);
   EXPECT_EQ(mesh.dim, 3);
   EXPECT_EQ(mesh.blockNames(), (std::vector<std::string>{"lower", "upper"}));
-  const std::vector<std::string> faces{
-      "lower-xmin", "lower-xmax", "lower-ymin", "lower-ymax", "lower-bottom", "lower-top",
-      "upper-xmin", "upper-xmax", "upper-ymin", "upper-ymax", "upper-bottom", "upper-top"};
+  const std::vector<std::string> faces{"lower-xmin",   "lower-xmax", "lower-ymin",   "lower-ymax",
+                                       "lower-bottom", "lower-top",  "upper-xmin",   "upper-xmax",
+                                       "upper-ymin",   "upper-ymax", "upper-bottom", "upper-top"};
   EXPECT_EQ(mesh.boundaryNames(), faces);
   EXPECT_NEAR(test::blockMeasure(mesh, "lower"), 1.05, 1e-12);
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 1.05, 1e-12);
@@ -106,11 +109,14 @@ TEST_P(StackedBlocks3D, PatchTestGeometry) {
 
   const auto lower = test::blockNodes(mesh, "lower"), upper = test::blockNodes(mesh, "upper");
   EXPECT_EQ(lower.size() + upper.size(), mesh.numNodes());
-  for (auto n : mesh.boundaryNodes("lower-top")) EXPECT_NEAR(test::node(mesh, n)[2], 1.05, 1e-12);
+  for (auto n : mesh.boundaryNodes("lower-top"))
+    EXPECT_NEAR(test::node(mesh, n)[2], 1.05, 1e-12);
   for (auto n : mesh.boundaryNodes("upper-bottom"))
     EXPECT_NEAR(test::node(mesh, n)[2], 0.95, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-top")) EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-xmax")) EXPECT_NEAR(test::node(mesh, n)[0], 1.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("upper-top"))
+    EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("upper-xmax"))
+    EXPECT_NEAR(test::node(mesh, n)[0], 1.0, 1e-12);
   const auto lt = mesh.boundaryNodes("lower-top"), ub = mesh.boundaryNodes("upper-bottom");
   EXPECT_GT(unmatched(mesh, lt, ub, 2), lt.size() / 2);
 }
@@ -127,7 +133,8 @@ TEST(StackedBlocks3DGenerator, RotatedUpperBlock) {
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 1.0, 1e-12);
   EXPECT_GT(test::minJacobian(mesh), 0.0);
   // Lower block untouched, upper corners turned about (0.5, 0.5).
-  for (auto n : mesh.boundaryNodes("lower-xmin")) EXPECT_NEAR(test::node(mesh, n)[0], 0.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("lower-xmin"))
+    EXPECT_NEAR(test::node(mesh, n)[0], 0.0, 1e-12);
   const double a = 3 * M_PI / 180;
   bool found = false;
   for (auto n : mesh.boundaryNodes("upper-top")) {
