@@ -27,7 +27,8 @@ const QuadratureRule& quadratureRule(ElementType type, int degree);
 
 // Degree integrating the small-strain stiffness B^T C B exactly on undistorted elements:
 // 2 * order per direction on tensor cells (2x2(x2) Gauss for quad4/hex8, 3x3(x3) for the
-// quadratic ones), 2 * (order - 1) on simplices (1 point for tri3/tet4, 3/4 for tri6/tet10).
+// quadratic ones), 2 * (order - 1) on triangles and tet4 (1 point for tri3/tet4, 3 for tri6),
+// and 3 for tet10 (so that curved tet10s pass the patch test).
 int stiffnessQuadratureDegree(ElementType type);
 
 }  // namespace contactlab

@@ -9,6 +9,7 @@
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
+#include "core/problem/CollectiveError.hpp"
 #include "core/problem/SolidKernel.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
 
@@ -72,6 +73,33 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   }
 
   // Inverted or degenerate elements are input errors: find them before anything runs.
+  collectively(*comm, [&] { checkElementGeometry(); });
+
+  // Constrained dofs.
+  const auto& overlap = dofs_->overlapNodes();
+  constrained_.assign(overlap.size() * dim, 0);
+  for (int d = 0; d < static_cast<int>(model_.dirichlet.size()); ++d) {
+    const auto& bc = model_.dirichlet[d];
+    for (auto node : mesh.boundaryNodes(bc.group)) {
+      const int n = dofs_->overlapNodeIndex(node);
+      if (n < 0) continue;
+      for (int c : bc.components) {
+        constrained_[n * dim + c] = 1;
+        if (n < static_cast<int>(dofs_->numOwnedNodes()))
+          constraints_.push_back({n * dim + c, d, c, node});
+      }
+    }
+  }
+  reactions_.resize(model_.dirichlet.size());
+  for (std::size_t d = 0; d < reactions_.size(); ++d) reactions_[d].name = model_.dirichlet[d].name;
+
+  collectively(*comm, [&] { locateSurfaceLoads(); });
+  buildGraph();
+}
+
+void Problem::checkElementGeometry() const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = mesh.dim;
   std::vector<double> x, dN, dNdx;
   for (const auto& e : elements_) {
     const auto& block = mesh.blocks[e.block];
@@ -94,26 +122,6 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     }
   }
 
-  // Constrained dofs.
-  const auto& overlap = dofs_->overlapNodes();
-  constrained_.assign(overlap.size() * dim, 0);
-  for (int d = 0; d < static_cast<int>(model_.dirichlet.size()); ++d) {
-    const auto& bc = model_.dirichlet[d];
-    for (auto node : mesh.boundaryNodes(bc.group)) {
-      const int n = dofs_->overlapNodeIndex(node);
-      if (n < 0) continue;
-      for (int c : bc.components) {
-        constrained_[n * dim + c] = 1;
-        if (n < static_cast<int>(dofs_->numOwnedNodes()))
-          constraints_.push_back({n * dim + c, d, c, node});
-      }
-    }
-  }
-  reactions_.resize(model_.dirichlet.size());
-  for (std::size_t d = 0; d < reactions_.size(); ++d) reactions_[d].name = model_.dirichlet[d].name;
-
-  locateSurfaceLoads();
-  buildGraph();
 }
 
 Problem::~Problem() = default;

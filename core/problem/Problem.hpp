@@ -77,6 +77,7 @@ class Problem {
  private:
   struct LocalElement;
   void checkModel() const;
+  void checkElementGeometry() const;
   void buildGraph();
   void locateSurfaceLoads();
   void addExternalForces(double t, std::vector<double>& f) const;

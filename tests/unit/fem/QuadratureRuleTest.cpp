@@ -124,7 +124,7 @@ TEST(QuadratureRule, StiffnessDegrees) {
   EXPECT_EQ(stiffnessQuadratureDegree(ElementType::Tri3), 0);
   EXPECT_EQ(stiffnessQuadratureDegree(ElementType::Tet4), 0);
   EXPECT_EQ(stiffnessQuadratureDegree(ElementType::Tri6), 2);
-  EXPECT_EQ(stiffnessQuadratureDegree(ElementType::Tet10), 2);
+  EXPECT_EQ(stiffnessQuadratureDegree(ElementType::Tet10), 3);
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ TEST(ModelCheck, BlockWithoutMaterial) {
   model.materials["steel"] = model.materials["body"];
   model.materials.erase("body");
   const std::string m = messageOf(model);
-  EXPECT_NE(m.find("'steel'"), std::string::npos) << m;
+  EXPECT_NE(m.find("block 'body'"), std::string::npos) << m;
+  EXPECT_NE(m.find("no material"), std::string::npos) << m;
 }
 
 TEST(ModelCheck, LinearElasticRejectsBadConstants) {

@@ -16,7 +16,8 @@ TEST_P(PatchTest, LinearFieldIsExactOnDistortedMesh) {
   const std::string type = GetParam();
   const int n = is3D(type) ? 2 : 3;
   auto mesh = unitMesh(type, n);
-  distort(*mesh, n, 0.12);
+  // Tets are a sixth of a cell: distort them less to keep them valid.
+  distort(*mesh, n, type.rfind("tet", 0) == 0 ? 0.04 : 0.12);
   const double A[3][3] = {{1e-3, 2e-3, -1e-3}, {-3e-3, 2e-3, 1e-3}, {2e-3, 1e-3, 4e-3}};
   Field exact = [&](const double* x, double* u) {
     for (int i = 0; i < 3; ++i) u[i] = 0.01 * (i + 1) + A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];

@@ -1,0 +1,27 @@
+#pragma once
+// An error found on some ranks must stop every rank, or the others wait forever in the next
+// collective call. agreeOnError is collective: when any rank passes a non-empty message, every
+// rank throws InputError with the message of the lowest such rank.
+#include <string>
+
+#include "core/problem/LinearAlgebra.hpp"
+
+namespace contactlab {
+
+void agreeOnError(const Comm& comm, const std::string& localMessage);
+
+// Runs `work`, then agrees: an InputError or std::invalid_argument on any rank is rethrown as
+// InputError on all.
+template <class Work>
+void collectively(const Comm& comm, Work&& work) {
+  std::string message;
+  try {
+    work();
+  } catch (const std::exception& e) {
+    message = e.what();
+    if (message.empty()) message = "unknown error";
+  }
+  agreeOnError(comm, message);
+}
+
+}  // namespace contactlab
