@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 SCENE ?=
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure clean format bench
+.PHONY: run test build deps configure clean format bench docs
 
 deps:
 	@./cmake/install-deps.sh
@@ -27,6 +27,9 @@ test: build
 
 bench: build
 	./bench/run.sh
+
+docs: build
+	/usr/bin/python3 tests/app/check_scenes_doc.py $(BUILD_DIR)/apps/contactlab doc/scenes.md --update
 
 format:
 	find core linear algorithms apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i

@@ -1,5 +1,6 @@
 #include "apps/SceneSchema.hpp"
 
+#include <cstdio>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -163,19 +164,45 @@ void validateScene(ParameterList& scene, const std::string& where) {
 
 namespace {
 
+std::string formatNumber(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::string formatValue(const Teuchos::ParameterEntry& entry) {
+  if (entry.isType<double>()) return formatNumber(Teuchos::getValue<double>(entry));
+  if (entry.isType<int>()) return std::to_string(Teuchos::getValue<int>(entry));
+  if (entry.isType<bool>()) return Teuchos::getValue<bool>(entry) ? "true" : "false";
+  if (entry.isType<std::string>()) return "\"" + Teuchos::getValue<std::string>(entry) + "\"";
+  std::string s;
+  if (entry.isType<Teuchos::Array<double>>())
+    for (double v : Teuchos::getValue<Teuchos::Array<double>>(entry))
+      s += (s.empty() ? "" : ", ") + formatNumber(v);
+  else if (entry.isType<Teuchos::Array<int>>())
+    for (int v : Teuchos::getValue<Teuchos::Array<int>>(entry))
+      s += (s.empty() ? "" : ", ") + std::to_string(v);
+  return "[" + s + "]";
+}
+
 void describeList(std::ostream& out, const ParameterList& list, const std::string& indent) {
   for (auto it = list.begin(); it != list.end(); ++it) {
     const auto& entry = list.entry(it);
     const std::string& key = list.name(it);
     if (entry.isList()) {
-      out << indent << "- `" << key << "`:\n";
-      describeList(out, list.sublist(key), indent + "  ");
+      out << indent << "- `" << key << "`: a sublist (see below)\n";
       continue;
     }
-    std::ostringstream value;
-    entry.getAny(false).print(value);
-    out << indent << "- `" << key << "` (default `" << value.str() << "`): " << entry.docString()
-        << "\n";
+    out << indent << "- `" << key << "` (default `" << formatValue(entry) << "`): "
+        << entry.docString();
+    if (auto validator = entry.validator(); !validator.is_null()) {
+      if (auto strings = validator->validStringValues(); !strings.is_null()) {
+        std::string choices;
+        for (const auto& c : *strings) choices += (choices.empty() ? "" : ", ") + c;
+        out << ". Choices: " << choices;
+      }
+    }
+    out << "\n";
   }
 }
 

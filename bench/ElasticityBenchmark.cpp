@@ -1,11 +1,12 @@
 // Benchmark: 3D linear elasticity on a unit cube (bottom clamped, top pressed) with MUMPS.
 // Prints one Markdown table row: element, dofs, nonzeros, ranks, seconds for mesh, setup,
-// assembly (one full residual + tangent), MUMPS analysis, factorization and solve, and the
+// assembly (one full residual + tangent, best of three), MUMPS analysis, factorization and solve, and the
 // peak memory per rank.
 //
 //   bench_elasticity ELEMENT N [--header]     (N divisions per direction)
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -70,11 +71,15 @@ int main(int argc, char** argv) {
   auto u = problem.createVector();
   auto r = problem.createVector();
   problem.applyDirichlet(1.0, *u);
-  comm->barrier();
-  t0 = now();
-  problem.assemble(*u, 1.0, r.get(), true);
-  comm->barrier();
-  const double assemblySeconds = now() - t0;
+  // Best of three: the first touches fresh pages, the others show the steady cost.
+  double assemblySeconds = 1e300;
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    comm->barrier();
+    t0 = now();
+    problem.assemble(*u, 1.0, r.get(), true);
+    comm->barrier();
+    assemblySeconds = std::min(assemblySeconds, now() - t0);
+  }
 
   registerLinearSolvers();
   Teuchos::ParameterList params;

@@ -6,8 +6,8 @@ cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
 exe=$BUILD/bench/bench_elasticity
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-cases=("hex27 17" "tet10 22")
-if [[ "${1:-}" == "--large" ]]; then cases+=("hex27 29" "tet10 37"); fi
+cases=("hex27 17" "tet10 17")
+if [[ "${1:-}" == "--large" ]]; then cases+=("hex27 29" "tet10 29"); fi
 table=$(mktemp)
 first=1
 for c in "${cases[@]}"; do

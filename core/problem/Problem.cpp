@@ -10,6 +10,7 @@
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
 #include "core/problem/CollectiveError.hpp"
+#include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/SolidKernel.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
 
@@ -21,7 +22,6 @@ struct Problem::LocalElement {
   int kernel;                 // index in kernels_
   std::vector<int> nodes;     // overlap node indices
   std::vector<LO> rows;       // overlap-map LIDs of its dofs
-  std::vector<LO> cols;       // column-map LIDs of its dofs
   std::vector<double> stateOld, stateNew;
 };
 
@@ -214,43 +214,15 @@ void Problem::locateSurfaceLoads() {
 }
 
 void Problem::buildGraph() {
-  const int dim = this->dim();
-  const auto& overlapMap = dofs_->overlapMap();
-  const auto& ownedMap = dofs_->ownedMap();
-  // Row lengths: the distinct dofs of the elements around each node.
-  std::vector<std::set<int>> neighbours(dofs_->overlapNodes().size());
-  for (const auto& e : elements_)
-    for (int a : e.nodes) neighbours[a].insert(e.nodes.begin(), e.nodes.end());
-  std::vector<size_t> rowLength(overlapMap->getNodeNumElements());
-  for (std::size_t n = 0; n < neighbours.size(); ++n)
-    for (int c = 0; c < dim; ++c) rowLength[n * dim + c] = neighbours[n].size() * dim;
-  auto overlapGraph = Teuchos::rcp(new Graph(overlapMap, overlapMap,
-                                             Teuchos::ArrayView<const size_t>(rowLength)));
-  std::vector<LO> cols;
-  for (std::size_t n = 0; n < neighbours.size(); ++n) {
-    cols.clear();
-    for (int m : neighbours[n])
-      for (int c = 0; c < dim; ++c) cols.push_back(m * dim + c);
-    for (int c = 0; c < dim; ++c)
-      overlapGraph->insertLocalIndices(static_cast<LO>(n * dim + c),
-                                       Teuchos::ArrayView<const LO>(cols));
-  }
-  overlapGraph->fillComplete(ownedMap, ownedMap);
-  exporter_ = Teuchos::rcp(new Export(overlapMap, ownedMap));
-  importer_ = Teuchos::rcp(new Import(ownedMap, overlapMap));
-  auto ownedGraph = Teuchos::rcp(new Graph(ownedMap, 0));
-  ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
-  ownedGraph->fillComplete(ownedMap, ownedMap);
-  overlapMatrix_ = Teuchos::rcp(new Matrix(overlapGraph));
-  matrix_ = Teuchos::rcp(new Matrix(ownedGraph));
-
-  const auto colMap = overlapGraph->getColMap();
-  for (auto& e : elements_) {
-    e.cols.resize(e.rows.size());
-    for (std::size_t i = 0; i < e.rows.size(); ++i)
-      e.cols[i] = colMap->getLocalElement(overlapMap->getGlobalElement(e.rows[i]));
-  }
+  std::vector<std::vector<int>> elementNodes;
+  elementNodes.reserve(elements_.size());
+  for (const auto& e : elements_) elementNodes.push_back(e.nodes);
+  assembler_ = std::make_unique<MatrixAssembler>(*dofs_, elementNodes);
+  exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
+  importer_ = Teuchos::rcp(new Import(dofs_->ownedMap(), dofs_->overlapMap()));
 }
+
+const Teuchos::RCP<Matrix>& Problem::tangent() const { return assembler_->matrix(); }
 
 Teuchos::RCP<Vector> Problem::createVector() const {
   return Teuchos::rcp(new Vector(dofs_->ownedMap()));
@@ -325,14 +297,10 @@ void Problem::addExternalForces(double t, std::vector<double>& f) const {
 
 void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTangent) {
   const Mesh& mesh = *model_.mesh;
-  const int dim = this->dim();
   auto uOverlap = overlapCopy(u);
   auto uo = uOverlap->getData(0);
   std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
-  if (withTangent) {
-    overlapMatrix_->resumeFill();
-    overlapMatrix_->setAllToScalar(0.0);
-  }
+  if (withTangent) assembler_->begin();
   std::vector<double> x, ue, fe, ke;
   for (auto& e : elements_) {
     const std::size_t n = e.nodes.size(), nd = e.rows.size();
@@ -351,31 +319,12 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
                    withTangent ? ke.data() : nullptr);
     if (residual)
       for (std::size_t i = 0; i < nd; ++i) r[e.rows[i]] += fe[i];
-    if (withTangent) {
-      // Element-level elimination of constrained rows and columns (see Problem.hpp).
-      for (std::size_t i = 0; i < nd; ++i) {
-        if (constrained_[e.rows[i]]) continue;
-        for (std::size_t j = 0; j < nd; ++j)
-          if (constrained_[e.rows[j]]) ke[i * nd + j] = 0.0;
-        overlapMatrix_->sumIntoLocalValues(e.rows[i], static_cast<LO>(nd), &ke[i * nd],
-                                           e.cols.data());
-      }
-    }
+    // Element-level elimination of constrained rows and columns (see Problem.hpp).
+    if (withTangent) assembler_->add(&e - elements_.data(), ke.data(), constrained_);
   }
   if (withTangent) {
-    const LO ownedDofs = static_cast<LO>(dofs_->numOwnedNodes() * dim);
-    const double one = 1.0;
-    const auto colMap = overlapMatrix_->getColMap();
-    for (LO i = 0; i < ownedDofs; ++i)
-      if (constrained_[i]) {
-        const LO col = colMap->getLocalElement(dofs_->overlapMap()->getGlobalElement(i));
-        overlapMatrix_->sumIntoLocalValues(i, 1, &one, &col);
-      }
-    overlapMatrix_->fillComplete(dofs_->ownedMap(), dofs_->ownedMap());
-    matrix_->resumeFill();
-    matrix_->setAllToScalar(0.0);
-    matrix_->doExport(*overlapMatrix_, *exporter_, Tpetra::ADD);
-    matrix_->fillComplete(dofs_->ownedMap(), dofs_->ownedMap());
+    for (const auto& c : constraints_) assembler_->addDiagonal(c.lid, 1.0);
+    assembler_->end();
   }
   if (!residual) return;
 

@@ -21,6 +21,7 @@
 
 namespace contactlab {
 
+class MatrixAssembler;
 class SolidKernel;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
@@ -50,7 +51,7 @@ class Problem {
 
   Teuchos::RCP<Vector> createVector() const;
   // The tangent matrix (owned rows), refilled by every assemble() with a tangent.
-  const Teuchos::RCP<Matrix>& tangent() const { return matrix_; }
+  const Teuchos::RCP<Matrix>& tangent() const;
 
   // Sets the prescribed values at time t in u (owned entries).
   void applyDirichlet(double t, Vector& u) const;
@@ -106,7 +107,7 @@ class Problem {
     std::vector<int> overlapNodes;
   };
   std::vector<LoadedFacet> facets_;
-  Teuchos::RCP<Matrix> overlapMatrix_, matrix_;
+  std::unique_ptr<MatrixAssembler> assembler_;
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<Import> importer_;
   std::vector<Reaction> reactions_;
