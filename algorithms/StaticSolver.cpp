@@ -91,17 +91,16 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       }
       if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
         report.failure = "diverged";
-        report.message = "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " +
-                         sci(norm);
+        report.message =
+            "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " + sci(norm);
         break;
       }
       if (it == options_.maxIterations) {
         report.failure = "max-iterations";
-        report.message = "Newton did not converge in " + std::to_string(it) +
-                         " iterations at step " + std::to_string(step) + " (||R|| = " + sci(norm) +
-                         ", target " +
-                         sci(std::max(options_.absoluteTolerance,
-                                      options_.relativeTolerance * reference)) + ")";
+        report.message =
+            "Newton did not converge in " + std::to_string(it) + " iterations at step " +
+            std::to_string(step) + " (||R|| = " + sci(norm) + ", target " +
+            sci(std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) + ")";
         break;
       }
       t0 = clock::now();

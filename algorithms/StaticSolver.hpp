@@ -3,13 +3,13 @@
 // Per step: prescribed values at the new time, then Newton until
 //   ||R|| <= max(Absolute Tolerance, Relative Tolerance * ||R at the step's first iterate||).
 // The contact algorithms (fixed point, generalized and partial Newton on NOX) come on top.
-#include <functional>
-#include <string>
+#include "core/problem/Problem.hpp"
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "core/problem/Problem.hpp"
-#include "linear/LinearSolver.hpp"
+#include <functional>
+#include <string>
 
 namespace contactlab {
 

@@ -1,13 +1,5 @@
 #include "apps/RunCommand.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
-#include <chrono>
-#include <cstdio>
-#include <filesystem>
-#include <iostream>
-
 #include "apps/DefaultScene.hpp"
 #include "apps/SceneModel.hpp"
 #include "core/io/CsvWriter.hpp"
@@ -15,6 +7,13 @@
 #include "core/io/JsonWriter.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/Problem.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace contactlab {
 namespace {
@@ -30,13 +29,19 @@ JsonValue toJson(const Teuchos::ParameterList& list) {
   for (auto it = list.begin(); it != list.end(); ++it) {
     const auto& entry = list.entry(it);
     const std::string& key = list.name(it);
-    if (entry.isList()) object.set(key, toJson(list.sublist(key)));
-    else if (entry.isType<double>()) object.set(key, Teuchos::getValue<double>(entry));
-    else if (entry.isType<int>()) object.set(key, Teuchos::getValue<int>(entry));
-    else if (entry.isType<bool>()) object.set(key, Teuchos::getValue<bool>(entry));
-    else if (entry.isType<std::string>()) object.set(key, Teuchos::getValue<std::string>(entry));
+    if (entry.isList())
+      object.set(key, toJson(list.sublist(key)));
+    else if (entry.isType<double>())
+      object.set(key, Teuchos::getValue<double>(entry));
+    else if (entry.isType<int>())
+      object.set(key, Teuchos::getValue<int>(entry));
+    else if (entry.isType<bool>())
+      object.set(key, Teuchos::getValue<bool>(entry));
+    else if (entry.isType<std::string>())
+      object.set(key, Teuchos::getValue<std::string>(entry));
     else if (entry.isType<Teuchos::Array<double>>())
-      object.set(key, JsonValue::array(Teuchos::getValue<Teuchos::Array<double>>(entry).toVector()));
+      object.set(key,
+                 JsonValue::array(Teuchos::getValue<Teuchos::Array<double>>(entry).toVector()));
     else if (entry.isType<Teuchos::Array<int>>())
       object.set(key, JsonValue::array(Teuchos::getValue<Teuchos::Array<int>>(entry).toVector()));
   }
@@ -54,8 +59,8 @@ class Progress {
   explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
   void iteration(int step, int steps, int iteration, double residual, double elapsed) {
     if (!enabled_ || !tty_) return;
-    std::fprintf(stderr, "\r  step %d/%d  iteration %d  |R| = %.3e  elapsed %.1f s   ", step,
-                 steps, iteration, residual, elapsed);
+    std::fprintf(stderr, "\r  step %d/%d  iteration %d  |R| = %.3e  elapsed %.1f s   ", step, steps,
+                 iteration, residual, elapsed);
     std::fflush(stderr);
   }
   void step(const StepReport& s, int steps, double elapsed) {
@@ -86,13 +91,19 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                          ? readSceneText(kDefaultScene, "<default scene>", options.overrides)
                          : readSceneFile(options.scenePath, options.overrides);
     sm = loadScene(std::move(file), comm);
+    try {
+      problem = std::make_unique<Problem>(sm.model, comm);
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      if (message.find(sm.scene.path) != std::string::npos) throw;
+      throw InputError(sm.scene.path + ": " + message);
+    }
+    solver = buildLinearSolver(*sm.scene.params, comm);
     if (options.validateOnly) {
       if (root)
         std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
                   << sm.model.mesh->numElements() << " elements)\n";
     }
-    problem = std::make_unique<Problem>(sm.model, comm);
-    solver = buildLinearSolver(*sm.scene.params, comm);
   } catch (const InputError& e) {
     if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
     return 2;
@@ -126,18 +137,21 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       JsonValue value = JsonValue::array();
       if (p.field == "displacement") {
         const auto d = problem->nodeDisplacement(solution, p.node);
-        for (int c = 0; c < problem->dim(); ++c) value.push(d[c]);
+        for (int c = 0; c < problem->dim(); ++c)
+          value.push(d[c]);
       } else {
-        for (double s : problem->nodeStress(solution, p.node)) value.push(s);
+        for (double s : problem->nodeStress(solution, p.node))
+          value.push(s);
       }
       const double* x = &sm.model.mesh->coords[3 * p.node];
-      probes.set(p.name, JsonValue::object()
-                             .set("field", p.field)
-                             .set("point", JsonValue::array(std::vector<double>(
-                                               p.point.begin(), p.point.end())))
-                             .set("node", JsonValue::array(std::vector<double>(x, x + 3)))
-                             .set("distance", p.distance)
-                             .set("value", value));
+      probes.set(
+          p.name,
+          JsonValue::object()
+              .set("field", p.field)
+              .set("point", JsonValue::array(std::vector<double>(p.point.begin(), p.point.end())))
+              .set("node", JsonValue::array(std::vector<double>(x, x + 3)))
+              .set("distance", p.distance)
+              .set("value", value));
     }
   };
   auto onStep = [&](const StepReport& s, const Vector& solution) {
@@ -181,17 +195,17 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                               .set("parameters", toJson(params.sublist("Newton"))))
         .set("linear_solver", typedSection(params.sublist("Linear Solver")))
         .set("dofs", static_cast<long long>(problem->dofs().numGlobalDofs()))
-        .set("unknowns", JsonValue::object()
-                             .set("displacement",
-                                  static_cast<long long>(problem->dofs().numGlobalDofs()))
-                             .set("contact_multipliers", 0)
-                             .set("friction_multipliers", 0))
+        .set("unknowns",
+             JsonValue::object()
+                 .set("displacement", static_cast<long long>(problem->dofs().numGlobalDofs()))
+                 .set("contact_multipliers", 0)
+                 .set("friction_multipliers", 0))
         .set("nodes", static_cast<long long>(sm.model.mesh->numNodes()))
         .set("elements", static_cast<long long>(sm.model.mesh->numElements()))
         .set("contact_points", 0)
         .set("ranks", comm->getSize())
-        .set("load_steps", JsonValue::object().set("requested", steps).set("converged",
-                                                                          report.steps))
+        .set("load_steps",
+             JsonValue::object().set("requested", steps).set("converged", report.steps))
         .set("iterations", JsonValue::object().set("newton", report.iterations))
         .set("linear_solves", report.linearSolves)
         .set("cycling", JsonValue::object())
@@ -211,13 +225,14 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     summary.write(outDir + "/summary.json");
     if (report.converged) {
       std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps
-                << " step(s), " << report.iterations << " Newton iterations, "
-                << elapsed() << " s\n";
+                << " step(s), " << report.iterations << " Newton iterations, " << elapsed()
+                << " s\n";
     } else {
       std::cout << "contactlab: " << sm.scene.name << " FAILED (" << report.failure
                 << "): " << report.message << "\n";
     }
-    if (vtk) std::cout << "  results: " << std::filesystem::absolute(vtk->pvdPath()).string() << "\n";
+    if (vtk)
+      std::cout << "  results: " << std::filesystem::absolute(vtk->pvdPath()).string() << "\n";
     std::cout << "  summary: " << std::filesystem::absolute(outDir + "/summary.json").string()
               << "\n";
   }

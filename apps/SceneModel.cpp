@@ -1,17 +1,17 @@
 #include "apps/SceneModel.hpp"
 
-#include <cmath>
-#include <limits>
-
-#include <mpi.h>
-#include <Teuchos_DefaultMpiComm.hpp>
-
 #include "apps/SceneSchema.hpp"
 #include "core/io/InputError.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <mpi.h>
+
+#include <cmath>
+#include <limits>
 
 namespace contactlab {
 namespace {
@@ -46,7 +46,7 @@ std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>(
 LoadFunction loadFunction(const ParameterList& p, double endTime) {
   LoadFunction f;
   f.kind = p.get<std::string>("Function") == "constant" ? LoadFunction::Kind::Constant
-                                                         : LoadFunction::Kind::Ramp;
+                                                        : LoadFunction::Kind::Ramp;
   f.endTime = endTime;
   return f;
 }
@@ -58,7 +58,8 @@ std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
     throw InputError(where + ": " + path + "/" + key + " must have " + std::to_string(dim) +
                      " components");
   std::array<double, 3> out{};
-  for (int i = 0; i < dim; ++i) out[i] = v[i];
+  for (int i = 0; i < dim; ++i)
+    out[i] = v[i];
   return out;
 }
 
@@ -73,8 +74,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
 
   SceneModel sm;
   try {
-    sm.solverOptions =
-        StaticSolverOptions::from(p.sublist("Load Steps"), p.sublist("Newton"));
+    sm.solverOptions = StaticSolverOptions::from(p.sublist("Load Steps"), p.sublist("Newton"));
   } catch (const std::invalid_argument& e) {
     throw InputError(where + ": " + e.what());
   }
@@ -167,7 +167,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     double best = std::numeric_limits<double>::max();
     for (std::size_t n = 0; n < mesh->numNodes(); ++n) {
       double d2 = 0;
-      for (int i = 0; i < 3; ++i) d2 += std::pow(mesh->coords[3 * n + i] - probe.point[i], 2);
+      for (int i = 0; i < 3; ++i)
+        d2 += std::pow(mesh->coords[3 * n + i] - probe.point[i], 2);
       if (d2 < best) best = d2, probe.node = static_cast<std::int64_t>(n);
     }
     probe.distance = std::sqrt(best);

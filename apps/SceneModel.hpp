@@ -1,17 +1,17 @@
 #pragma once
 // A validated scene turned into the objects that run it: the mesh (built on rank 0 and
 // broadcast), the solid model, the solver options and the probes.
-#include <array>
-#include <memory>
-#include <string>
-#include <vector>
-
-#include <Teuchos_ParameterList.hpp>
-
 #include "algorithms/StaticSolver.hpp"
 #include "core/io/SceneFile.hpp"
 #include "core/problem/SolidModel.hpp"
 #include "linear/LinearSolver.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace contactlab {
 

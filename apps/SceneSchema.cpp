@@ -1,16 +1,16 @@
 #include "apps/SceneSchema.hpp"
 
-#include <cstdio>
-#include <sstream>
-
-#include <Teuchos_StandardParameterEntryValidators.hpp>
-
 #include "algorithms/StaticSolver.hpp"
 #include "core/io/InputError.hpp"
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include <cstdio>
+#include <sstream>
 
 namespace contactlab {
 namespace {
@@ -36,8 +36,8 @@ ParameterList typedSection(const RegistryT& registry, const ParameterList* user,
     throw InputError(where + ": unknown " + registry.axis() + " '" + type + "' in " + path +
                      "/Type; valid choices: " + registry.joinedNames());
   ParameterList section(path);
-  section.set("Type", defaultType, "The " + registry.axis() + " (one of: " +
-                                       registry.joinedNames() + ")",
+  section.set("Type", defaultType,
+              "The " + registry.axis() + " (one of: " + registry.joinedNames() + ")",
               choices(registry.names()));
   section.set(type, *registry.get(type).validParameters());
   return section;
@@ -48,10 +48,9 @@ const ParameterList* userSublist(const ParameterList* user, const std::string& k
 }
 
 // A section holding one sublist per user-chosen name, each following `item`.
-ParameterList namedSection(const ParameterList* user, const std::string& path,
-                           const std::string& where,
-                           const std::function<ParameterList(const ParameterList&,
-                                                             const std::string&)>& item) {
+ParameterList namedSection(
+    const ParameterList* user, const std::string& path, const std::string& where,
+    const std::function<ParameterList(const ParameterList&, const std::string&)>& item) {
   ParameterList section(path);
   if (!user) return section;
   for (auto it = user->begin(); it != user->end(); ++it) {
@@ -109,10 +108,9 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
   p.set("Directory", "",
         "Results folder; empty means results/<scene name> (the --out option overrides it)");
   p.set("VTK", true, "Write result.pvd and one .vtu (.pvtu on several ranks) per step");
-  p.set("Probes", namedSection(userSublist(user, "Probes"), "Output/Probes", where,
-                               [](const ParameterList&, const std::string&) {
-                                 return probeItem();
-                               }));
+  p.set("Probes",
+        namedSection(userSublist(user, "Probes"), "Output/Probes", where,
+                     [](const ParameterList&, const std::string&) { return probeItem(); }));
   return p;
 }
 
@@ -130,25 +128,22 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Description", "", "Free text, copied to summary.json");
   valid.set("Mesh", typedSection(meshSourceRegistry(), userSublist(&scene, "Mesh"), "rectangle",
                                  where, "Mesh"));
-  valid.set("Materials",
-            namedSection(userSublist(&scene, "Materials"), "Materials", where,
-                         [&](const ParameterList& user, const std::string& path) {
-                           return typedSection(materialRegistry(), &user, "linear-elastic",
-                                               where, path);
-                         }));
-  valid.set("Dirichlet", namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,
-                                      [](const ParameterList&, const std::string&) {
-                                        return dirichletItem();
+  valid.set("Materials", namedSection(userSublist(&scene, "Materials"), "Materials", where,
+                                      [&](const ParameterList& user, const std::string& path) {
+                                        return typedSection(materialRegistry(), &user,
+                                                            "linear-elastic", where, path);
                                       }));
-  valid.set("Loads", namedSection(userSublist(&scene, "Loads"), "Loads", where,
-                                  [](const ParameterList&, const std::string&) {
-                                    return loadItem();
-                                  }));
+  valid.set("Dirichlet",
+            namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,
+                         [](const ParameterList&, const std::string&) { return dirichletItem(); }));
+  valid.set("Loads",
+            namedSection(userSublist(&scene, "Loads"), "Loads", where,
+                         [](const ParameterList&, const std::string&) { return loadItem(); }));
   valid.set("Load Steps", *StaticSolverOptions::validLoadSteps());
   valid.set("Newton", *StaticSolverOptions::validNewton());
-  valid.set("Linear Solver", typedSection(linearSolverRegistry(),
-                                          userSublist(&scene, "Linear Solver"), "mumps", where,
-                                          "Linear Solver"));
+  valid.set("Linear Solver",
+            typedSection(linearSolverRegistry(), userSublist(&scene, "Linear Solver"), "mumps",
+                         where, "Linear Solver"));
   valid.set("Output", outputSection(userSublist(&scene, "Output"), where));
   return valid;
 }
@@ -157,9 +152,10 @@ void validateScene(ParameterList& scene, const std::string& where) {
   const ParameterList valid = sceneSchema(scene, where);
   validateAndSetDefaults(scene, valid, where);
   if (scene.sublist("Materials").numParams() == 0)
-    throw InputError(where + ": Materials is empty; give one sublist per element block, e.g. "
-                             "Materials: {body: {Type: linear-elastic, linear-elastic: {E: 1, "
-                             "nu: 0.3}}}");
+    throw InputError(where +
+                     ": Materials is empty; give one sublist per element block, e.g. "
+                     "Materials: {body: {Type: linear-elastic, linear-elastic: {E: 1, "
+                     "nu: 0.3}}}");
 }
 
 namespace {
@@ -193,12 +189,13 @@ void describeList(std::ostream& out, const ParameterList& list, const std::strin
       out << indent << "- `" << key << "`: a sublist (see below)\n";
       continue;
     }
-    out << indent << "- `" << key << "` (default `" << formatValue(entry) << "`): "
-        << entry.docString();
+    out << indent << "- `" << key << "` (default `" << formatValue(entry)
+        << "`): " << entry.docString();
     if (auto validator = entry.validator(); !validator.is_null()) {
       if (auto strings = validator->validStringValues(); !strings.is_null()) {
         std::string choices;
-        for (const auto& c : *strings) choices += (choices.empty() ? "" : ", ") + c;
+        for (const auto& c : *strings)
+          choices += (choices.empty() ? "" : ", ") + c;
         out << ". Choices: " << choices;
       }
     }

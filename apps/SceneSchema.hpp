@@ -3,9 +3,9 @@
 // Typed sections (Mesh, Materials/<block>, Linear Solver) take `Type: name` and a sibling
 // sublist named after the type whose valid parameters come from that axis' registry; named
 // sections (Materials, Dirichlet, Loads, Output/Probes) hold one sublist per user-chosen name.
-#include <string>
-
 #include <Teuchos_ParameterList.hpp>
+
+#include <string>
 
 namespace contactlab {
 

@@ -5,15 +5,16 @@
 //   contactlab validate SCENE [--set key=value ...]
 //   contactlab list
 //   contactlab --version
-#include <iostream>
-#include <string>
-#include <vector>
-
-#include <Tpetra_Core.hpp>
+#include "contactlab/Version.hpp"
 
 #include "apps/RunCommand.hpp"
 #include "apps/SceneSchema.hpp"
-#include "contactlab/Version.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <iostream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -67,11 +68,16 @@ int main(int argc, char** argv) {
       const std::string& a = args[i];
       if ((a == "--out" || a == "--set") && i + 1 >= args.size())
         return root ? usageError(a + " needs a value") : 2;
-      if (a == "--out") options.outputDirectory = args[++i];
-      else if (a == "--set") options.overrides.push_back(args[++i]);
-      else if (a.rfind("--", 0) == 0) return root ? usageError("unknown option '" + a + "'") : 2;
-      else if (options.scenePath.empty()) options.scenePath = a;
-      else return root ? usageError("more than one scene given ('" + a + "')") : 2;
+      if (a == "--out")
+        options.outputDirectory = args[++i];
+      else if (a == "--set")
+        options.overrides.push_back(args[++i]);
+      else if (a.rfind("--", 0) == 0)
+        return root ? usageError("unknown option '" + a + "'") : 2;
+      else if (options.scenePath.empty())
+        options.scenePath = a;
+      else
+        return root ? usageError("more than one scene given ('" + a + "')") : 2;
     }
     if (options.validateOnly && options.scenePath.empty())
       return root ? usageError("validate needs a scene file") : 2;

@@ -1,33 +1,31 @@
 // Benchmark: 3D linear elasticity on a unit cube (bottom clamped, top pressed) with MUMPS.
 // Prints one Markdown table row: element, dofs, nonzeros, ranks, seconds for mesh, setup,
-// assembly (one full residual + tangent, best of three), MUMPS analysis, factorization and solve, and the
-// peak memory per rank.
+// assembly (one full residual + tangent, best of three), MUMPS analysis, factorization and solve,
+// and the peak memory per rank.
 //
 //   bench_elasticity ELEMENT N [--header]     (N divisions per direction)
-#include <sys/resource.h>
-
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <iostream>
-#include <string>
-
-#include <Teuchos_DefaultMpiComm.hpp>
-#include <Tpetra_Core.hpp>
-
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "core/problem/Problem.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <sys/resource.h>
+
 using namespace contactlab;
 
 namespace {
 
 double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace
@@ -96,11 +94,11 @@ int main(int argc, char** argv) {
   double memory = usage.ru_maxrss / 1024.0, maxMemory = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &memory, &maxMemory);
   if (root)
-    std::printf("| %s | %lld | %zu | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f %% | %.0f |\n",
-                type.c_str(), static_cast<long long>(problem.dofs().numGlobalDofs()),
-                static_cast<size_t>(problem.tangent()->getGlobalNumEntries()), comm->getSize(),
-                meshSeconds, setupSeconds, assemblySeconds, stats.analysisSeconds,
-                stats.factorizationSeconds, stats.solveSeconds,
-                100.0 * assemblySeconds / stats.factorizationSeconds, maxMemory);
+    std::printf(
+        "| %s | %lld | %zu | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f %% | %.0f |\n",
+        type.c_str(), static_cast<long long>(problem.dofs().numGlobalDofs()),
+        static_cast<size_t>(problem.tangent()->getGlobalNumEntries()), comm->getSize(), meshSeconds,
+        setupSeconds, assemblySeconds, stats.analysisSeconds, stats.factorizationSeconds,
+        stats.solveSeconds, 100.0 * assemblySeconds / stats.factorizationSeconds, maxMemory);
   return 0;
 }

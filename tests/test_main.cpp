@@ -1,7 +1,8 @@
 // gtest main shared by every test binary: MPI and Kokkos through Tpetra's scope guard, and
 // gtest's output printed by rank 0 only.
-#include <gtest/gtest.h>
 #include <Tpetra_Core.hpp>
+
+#include <gtest/gtest.h>
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);

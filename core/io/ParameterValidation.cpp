@@ -1,12 +1,12 @@
 #include "core/io/ParameterValidation.hpp"
 
-#include <cmath>
-#include <sstream>
+#include "core/io/InputError.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_StrUtils.hpp>
 
-#include "core/io/InputError.hpp"
+#include <cmath>
+#include <sstream>
 
 namespace contactlab {
 namespace {
@@ -88,8 +88,10 @@ bool coerce(ParameterEntry& entry, const ParameterEntry& valid) {
   const std::string text = isString ? Teuchos::getValue<std::string>(entry) : "";
   if (valid.isType<double>()) {
     double v;
-    if (entry.isType<int>()) v = Teuchos::getValue<int>(entry);
-    else if (!isString || !parseDouble(text, v)) return false;
+    if (entry.isType<int>())
+      v = Teuchos::getValue<int>(entry);
+    else if (!isString || !parseDouble(text, v))
+      return false;
     entry.setValue(v);
   } else if (valid.isType<int>()) {
     int v;
@@ -106,12 +108,15 @@ bool coerce(ParameterEntry& entry, const ParameterEntry& valid) {
     if (!isString || !parseBool(text, v)) return false;
     entry.setValue(v);
   } else if (valid.isType<std::string>()) {
-    if (entry.isType<int>()) entry.setValue(std::to_string(Teuchos::getValue<int>(entry)));
-    else return false;
+    if (entry.isType<int>())
+      entry.setValue(std::to_string(Teuchos::getValue<int>(entry)));
+    else
+      return false;
   } else if (valid.isType<Array<double>>()) {
     Array<double> v;
     if (entry.isType<Array<int>>()) {
-      for (int i : Teuchos::getValue<Array<int>>(entry)) v.push_back(i);
+      for (int i : Teuchos::getValue<Array<int>>(entry))
+        v.push_back(i);
     } else if (!isString || !parseArray<double>(text, v, parseDouble)) {
       return false;
     }
@@ -132,7 +137,8 @@ std::string validChoices(const ParameterEntry& valid) {
   auto strings = validator->validStringValues();
   if (strings.is_null()) return "";
   std::string s;
-  for (const auto& v : *strings) s += (s.empty() ? "" : ", ") + v;
+  for (const auto& v : *strings)
+    s += (s.empty() ? "" : ", ") + v;
   return s;
 }
 
@@ -157,8 +163,7 @@ void validateAndSetDefaults(ParameterList& user, const ParameterList& valid,
     const ParameterEntry& v = valid.getEntry(key);
     ParameterEntry& u = user.getEntry(key);
     if (v.isList() != u.isList())
-      throw InputError(where + ": " + keyPath + " must be " + typeName(v) + ", not " +
-                       typeName(u));
+      throw InputError(where + ": " + keyPath + " must be " + typeName(v) + ", not " + typeName(u));
     if (v.isList()) {
       validateAndSetDefaults(user.sublist(key), valid.sublist(key), where, keyPath);
       continue;
@@ -193,15 +198,18 @@ void validateAndSetDefaults(ParameterList& user, const ParameterList& valid,
 void applyOverride(ParameterList& list, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("--set expects key=value with a '/'-separated key path, e.g. "
-                     "Mesh/rectangle/nx=20 (got '" + assignment + "')");
+    throw InputError(
+        "--set expects key=value with a '/'-separated key path, e.g. "
+        "Mesh/rectangle/nx=20 (got '" +
+        assignment + "')");
   const std::string keyPath = assignment.substr(0, eq);
   const std::string value = assignment.substr(eq + 1);
   ParameterList* current = &list;
   std::string key;
   std::stringstream ss(keyPath);
   std::vector<std::string> parts;
-  while (std::getline(ss, key, '/')) parts.push_back(key);
+  while (std::getline(ss, key, '/'))
+    parts.push_back(key);
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (current->isParameter(parts[i]) && !current->isSublist(parts[i]))
       throw InputError("--set " + keyPath + ": '" + parts[i] + "' is a value, not a sublist");

@@ -4,9 +4,9 @@
 // choices. Teuchos' own validateParameters gives correct but long messages and rejects
 // `E: 200000` (read by YAML as an int) where a double is expected, so values are first coerced
 // to the valid entry's type.
-#include <string>
-
 #include <Teuchos_ParameterList.hpp>
+
+#include <string>
 
 namespace contactlab {
 

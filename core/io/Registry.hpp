@@ -3,15 +3,15 @@
 // string, a function returning the valid parameters of that type (each with a default and a
 // doc string), and a builder. Scenes pick an entry with `Type: name` and give its parameters in
 // a sibling sublist named after the type. Registration is explicit (registerAll() per module).
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
 #include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Teuchos_ParameterList.hpp>
-#include <Teuchos_RCP.hpp>
 
 namespace contactlab {
 
@@ -42,8 +42,8 @@ class Registry {
   const Entry& get(const std::string& name) const {
     auto it = entries_.find(name);
     if (it == entries_.end())
-      throw std::invalid_argument("unknown " + axis_ + " '" + name + "'; valid choices: " +
-                                  joinedNames());
+      throw std::invalid_argument("unknown " + axis_ + " '" + name +
+                                  "'; valid choices: " + joinedNames());
     return it->second;
   }
 
@@ -52,7 +52,8 @@ class Registry {
 
   std::string joinedNames() const {
     std::string s;
-    for (const auto& n : names_) s += (s.empty() ? "" : ", ") + n;
+    for (const auto& n : names_)
+      s += (s.empty() ? "" : ", ") + n;
     return s;
   }
 

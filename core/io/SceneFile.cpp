@@ -1,13 +1,13 @@
 #include "core/io/SceneFile.hpp"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include "core/io/InputError.hpp"
+#include "core/io/ParameterValidation.hpp"
 
 #include <Teuchos_YamlParameterListHelpers.hpp>
 
-#include "core/io/InputError.hpp"
-#include "core/io/ParameterValidation.hpp"
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace contactlab {
 namespace {
@@ -33,13 +33,14 @@ SceneFile finish(Teuchos::RCP<Teuchos::ParameterList> params, const std::string&
   if (params->name() != "contactlab")
     throw InputError(label + ": the top-level key must be 'contactlab' (got '" + params->name() +
                      "')");
-  for (const auto& o : overrides) applyOverride(*params, o);
+  for (const auto& o : overrides)
+    applyOverride(*params, o);
   SceneFile scene;
   scene.path = label;
   scene.directory = std::filesystem::path(label).parent_path().string();
   if (scene.directory.empty()) scene.directory = ".";
   scene.name = params->isType<std::string>("Name") ? params->get<std::string>("Name")
-                                                    : std::filesystem::path(label).stem().string();
+                                                   : std::filesystem::path(label).stem().string();
   scene.params = params;
   return scene;
 }

@@ -2,11 +2,11 @@
 // Reading a scene file: YAML with one top-level key `contactlab:` read by Teuchos into a
 // ParameterList, plus command-line overrides. Validation against the registries happens in
 // the app (apps/SceneSchema), which knows every module.
-#include <string>
-#include <vector>
-
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
+
+#include <string>
+#include <vector>
 
 namespace contactlab {
 

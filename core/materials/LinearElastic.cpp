@@ -21,7 +21,8 @@ LinearElastic::LinearElastic(double youngModulus, double poissonRatio, double de
   const double lambda = E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_));
   const double mu = E_ / (2.0 * (1.0 + nu_));
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) C_[i * 6 + j] = lambda;
+    for (int j = 0; j < 3; ++j)
+      C_[i * 6 + j] = lambda;
     C_[i * 6 + i] += 2.0 * mu;
     C_[(i + 3) * 6 + (i + 3)] = mu;  // engineering shears
   }
@@ -30,7 +31,8 @@ LinearElastic::LinearElastic(double youngModulus, double poissonRatio, double de
 void LinearElastic::evaluate(const MaterialInput& in, MaterialOutput& out) const {
   for (int i = 0; i < 6; ++i) {
     double s = 0.0;
-    for (int j = 0; j < 6; ++j) s += C_[i * 6 + j] * in.strain[j];
+    for (int j = 0; j < 6; ++j)
+      s += C_[i * 6 + j] * in.strain[j];
     out.stress[i] = s;
   }
   out.tangent = C_;

@@ -25,10 +25,10 @@ struct MaterialInput {
 };
 
 struct MaterialOutput {
-  std::array<double, 6> stress{};   // Cauchy stress (Voigt) for small strain
-  std::array<double, 36> tangent{}; // d stress / d strain, row major 6x6
-  std::array<double, 9> P{};        // first Piola-Kirchhoff (finite strain only)
-  std::array<double, 81> dPdF{};    // (finite strain only)
+  std::array<double, 6> stress{};    // Cauchy stress (Voigt) for small strain
+  std::array<double, 36> tangent{};  // d stress / d strain, row major 6x6
+  std::array<double, 9> P{};         // first Piola-Kirchhoff (finite strain only)
+  std::array<double, 81> dPdF{};     // (finite strain only)
   double* stateNew = nullptr;
 };
 

@@ -11,8 +11,7 @@ MaterialRegistry& materialRegistry() {
 
 void registerMaterials() {
   materialRegistry().add(
-      {"linear-elastic",
-       "Isotropic linear elasticity, small strain (plane strain in 2D).",
+      {"linear-elastic", "Isotropic linear elasticity, small strain (plane strain in 2D).",
        [] {
          auto p = Teuchos::rcp(new Teuchos::ParameterList("linear-elastic"));
          p->set("E", 1.0, "Young's modulus (> 0), in the scene's stress unit");

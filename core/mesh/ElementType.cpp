@@ -24,7 +24,9 @@ const ElementTypeInfo kInfo[] = {
 
 }  // namespace
 
-const ElementTypeInfo& info(ElementType type) { return kInfo[static_cast<int>(type)]; }
+const ElementTypeInfo& info(ElementType type) {
+  return kInfo[static_cast<int>(type)];
+}
 
 ElementType elementTypeFromName(const std::string& name) {
   std::string valid;

@@ -25,13 +25,13 @@ enum class ElementType {
 
 struct ElementTypeInfo {
   ElementType type;
-  const char* name;  // contactlab's name, used in scene files: "quad8", "hex27", ...
-  int dim;           // topological dimension
-  int nodes;         // number of nodes
-  int order;         // polynomial order of the geometry (1 or 2)
-  int gmshType;      // gmsh element type id
-  int vtkType;       // VTK cell type id
-  ElementType facet; // type of its facets (Point1 for lines, itself for points)
+  const char* name;   // contactlab's name, used in scene files: "quad8", "hex27", ...
+  int dim;            // topological dimension
+  int nodes;          // number of nodes
+  int order;          // polynomial order of the geometry (1 or 2)
+  int gmshType;       // gmsh element type id
+  int vtkType;        // VTK cell type id
+  ElementType facet;  // type of its facets (Point1 for lines, itself for points)
 };
 
 const ElementTypeInfo& info(ElementType type);

@@ -23,7 +23,8 @@ std::vector<std::string> namesOf(const std::vector<CellGroup>& groups) {
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
-  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  for (const auto& n : names)
+    s += (s.empty() ? "" : ", ") + n;
   return s.empty() ? "(none)" : s;
 }
 
@@ -31,7 +32,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 std::size_t Mesh::numElements() const {
   std::size_t n = 0;
-  for (const auto& b : blocks) n += b.size();
+  for (const auto& b : blocks)
+    n += b.size();
   return n;
 }
 
@@ -49,13 +51,18 @@ std::vector<std::int64_t> Mesh::boundaryNodes(const std::string& name) const {
     throw std::invalid_argument("boundary group '" + name + "' is not in mesh " + source +
                                 "; its boundary groups are: " + joined(boundaryNames()));
   std::vector<std::int64_t> nodes;
-  for (const auto* g : groups) nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
+  for (const auto* g : groups)
+    nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
 }
 
-std::vector<std::string> Mesh::blockNames() const { return namesOf(blocks); }
-std::vector<std::string> Mesh::boundaryNames() const { return namesOf(boundaries); }
+std::vector<std::string> Mesh::blockNames() const {
+  return namesOf(blocks);
+}
+std::vector<std::string> Mesh::boundaryNames() const {
+  return namesOf(boundaries);
+}
 
 }  // namespace contactlab

@@ -2,22 +2,22 @@
 // The whole mesh, as read or generated: every rank holds a copy (contact surfaces and
 // partitioning need the global picture; 600 000 dofs is ~200 000 nodes, a few tens of MB).
 // Nodes are numbered 0..numNodes()-1; connectivity uses those indices in gmsh node order.
+#include "core/mesh/ElementType.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "core/mesh/ElementType.hpp"
 
 namespace contactlab {
 
 // Cells of one type belonging to one named physical group. A physical group holding several
 // element types becomes several CellGroups with the same name.
 struct CellGroup {
-  std::string name;                   // physical group name ("body", "bottom", ...)
-  int dim = 0;                        // topological dimension of the cells
+  std::string name;  // physical group name ("body", "bottom", ...)
+  int dim = 0;       // topological dimension of the cells
   ElementType type = ElementType::Point1;
-  std::vector<std::int64_t> nodes;    // flat connectivity, info(type).nodes per cell
-  std::vector<std::int64_t> tags;     // gmsh element tags, one per cell (for messages)
+  std::vector<std::int64_t> nodes;  // flat connectivity, info(type).nodes per cell
+  std::vector<std::int64_t> tags;   // gmsh element tags, one per cell (for messages)
 
   std::size_t size() const { return tags.size(); }
   int nodesPerCell() const { return info(type).nodes; }

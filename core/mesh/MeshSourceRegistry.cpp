@@ -1,12 +1,12 @@
 #include "core/mesh/MeshSourceRegistry.hpp"
 
-#include <filesystem>
-
-#include <Teuchos_StandardParameterEntryValidators.hpp>
-
 #include "core/io/InputError.hpp"
 #include "core/mesh/GmshReader.hpp"
 #include "core/mesh/MeshGenerators.hpp"
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include <filesystem>
 
 namespace contactlab {
 namespace {
@@ -33,7 +33,8 @@ std::array<T, N> fixed(const ParameterList& p, const std::string& key) {
   if (a.size() != N)
     throw std::invalid_argument(key + " must have " + std::to_string(N) + " components");
   std::array<T, N> out{};
-  for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+  for (std::size_t i = 0; i < N; ++i)
+    out[i] = a[i];
   return out;
 }
 

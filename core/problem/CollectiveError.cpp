@@ -1,8 +1,8 @@
 #include "core/problem/CollectiveError.hpp"
 
-#include <Teuchos_CommHelpers.hpp>
-
 #include "core/io/InputError.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
 
 namespace contactlab {
 

@@ -2,9 +2,9 @@
 // An error found on some ranks must stop every rank, or the others wait forever in the next
 // collective call. agreeOnError is collective: when any rank passes a non-empty message, every
 // rank throws InputError with the message of the lowest such rank.
-#include <string>
-
 #include "core/problem/LinearAlgebra.hpp"
+
+#include <string>
 
 namespace contactlab {
 

@@ -31,7 +31,8 @@ DofMap::DofMap(const Mesh& mesh, const std::vector<int>& elementRank,
   std::vector<GO> firstOfRank(size + 1, 0);
   for (std::size_t n = 0; n < nn; ++n)
     if (owner_[n] >= 0) ++firstOfRank[owner_[n] + 1];
-  for (int r = 0; r < size; ++r) firstOfRank[r + 1] += firstOfRank[r];
+  for (int r = 0; r < size; ++r)
+    firstOfRank[r + 1] += firstOfRank[r];
   std::vector<GO> next(firstOfRank.begin(), firstOfRank.end() - 1);
   globalNode_.assign(nn, -1);
   for (std::size_t n = 0; n < nn; ++n)
@@ -40,22 +41,26 @@ DofMap::DofMap(const Mesh& mesh, const std::vector<int>& elementRank,
   // Overlap: owned nodes first, then ghosts sorted by global number.
   std::vector<std::int64_t> ghosts;
   for (std::size_t n = 0; n < nn; ++n) {
-    if (owner_[n] == rank) overlapNodes_.push_back(static_cast<std::int64_t>(n));
-    else if (touched[n]) ghosts.push_back(static_cast<std::int64_t>(n));
+    if (owner_[n] == rank)
+      overlapNodes_.push_back(static_cast<std::int64_t>(n));
+    else if (touched[n])
+      ghosts.push_back(static_cast<std::int64_t>(n));
   }
   numOwnedNodes_ = overlapNodes_.size();
   std::sort(ghosts.begin(), ghosts.end(),
             [&](std::int64_t a, std::int64_t b) { return globalNode_[a] < globalNode_[b]; });
   overlapNodes_.insert(overlapNodes_.end(), ghosts.begin(), ghosts.end());
   overlapIndex_.assign(nn, -1);
-  for (std::size_t i = 0; i < overlapNodes_.size(); ++i) overlapIndex_[overlapNodes_[i]] = i;
+  for (std::size_t i = 0; i < overlapNodes_.size(); ++i)
+    overlapIndex_[overlapNodes_[i]] = i;
 
   const GO numGlobalDofs = firstOfRank[size] * dim_;
   ownedMap_ = Teuchos::rcp(new Map(numGlobalDofs, numOwnedNodes_ * dim_, 0, comm));
   std::vector<GO> gids;
   gids.reserve(overlapNodes_.size() * dim_);
   for (auto n : overlapNodes_)
-    for (int c = 0; c < dim_; ++c) gids.push_back(globalNode_[n] * dim_ + c);
+    for (int c = 0; c < dim_; ++c)
+      gids.push_back(globalNode_[n] * dim_ + c);
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   overlapMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids), 0, comm));
 }

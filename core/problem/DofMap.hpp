@@ -3,14 +3,14 @@
 // Each node is owned by the lowest rank among the ranks of its elements; nodes are renumbered
 // so that every rank owns a contiguous range (global dof = node * dim + component). The owned
 // map holds those dofs; the overlap map adds the ghost dofs touched by the rank's elements.
-#include <cstdint>
-#include <vector>
-
-#include <Teuchos_RCP.hpp>
-
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/ElementPartition.hpp"
 #include "core/problem/LinearAlgebra.hpp"
+
+#include <Teuchos_RCP.hpp>
+
+#include <cstdint>
+#include <vector>
 
 namespace contactlab {
 

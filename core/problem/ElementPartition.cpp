@@ -1,18 +1,21 @@
 #include "core/problem/ElementPartition.hpp"
 
+#include <metis.h>
+
 #include <stdexcept>
 #include <string>
-
-#include <metis.h>
 
 namespace contactlab {
 namespace {
 
 int cornerCount(ElementType type) {
   switch (info(type).dim) {
-    case 1: return 2;
-    case 2: return (type == ElementType::Tri3 || type == ElementType::Tri6) ? 3 : 4;
-    default: return (type == ElementType::Tet4 || type == ElementType::Tet10) ? 4 : 8;
+    case 1:
+      return 2;
+    case 2:
+      return (type == ElementType::Tri3 || type == ElementType::Tri6) ? 3 : 4;
+    default:
+      return (type == ElementType::Tet4 || type == ElementType::Tet10) ? 4 : 8;
   }
 }
 
@@ -22,7 +25,8 @@ std::vector<ElementRef> allElements(const Mesh& mesh) {
   std::vector<ElementRef> refs;
   refs.reserve(mesh.numElements());
   for (int b = 0; b < static_cast<int>(mesh.blocks.size()); ++b)
-    for (std::size_t c = 0; c < mesh.blocks[b].size(); ++c) refs.push_back({b, c});
+    for (std::size_t c = 0; c < mesh.blocks[b].size(); ++c)
+      refs.push_back({b, c});
   return refs;
 }
 
@@ -49,14 +53,14 @@ std::vector<int> partitionElements(const Mesh& mesh, MPI_Comm comm) {
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_SEED] = 1;  // same partition on every run
     std::vector<idx_t> epart(ne), npart(nn);
-    const int status = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr,
-                                          &ncommon, &nparts, nullptr, options, &objval,
-                                          epart.data(), npart.data());
+    const int status =
+        METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon, &nparts,
+                           nullptr, options, &objval, epart.data(), npart.data());
     if (status != METIS_OK)
-      throw std::runtime_error("METIS could not partition the mesh into " +
-                               std::to_string(size) + " parts (status " +
-                               std::to_string(status) + ")");
-    for (std::size_t e = 0; e < refs.size(); ++e) part[e] = static_cast<int>(epart[e]);
+      throw std::runtime_error("METIS could not partition the mesh into " + std::to_string(size) +
+                               " parts (status " + std::to_string(status) + ")");
+    for (std::size_t e = 0; e < refs.size(); ++e)
+      part[e] = static_cast<int>(epart[e]);
   }
   MPI_Bcast(part.data(), static_cast<int>(part.size()), MPI_INT, 0, comm);
   return part;

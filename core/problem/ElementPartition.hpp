@@ -1,11 +1,11 @@
 #pragma once
 // Which rank assembles each element. Elements are numbered globally by concatenating the
 // mesh's blocks in order. METIS (dual graph, corner nodes only) on rank 0, broadcast to all.
-#include <vector>
+#include "core/mesh/Mesh.hpp"
 
 #include <mpi.h>
 
-#include "core/mesh/Mesh.hpp"
+#include <vector>
 
 namespace contactlab {
 

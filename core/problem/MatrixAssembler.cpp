@@ -11,7 +11,8 @@ std::vector<std::vector<int>> nodeNeighbours(std::size_t numNodes,
                                              const std::vector<std::vector<int>>& elementNodes) {
   std::vector<std::vector<int>> neighbours(numNodes);
   for (const auto& nodes : elementNodes)
-    for (int a : nodes) neighbours[a].insert(neighbours[a].end(), nodes.begin(), nodes.end());
+    for (int a : nodes)
+      neighbours[a].insert(neighbours[a].end(), nodes.begin(), nodes.end());
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -39,14 +40,16 @@ MatrixAssembler::MatrixAssembler(const DofMap& dofs,
   auto rowColumns = [&](std::size_t node) {
     columns.clear();
     for (int m : neighbours[node])
-      for (int c = 0; c < dim_; ++c) columns.push_back(gidOf(m, c));
+      for (int c = 0; c < dim_; ++c)
+        columns.push_back(gidOf(m, c));
     return Teuchos::ArrayView<const GO>(columns);
   };
 
   // Ghost rows: the overlap dofs of nodes this rank does not own.
   std::vector<GO> ghostGids;
   for (std::size_t n = ownedNodes; n < numNodes; ++n)
-    for (int c = 0; c < dim_; ++c) ghostGids.push_back(gidOf(static_cast<int>(n), c));
+    for (int c = 0; c < dim_; ++c)
+      ghostGids.push_back(gidOf(static_cast<int>(n), c));
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   auto ghostMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(ghostGids), 0, comm));
   std::vector<size_t> ghostLength;
@@ -55,17 +58,20 @@ MatrixAssembler::MatrixAssembler(const DofMap& dofs,
   auto ghostGraph =
       Teuchos::rcp(new Graph(ghostMap, Teuchos::ArrayView<const size_t>(ghostLength)));
   for (std::size_t n = ownedNodes; n < numNodes; ++n)
-    for (int c = 0; c < dim_; ++c) ghostGraph->insertGlobalIndices(gidOf(n, c), rowColumns(n));
+    for (int c = 0; c < dim_; ++c)
+      ghostGraph->insertGlobalIndices(gidOf(n, c), rowColumns(n));
   ghostGraph->fillComplete(ownedMap, ownedMap);
   ghostsAnywhere_ = ghostMap->getGlobalNumElements() > 0;
 
   // Owned rows: this rank's elements plus what other ranks' ghost rows bring.
   std::vector<size_t> rowLength(ownedDofs_);
   for (std::size_t n = 0; n < ownedNodes; ++n)
-    for (int c = 0; c < dim_; ++c) rowLength[n * dim_ + c] = neighbours[n].size() * dim_;
+    for (int c = 0; c < dim_; ++c)
+      rowLength[n * dim_ + c] = neighbours[n].size() * dim_;
   auto ownedGraph = Teuchos::rcp(new Graph(ownedMap, Teuchos::ArrayView<const size_t>(rowLength)));
   for (std::size_t n = 0; n < ownedNodes; ++n)
-    for (int c = 0; c < dim_; ++c) ownedGraph->insertGlobalIndices(gidOf(n, c), rowColumns(n));
+    for (int c = 0; c < dim_; ++c)
+      ownedGraph->insertGlobalIndices(gidOf(n, c), rowColumns(n));
   ghostExporter_ = Teuchos::rcp(new Export(ghostMap, ownedMap));
   if (ghostsAnywhere_) ownedGraph->doExport(*ghostGraph, *ghostExporter_, Tpetra::INSERT);
   ownedGraph->fillComplete(ownedMap, ownedMap);

@@ -1,10 +1,5 @@
 #include "core/problem/Problem.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <map>
-#include <set>
-
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
@@ -14,14 +9,19 @@
 #include "core/problem/SolidKernel.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
 namespace contactlab {
 
 struct Problem::LocalElement {
   int block;
   std::size_t cell;
-  int kernel;                 // index in kernels_
-  std::vector<int> nodes;     // overlap node indices
-  std::vector<LO> rows;       // overlap-map LIDs of its dofs
+  int kernel;              // index in kernels_
+  std::vector<int> nodes;  // overlap node indices
+  std::vector<LO> rows;    // overlap-map LIDs of its dofs
   std::vector<double> stateOld, stateNew;
 };
 
@@ -34,6 +34,15 @@ std::string elementLabel(const Mesh& mesh, int block, std::size_t cell) {
 }
 
 }  // namespace
+
+void Problem::gatherCoordinates(const std::vector<int>& overlapNodes,
+                                std::vector<double>& x) const {
+  const Mesh& mesh = *model_.mesh;
+  x.resize(3 * overlapNodes.size());
+  for (std::size_t a = 0; a < overlapNodes.size(); ++a)
+    for (int i = 0; i < 3; ++i)
+      x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[overlapNodes[a]] + i];
+}
 
 Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     : model_(std::move(model)), comm_(comm) {
@@ -60,7 +69,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     for (int a = 0; a < npc; ++a) {
       const int n = dofs_->overlapNodeIndex(block.nodes[ref.cell * npc + a]);
       e.nodes.push_back(n);
-      for (int c = 0; c < dim; ++c) e.rows.push_back(n * dim + c);
+      for (int c = 0; c < dim; ++c)
+        e.rows.push_back(n * dim + c);
     }
     const int stateSize = blockMaterial_[ref.block]->stateSize();
     if (stateSize > 0) {
@@ -91,7 +101,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     }
   }
   reactions_.resize(model_.dirichlet.size());
-  for (std::size_t d = 0; d < reactions_.size(); ++d) reactions_[d].name = model_.dirichlet[d].name;
+  for (std::size_t d = 0; d < reactions_.size(); ++d)
+    reactions_[d].name = model_.dirichlet[d].name;
 
   collectively(*comm, [&] { locateSurfaceLoads(); });
   buildGraph();
@@ -105,23 +116,18 @@ void Problem::checkElementGeometry() const {
     const auto& block = mesh.blocks[e.block];
     const auto& ref = ReferenceElement::get(block.type);
     const auto& rule = quadratureRule(block.type, stiffnessQuadratureDegree(block.type));
-    x.resize(3 * e.nodes.size());
-    for (std::size_t a = 0; a < e.nodes.size(); ++a)
-      for (int i = 0; i < 3; ++i)
-        x[3 * a + i] = mesh.coords[3 * block.nodes[e.cell * e.nodes.size() + a] + i];
+    gatherCoordinates(e.nodes, x);
     dN.resize(e.nodes.size() * dim);
     dNdx.resize(e.nodes.size() * dim);
     try {
       for (int q = 0; q < rule.size(); ++q) {
         ref.shapeDerivatives(&rule.points[q * rule.dim], dN.data());
-        physicalGradients(dim, static_cast<int>(e.nodes.size()), x.data(), dN.data(),
-                          dNdx.data());
+        physicalGradients(dim, static_cast<int>(e.nodes.size()), x.data(), dN.data(), dNdx.data());
       }
     } catch (const InvalidElementError& err) {
       throw InputError(err.withLabel(elementLabel(mesh, e.block, e.cell)).what());
     }
   }
-
 }
 
 Problem::~Problem() = default;
@@ -135,7 +141,8 @@ void Problem::checkModel() const {
   for (const auto& [name, material] : model_.materials)
     if (mesh.findBlocks(name).empty()) {
       std::string blocks;
-      for (const auto& b : mesh.blockNames()) blocks += (blocks.empty() ? "" : ", ") + b;
+      for (const auto& b : mesh.blockNames())
+        blocks += (blocks.empty() ? "" : ", ") + b;
       throw InputError("material given for block '" + name + "', which is not in " + where +
                        "; its blocks are: " + blocks);
     }
@@ -178,7 +185,8 @@ void Problem::locateSurfaceLoads() {
   const auto refs = allElements(mesh);
   std::set<std::int64_t> loadedNodes;
   for (const auto& load : model_.surfaceLoads)
-    for (auto n : mesh.boundaryNodes(load.group)) loadedNodes.insert(n);
+    for (auto n : mesh.boundaryNodes(load.group))
+      loadedNodes.insert(n);
   for (std::size_t e = 0; e < refs.size(); ++e) {
     const auto& block = mesh.blocks[refs[e].block];
     const int npc = block.nodesPerCell();
@@ -196,8 +204,8 @@ void Problem::locateSurfaceLoads() {
         for (int a = 1; a < npc && !candidates.empty(); ++a) {
           const auto& other = elementsOfNode[g->nodes[f * npc + a]];
           std::vector<int> common;
-          std::set_intersection(candidates.begin(), candidates.end(), other.begin(),
-                                other.end(), std::back_inserter(common));
+          std::set_intersection(candidates.begin(), candidates.end(), other.begin(), other.end(),
+                                std::back_inserter(common));
           candidates.swap(common);
         }
         if (candidates.empty())
@@ -216,13 +224,16 @@ void Problem::locateSurfaceLoads() {
 void Problem::buildGraph() {
   std::vector<std::vector<int>> elementNodes;
   elementNodes.reserve(elements_.size());
-  for (const auto& e : elements_) elementNodes.push_back(e.nodes);
+  for (const auto& e : elements_)
+    elementNodes.push_back(e.nodes);
   assembler_ = std::make_unique<MatrixAssembler>(*dofs_, elementNodes);
   exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
   importer_ = Teuchos::rcp(new Import(dofs_->ownedMap(), dofs_->overlapMap()));
 }
 
-const Teuchos::RCP<Matrix>& Problem::tangent() const { return assembler_->matrix(); }
+const Teuchos::RCP<Matrix>& Problem::tangent() const {
+  return assembler_->matrix();
+}
 
 Teuchos::RCP<Vector> Problem::createVector() const {
   return Teuchos::rcp(new Vector(dofs_->ownedMap()));
@@ -239,8 +250,8 @@ void Problem::applyDirichlet(double t, Vector& u) const {
   const Mesh& mesh = *model_.mesh;
   for (const auto& c : constraints_) {
     const auto& bc = model_.dirichlet[c.condition];
-    data[c.lid] = bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t)
-                           : bc.value * bc.function(t);
+    data[c.lid] =
+        bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t) : bc.value * bc.function(t);
   }
 }
 
@@ -248,68 +259,67 @@ void Problem::addExternalForces(double t, std::vector<double>& f) const {
   const Mesh& mesh = *model_.mesh;
   const int dim = this->dim();
   std::vector<double> x, fe;
-  auto gather = [&](const std::vector<int>& nodes) {
-    x.resize(3 * nodes.size());
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int i = 0; i < 3; ++i)
-        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[nodes[a]] + i];
-  };
   for (const auto& facet : facets_) {
     const auto& load = model_.surfaceLoads[facet.load];
-    gather(facet.overlapNodes);
+    gatherCoordinates(facet.overlapNodes, x);
     fe.assign(facet.overlapNodes.size() * dim, 0.0);
     const double scale = load.function(t);
     SurfaceLoadKernel kernel(facet.type, dim);
     if (load.field) {
-      kernel.traction(x.data(), [&](const double* p, double* tr) { load.field(p, t, tr); },
-                      fe.data());
+      kernel.traction(
+          x.data(), [&](const double* p, double* tr) { load.field(p, t, tr); }, fe.data());
     } else if (load.kind == SurfaceLoad::Kind::Pressure) {
       kernel.pressure(x.data(), load.pressure * scale, fe.data());
     } else {
       std::array<double, 3> tr{};
-      for (int i = 0; i < 3; ++i) tr[i] = load.traction[i] * scale;
-      kernel.traction(x.data(), [&](const double*, double* out) {
-        for (int i = 0; i < 3; ++i) out[i] = tr[i];
-      }, fe.data());
+      for (int i = 0; i < 3; ++i)
+        tr[i] = load.traction[i] * scale;
+      kernel.traction(
+          x.data(),
+          [&](const double*, double* out) {
+            for (int i = 0; i < 3; ++i)
+              out[i] = tr[i];
+          },
+          fe.data());
     }
     for (std::size_t a = 0; a < facet.overlapNodes.size(); ++a)
-      for (int c = 0; c < dim; ++c) f[facet.overlapNodes[a] * dim + c] += fe[a * dim + c];
+      for (int c = 0; c < dim; ++c)
+        f[facet.overlapNodes[a] * dim + c] += fe[a * dim + c];
   }
   for (const auto& body : model_.bodyForces) {
     const double scale = body.function(t);
     for (const auto& e : elements_) {
       const auto& block = mesh.blocks[e.block];
       if (!body.block.empty() && block.name != body.block) continue;
-      gather(e.nodes);
+      gatherCoordinates(e.nodes, x);
       fe.assign(e.rows.size(), 0.0);
       if (body.field) {
         kernels_[e.kernel]->bodyForce(
             x.data(), [&](const double* p, double* b) { body.field(p, t, b); }, fe.data());
       } else {
         double b[3];
-        for (int i = 0; i < 3; ++i) b[i] = body.value[i] * scale;
+        for (int i = 0; i < 3; ++i)
+          b[i] = body.value[i] * scale;
         kernels_[e.kernel]->bodyForce(x.data(), b, fe.data());
       }
-      for (std::size_t i = 0; i < e.rows.size(); ++i) f[e.rows[i]] += fe[i];
+      for (std::size_t i = 0; i < e.rows.size(); ++i)
+        f[e.rows[i]] += fe[i];
     }
   }
 }
 
 void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTangent) {
-  const Mesh& mesh = *model_.mesh;
   auto uOverlap = overlapCopy(u);
   auto uo = uOverlap->getData(0);
   std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
   if (withTangent) assembler_->begin();
   std::vector<double> x, ue, fe, ke;
   for (auto& e : elements_) {
-    const std::size_t n = e.nodes.size(), nd = e.rows.size();
-    x.resize(3 * n);
+    const std::size_t nd = e.rows.size();
+    gatherCoordinates(e.nodes, x);
     ue.resize(nd);
-    for (std::size_t a = 0; a < n; ++a)
-      for (int i = 0; i < 3; ++i)
-        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
-    for (std::size_t i = 0; i < nd; ++i) ue[i] = uo[e.rows[i]];
+    for (std::size_t i = 0; i < nd; ++i)
+      ue[i] = uo[e.rows[i]];
     fe.assign(nd, 0.0);
     if (withTangent) ke.assign(nd * nd, 0.0);
     const SolidKernel& kernel = *kernels_[e.kernel];
@@ -318,12 +328,14 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
                    e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
                    withTangent ? ke.data() : nullptr);
     if (residual)
-      for (std::size_t i = 0; i < nd; ++i) r[e.rows[i]] += fe[i];
+      for (std::size_t i = 0; i < nd; ++i)
+        r[e.rows[i]] += fe[i];
     // Element-level elimination of constrained rows and columns (see Problem.hpp).
     if (withTangent) assembler_->add(&e - elements_.data(), ke.data(), constrained_);
   }
   if (withTangent) {
-    for (const auto& c : constraints_) assembler_->addDiagonal(c.lid, 1.0);
+    for (const auto& c : constraints_)
+      assembler_->addDiagonal(c.lid, 1.0);
     assembler_->end();
   }
   if (!residual) return;
@@ -334,7 +346,8 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   Vector rOverlap(dofs_->overlapMap());
   {
     auto data = rOverlap.getDataNonConst(0);
-    for (std::size_t i = 0; i < r.size(); ++i) data[i] = r[i] - fext[i];
+    for (std::size_t i = 0; i < r.size(); ++i)
+      data[i] = r[i] - fext[i];
   }
   residual->putScalar(0.0);
   residual->doExport(rOverlap, *exporter_, Tpetra::ADD);
@@ -348,29 +361,28 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
                      global.data());
   for (std::size_t d = 0; d < reactions_.size(); ++d)
-    for (int c = 0; c < 3; ++c) reactions_[d].force[c] = global[3 * d + c];
+    for (int c = 0; c < 3; ++c)
+      reactions_[d].force[c] = global[3 * d + c];
 }
 
 void Problem::commitState() {
-  for (auto& e : elements_) e.stateOld = e.stateNew;
+  for (auto& e : elements_)
+    e.stateOld = e.stateNew;
 }
 
 std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {
-  const Mesh& mesh = *model_.mesh;
   const auto& e = elements_[index];
   auto uo = uOverlap.getData(0);
-  std::vector<double> x(3 * e.nodes.size()), ue(e.rows.size());
-  for (std::size_t a = 0; a < e.nodes.size(); ++a)
-    for (int i = 0; i < 3; ++i)
-      x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
-  for (std::size_t i = 0; i < e.rows.size(); ++i) ue[i] = uo[e.rows[i]];
+  std::vector<double> x, ue(e.rows.size());
+  gatherCoordinates(e.nodes, x);
+  for (std::size_t i = 0; i < e.rows.size(); ++i)
+    ue[i] = uo[e.rows[i]];
   // Evaluated from the converged state into a scratch trial state: output changes nothing.
   std::vector<double> scratch(e.stateNew.size());
   std::array<double, 6> average{};
   kernels_[e.kernel]->stresses(x.data(), ue.data(), *blockMaterial_[e.block],
                                e.stateOld.empty() ? nullptr : e.stateOld.data(),
-                               scratch.empty() ? nullptr : scratch.data(), nullptr,
-                               average.data());
+                               scratch.empty() ? nullptr : scratch.data(), nullptr, average.data());
   return average;
 }
 
@@ -384,8 +396,10 @@ MeshPiece Problem::outputPiece(const Vector& u) const {
   piece.points.reserve(3 * nodes.size());
   FieldData disp{"displacement", 3, std::vector<double>(3 * nodes.size(), 0.0)};
   for (std::size_t a = 0; a < nodes.size(); ++a) {
-    for (int i = 0; i < 3; ++i) piece.points.push_back(mesh.coords[3 * nodes[a] + i]);
-    for (int c = 0; c < dim; ++c) disp.values[3 * a + c] = uo[a * dim + c];
+    for (int i = 0; i < 3; ++i)
+      piece.points.push_back(mesh.coords[3 * nodes[a] + i]);
+    for (int c = 0; c < dim; ++c)
+      disp.values[3 * a + c] = uo[a * dim + c];
   }
   piece.pointData.push_back(std::move(disp));
   FieldData stress{"stress", 6, {}}, vm{"von_mises", 1, {}}, material{"material", 1, {}},
@@ -423,25 +437,24 @@ DisplacementErrors Problem::displacementErrors(
     const auto& ref = ReferenceElement::get(block.type);
     const auto& rule = quadratureRule(block.type, 2 * info(block.type).order + 2);
     const int n = static_cast<int>(e.nodes.size());
-    x.resize(3 * n);
+    gatherCoordinates(e.nodes, x);
     N.resize(n);
     dN.resize(n * dim);
     dNdx.resize(n * dim);
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < 3; ++i)
-        x[3 * a + i] = mesh.coords[3 * dofs_->overlapNodes()[e.nodes[a]] + i];
     for (int q = 0; q < rule.size(); ++q) {
       const double* xi = &rule.points[q * rule.dim];
       ref.shape(xi, N.data());
       ref.shapeDerivatives(xi, dN.data());
-      const double w = rule.weights[q] * physicalGradients(dim, n, x.data(), dN.data(), dNdx.data());
+      const double w =
+          rule.weights[q] * physicalGradients(dim, n, x.data(), dN.data(), dNdx.data());
       double point[3] = {0, 0, 0}, uh[3] = {0, 0, 0}, gh[9] = {0}, ue[3] = {0, 0, 0}, ge[9] = {0};
       interpolatePosition(n, x.data(), N.data(), point);
       for (int a = 0; a < n; ++a)
         for (int i = 0; i < dim; ++i) {
           const double value = uo[e.rows[a * dim + i]];
           uh[i] += N[a] * value;
-          for (int j = 0; j < dim; ++j) gh[i * 3 + j] += dNdx[a * dim + j] * value;
+          for (int j = 0; j < dim; ++j)
+            gh[i * 3 + j] += dNdx[a * dim + j] * value;
         }
       exact(point, ue);
       exactGradient(point, ge);
@@ -464,7 +477,8 @@ std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t me
   if (dofs_->nodeOwner(meshNode) == comm_->getRank()) {
     auto data = u.getData(0);
     const int n = dofs_->overlapNodeIndex(meshNode);
-    for (int c = 0; c < dim(); ++c) local[c] = data[n * dim() + c];
+    for (int c = 0; c < dim(); ++c)
+      local[c] = data[n * dim() + c];
   }
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, local.data(), global.data());
   return global;
@@ -480,13 +494,15 @@ std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode
       const auto& e = elements_[i];
       if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
       const auto s = elementStress(i, *uOverlap);
-      for (int k = 0; k < 6; ++k) local[k] += s[k];
+      for (int k = 0; k < 6; ++k)
+        local[k] += s[k];
       local[6] += 1.0;
     }
   }
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 7, local.data(), global.data());
   std::array<double, 6> s{};
-  for (int k = 0; k < 6; ++k) s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
+  for (int k = 0; k < 6; ++k)
+    s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
   return s;
 }
 

@@ -7,17 +7,17 @@
 // zero but for a unit diagonal and their residual entries are zero, so K stays symmetric and a
 // Newton increment never changes a prescribed value. The residual a constrained dof would have
 // carried is kept as the reaction of its condition.
-#include <functional>
-#include <memory>
-#include <string>
-#include <vector>
-
-#include <Teuchos_RCP.hpp>
-
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/DofMap.hpp"
 #include "core/problem/LinearAlgebra.hpp"
 #include "core/problem/SolidModel.hpp"
+
+#include <Teuchos_RCP.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -26,15 +26,15 @@ class SolidKernel;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
 struct DisplacementErrors {
-  double l2 = 0;        // ||u_h - u||_L2
-  double energy = 0;    // |u_h - u|_H1 (seminorm: the energy-norm rate)
-  double l2Exact = 0;   // ||u||_L2, for relative errors
+  double l2 = 0;       // ||u_h - u||_L2
+  double energy = 0;   // |u_h - u|_H1 (seminorm: the energy-norm rate)
+  double l2Exact = 0;  // ||u||_L2, for relative errors
   double energyExact = 0;
 };
 
 struct Reaction {
-  std::string name;                 // the Dirichlet condition's name
-  std::array<double, 3> force{};    // sum of reactions over its nodes (global)
+  std::string name;               // the Dirichlet condition's name
+  std::array<double, 3> force{};  // sum of reactions over its nodes (global)
 };
 
 class Problem {
@@ -79,6 +79,7 @@ class Problem {
   struct LocalElement;
   void checkModel() const;
   void checkElementGeometry() const;
+  void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;
   void buildGraph();
   void locateSurfaceLoads();
   void addExternalForces(double t, std::vector<double>& f) const;
@@ -94,8 +95,8 @@ class Problem {
   // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
   std::vector<char> constrained_;
   struct Constraint {
-    int lid;         // owned LID
-    int condition;   // index in model_.dirichlet
+    int lid;        // owned LID
+    int condition;  // index in model_.dirichlet
     int component;
     std::int64_t node;
   };

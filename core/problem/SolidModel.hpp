@@ -1,14 +1,14 @@
 #pragma once
 // Everything that defines a solid model independently of how it is solved: the mesh, one
 // material per element block, boundary conditions and loads.
+#include "core/materials/Material.hpp"
+#include "core/mesh/Mesh.hpp"
+#include "core/problem/Loads.hpp"
+
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "core/materials/Material.hpp"
-#include "core/mesh/Mesh.hpp"
-#include "core/problem/Loads.hpp"
 
 namespace contactlab {
 

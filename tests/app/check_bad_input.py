@@ -75,7 +75,7 @@ cases = [
     ("E <= 0", scene_with("E: 100.0", "E: -5.0"), [], ["Materials/body", "E must be > 0"]),
     ("nu outside (-1, 0.5)", scene_with("nu: 0.3", "nu: 0.5"), [], ["Materials/body", "(-1, 0.5)"]),
     ("missing boundary group", scene_with("Group: bottom", "Group: bottm"), [],
-     ["'bottm'", "fix", "bottom, right, top, left"]),
+     ["scene.yaml", "'bottm'", "fix", "bottom, right, top, left"]),
     ("wrong value type", scene_with("nx: 4", "nx: four"), [], ["Mesh/rectangle/nx", "integer"]),
     ("inverted element",
      scene_with("Type: rectangle\n    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}",

@@ -1,9 +1,9 @@
 // Uses contactlab only through its installed headers and exported targets.
-#include <cmath>
-#include <iostream>
-
 #include "core/mesh/Mesh.hpp"
 #include "linear/LinearSolver.hpp"
+
+#include <cmath>
+#include <iostream>
 
 int main() {
   using contactlab::ElementType;
@@ -18,7 +18,8 @@ int main() {
   body.name = "body";
   body.dim = 3;
   body.type = ElementType::Hex27;
-  for (int i = 0; i < 27; ++i) body.nodes.push_back(i);
+  for (int i = 0; i < 27; ++i)
+    body.nodes.push_back(i);
   body.tags.push_back(1);
   mesh.blocks.push_back(body);
 

@@ -1,10 +1,9 @@
 // 1 rank and P ranks give the same displacements: every rank also solves the whole problem on
 // its own (MPI_COMM_SELF) and compares node by node.
-#include <gtest/gtest.h>
+#include "ProblemTestSupport.hpp"
 
 #include <cmath>
-
-#include "ProblemTestSupport.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab::test {
 namespace {

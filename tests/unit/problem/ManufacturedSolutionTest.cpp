@@ -1,11 +1,10 @@
 // Manufactured solutions (VERIFICATION.md V7): u_i = sin(a_i . x), with the body force that
 // makes it exact, on a sequence of meshes of every element type. The observed rates of the
 // L2 error approach p + 1 and those of the energy (H1 seminorm) error approach p.
-#include <gtest/gtest.h>
+#include "ProblemTestSupport.hpp"
 
 #include <cmath>
-
-#include "ProblemTestSupport.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab::test {
 namespace {
@@ -15,7 +14,8 @@ constexpr double kA[3][3] = {{1.1, 0.7, 0.4}, {-0.6, 1.3, 0.5}, {0.8, -0.9, 1.2}
 
 double phase(int i, const double* x, int dim) {
   double s = 0;
-  for (int j = 0; j < dim; ++j) s += kA[i][j] * x[j];
+  for (int j = 0; j < dim; ++j)
+    s += kA[i][j] * x[j];
   return s;
 }
 
@@ -28,17 +28,20 @@ Rates observedRates(const std::string& type, int n0, int levels,
   const int dim = is3D(type) ? 3 : 2;
   const double lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), mu = kE / (2 * (1 + kNu));
   Field exact = [dim](const double* x, double* u) {
-    for (int i = 0; i < dim; ++i) u[i] = std::sin(phase(i, x, dim));
+    for (int i = 0; i < dim; ++i)
+      u[i] = std::sin(phase(i, x, dim));
   };
   auto gradient = [dim](const double* x, double* g) {
     for (int i = 0; i < dim; ++i)
-      for (int j = 0; j < dim; ++j) g[i * 3 + j] = kA[i][j] * std::cos(phase(i, x, dim));
+      for (int j = 0; j < dim; ++j)
+        g[i * 3 + j] = kA[i][j] * std::cos(phase(i, x, dim));
   };
   // b = -(mu lap u + (lambda + mu) grad div u)
   Field body = [=](const double* x, double* b) {
     for (int k = 0; k < dim; ++k) {
       double norm2 = 0;
-      for (int j = 0; j < dim; ++j) norm2 += kA[k][j] * kA[k][j];
+      for (int j = 0; j < dim; ++j)
+        norm2 += kA[k][j] * kA[k][j];
       b[k] = mu * norm2 * std::sin(phase(k, x, dim));
       for (int i = 0; i < dim; ++i)
         b[k] += (lambda + mu) * kA[i][i] * kA[i][k] * std::sin(phase(i, x, dim));

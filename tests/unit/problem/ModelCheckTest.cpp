@@ -1,8 +1,9 @@
 // The problem refuses a broken model before anything runs, with one sentence naming the culprit.
-#include <gtest/gtest.h>
-
 #include "ProblemTestSupport.hpp"
+
 #include "core/io/InputError.hpp"
+
+#include <gtest/gtest.h>
 
 namespace contactlab::test {
 namespace {

@@ -1,11 +1,10 @@
 // Element patch test (VERIFICATION.md V7): on a distorted mesh, a linear displacement field
 // imposed on the boundary is reproduced exactly inside, with the constant stress it implies,
 // for every element type.
-#include <gtest/gtest.h>
+#include "ProblemTestSupport.hpp"
 
 #include <cmath>
-
-#include "ProblemTestSupport.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab::test {
 namespace {
@@ -20,7 +19,8 @@ TEST_P(PatchTest, LinearFieldIsExactOnDistortedMesh) {
   distort(*mesh, n, type.rfind("tet", 0) == 0 ? 0.04 : 0.12);
   const double A[3][3] = {{1e-3, 2e-3, -1e-3}, {-3e-3, 2e-3, 1e-3}, {2e-3, 1e-3, 4e-3}};
   Field exact = [&](const double* x, double* u) {
-    for (int i = 0; i < 3; ++i) u[i] = 0.01 * (i + 1) + A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
+    for (int i = 0; i < 3; ++i)
+      u[i] = 0.01 * (i + 1) + A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
   };
   auto comm = Tpetra::getDefaultComm();
   Problem problem(elasticModel(mesh, 200.0, 0.3, exact, {}), comm);
@@ -46,14 +46,18 @@ TEST_P(PatchTest, LinearFieldIsExactOnDistortedMesh) {
   const int d = mesh->dim;
   double eps[3][3] = {};
   for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j) eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
+    for (int j = 0; j < d; ++j)
+      eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
   const double trace = eps[0][0] + eps[1][1] + eps[2][2];
   const double expected[6] = {lambda * trace + 2 * mu * eps[0][0],
                               lambda * trace + 2 * mu * eps[1][1],
                               lambda * trace + 2 * mu * eps[2][2],
-                              2 * mu * eps[0][1], 2 * mu * eps[1][2], 2 * mu * eps[0][2]};
+                              2 * mu * eps[0][1],
+                              2 * mu * eps[1][2],
+                              2 * mu * eps[0][2]};
   const auto s = problem.nodeStress(*u, mesh->numNodes() / 2);
-  for (int k = 0; k < 6; ++k) EXPECT_NEAR(s[k], expected[k], 1e-9) << type << " component " << k;
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(s[k], expected[k], 1e-9) << type << " component " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryElement, PatchTest,

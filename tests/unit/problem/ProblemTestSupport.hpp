@@ -1,22 +1,24 @@
 #pragma once
 // Shared by the problem tests: structured meshes of every element type, a linear-elastic model
 // with the exact solution imposed on the whole boundary, and a MUMPS solve.
-#include <memory>
-#include <random>
-#include <string>
-
-#include <Teuchos_DefaultMpiComm.hpp>
-#include <Tpetra_Core.hpp>
-
 #include "algorithms/StaticSolver.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "core/problem/Problem.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <memory>
+#include <random>
+#include <string>
+
 namespace contactlab::test {
 
-inline bool is3D(const std::string& type) { return info(elementTypeFromName(type)).dim == 3; }
+inline bool is3D(const std::string& type) {
+  return info(elementTypeFromName(type)).dim == 3;
+}
 
 inline std::shared_ptr<Mesh> unitMesh(const std::string& type, int n) {
   if (is3D(type)) {
@@ -36,7 +38,8 @@ inline void distort(Mesh& mesh, int n, double fraction) {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> d(-fraction / n, fraction / n);
   for (std::size_t i = 0; i < mesh.numNodes(); ++i)
-    for (int c = 0; c < mesh.dim; ++c) mesh.coords[3 * i + c] += d(rng);
+    for (int c = 0; c < mesh.dim; ++c)
+      mesh.coords[3 * i + c] += d(rng);
 }
 
 inline std::vector<std::string> boundaryGroups(int dim) {
@@ -47,8 +50,8 @@ inline std::vector<std::string> boundaryGroups(int dim) {
 using Field = std::function<void(const double* x, double* u)>;
 
 // Linear elasticity with u = exact on the whole boundary and body force b.
-inline SolidModel elasticModel(std::shared_ptr<Mesh> mesh, double E, double nu,
-                               const Field& exact, const Field& body) {
+inline SolidModel elasticModel(std::shared_ptr<Mesh> mesh, double E, double nu, const Field& exact,
+                               const Field& body) {
   SolidModel model;
   model.mesh = mesh;
   model.materials["body"] = std::make_shared<LinearElastic>(E, nu);
@@ -56,7 +59,8 @@ inline SolidModel elasticModel(std::shared_ptr<Mesh> mesh, double E, double nu,
     DirichletCondition bc;
     bc.name = g;
     bc.group = g;
-    for (int c = 0; c < mesh->dim; ++c) bc.components.push_back(c);
+    for (int c = 0; c < mesh->dim; ++c)
+      bc.components.push_back(c);
     bc.field = [exact](const double* x, int c, double) {
       double u[3] = {0, 0, 0};
       exact(x, u);

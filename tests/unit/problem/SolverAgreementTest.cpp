@@ -1,11 +1,10 @@
 // Every linear solver gives the same displacements on an elasticity system assembled by the
 // problem (the linear module's own tests cover Laplacians, saddle points and non-symmetric
 // matrices).
-#include <gtest/gtest.h>
+#include "ProblemTestSupport.hpp"
 
 #include <cmath>
-
-#include "ProblemTestSupport.hpp"
+#include <gtest/gtest.h>
 
 namespace contactlab::test {
 namespace {
@@ -33,8 +32,8 @@ TEST(SolverAgreement, ElasticityOnEverySolver) {
   gmres.set("Preconditioner", "ifpack2-ilut");
   gmres.set("Tolerance", 1e-12);
   std::vector<std::pair<std::string, Teuchos::ParameterList>> solvers = {
-      {"mumps", {}}, {"mumps", symmetric}, {"klu2", {}},
-      {"belos", cgSgs}, {"belos", cgMueLu}, {"belos", gmres}};
+      {"mumps", {}},    {"mumps", symmetric}, {"klu2", {}},
+      {"belos", cgSgs}, {"belos", cgMueLu},   {"belos", gmres}};
 
   auto reference = solve(problem, *makeSolver("mumps", comm));
   const double scale = reference->normInf();
