@@ -104,7 +104,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   for (std::size_t d = 0; d < reactions_.size(); ++d)
     reactions_[d].name = model_.dirichlet[d].name;
 
-  collectively(*comm, [&] { locateSurfaceLoads(); });
+  collectively(*comm, [&] { locateSurfaceLoads(partition); });
   buildGraph();
 }
 
@@ -175,7 +175,7 @@ void Problem::checkModel() const {
                        "', which is not in " + where);
 }
 
-void Problem::locateSurfaceLoads() {
+void Problem::locateSurfaceLoads(const std::vector<int>& partition) {
   // A facet is integrated by the rank that assembles an element containing all its nodes, so
   // that every facet node is in that rank's overlap map. The lowest such element decides.
   const Mesh& mesh = *model_.mesh;
@@ -195,7 +195,6 @@ void Problem::locateSurfaceLoads() {
       if (loadedNodes.count(n)) elementsOfNode[n].push_back(static_cast<int>(e));
     }
   }
-  const auto partition = partitionElements(mesh, rawMpiComm(comm_));
   for (int l = 0; l < static_cast<int>(model_.surfaceLoads.size()); ++l) {
     for (const auto* g : mesh.findBoundaries(model_.surfaceLoads[l].group)) {
       const int npc = g->nodesPerCell();
@@ -235,6 +234,12 @@ const Teuchos::RCP<Matrix>& Problem::tangent() const {
   return assembler_->matrix();
 }
 
+const SurfaceLoadKernel& Problem::facetKernel(ElementType type) const {
+  auto& kernel = facetKernels_[type];
+  if (!kernel) kernel = std::make_unique<SurfaceLoadKernel>(type, dim());
+  return *kernel;
+}
+
 Teuchos::RCP<Vector> Problem::createVector() const {
   return Teuchos::rcp(new Vector(dofs_->ownedMap()));
 }
@@ -264,7 +269,7 @@ void Problem::addExternalForces(double t, std::vector<double>& f) const {
     gatherCoordinates(facet.overlapNodes, x);
     fe.assign(facet.overlapNodes.size() * dim, 0.0);
     const double scale = load.function(t);
-    SurfaceLoadKernel kernel(facet.type, dim);
+    const SurfaceLoadKernel& kernel = facetKernel(facet.type);
     if (load.field) {
       kernel.traction(
           x.data(), [&](const double* p, double* tr) { load.field(p, t, tr); }, fe.data());

@@ -15,6 +15,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ namespace contactlab {
 
 class MatrixAssembler;
 class SolidKernel;
+class SurfaceLoadKernel;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
 struct DisplacementErrors {
@@ -79,9 +81,10 @@ class Problem {
   struct LocalElement;
   void checkModel() const;
   void checkElementGeometry() const;
+  const SurfaceLoadKernel& facetKernel(ElementType type) const;
   void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;
   void buildGraph();
-  void locateSurfaceLoads();
+  void locateSurfaceLoads(const std::vector<int>& partition);
   void addExternalForces(double t, std::vector<double>& f) const;
   std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap) const;
   Teuchos::RCP<Vector> overlapCopy(const Vector& u) const;
@@ -108,6 +111,8 @@ class Problem {
     std::vector<int> overlapNodes;
   };
   std::vector<LoadedFacet> facets_;
+  // One surface kernel per facet type, built on first use (they tabulate shape functions).
+  mutable std::map<ElementType, std::unique_ptr<SurfaceLoadKernel>> facetKernels_;
   std::unique_ptr<MatrixAssembler> assembler_;
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<Import> importer_;
