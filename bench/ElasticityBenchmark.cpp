@@ -3,7 +3,7 @@
 // assembly (one full residual + tangent, best of three), MUMPS analysis, factorization and solve,
 // and the peak memory per rank.
 //
-//   bench_elasticity ELEMENT N [--header]     (N divisions per direction)
+//   bench_elasticity ELEMENT N [--header] [--assembly-only]     (N divisions per direction)
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshGenerators.hpp"
@@ -19,6 +19,7 @@
 #include <iostream>
 #include <string>
 #include <sys/resource.h>
+#include <vector>
 
 using namespace contactlab;
 
@@ -35,12 +36,16 @@ int main(int argc, char** argv) {
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   if (argc < 3) {
-    if (root) std::cerr << "usage: bench_elasticity ELEMENT N [--header]\n";
+    if (root) std::cerr << "usage: bench_elasticity ELEMENT N [--header] [--assembly-only]\n";
     return 2;
   }
   const std::string type = argv[1];
   const int n = std::stoi(argv[2]);
-  if (argc > 3 && root)
+  const std::vector<std::string> flags(argv + 3, argv + argc);
+  auto has = [&](const char* flag) {
+    return std::find(flags.begin(), flags.end(), flag) != flags.end();
+  };
+  if (has("--header") && root)
     std::cout << "| element | dofs | nonzeros | ranks | mesh s | setup s | assembly s | analysis s "
                  "| factorization s | solve s | assembly / factorization | peak MB/rank |\n"
                  "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -79,6 +84,13 @@ int main(int argc, char** argv) {
     assemblySeconds = std::min(assemblySeconds, now() - t0);
   }
 
+  if (has("--assembly-only")) {
+    if (root)
+      std::printf("%s %lld dofs, %d ranks: setup %.2f s, assembly %.3f s\n", type.c_str(),
+                  static_cast<long long>(problem.dofs().numGlobalDofs()), comm->getSize(),
+                  setupSeconds, assemblySeconds);
+    return 0;
+  }
   registerLinearSolvers();
   Teuchos::ParameterList params;
   params.set("Mode", "symmetric");
