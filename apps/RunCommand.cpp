@@ -74,6 +74,12 @@ class Progress {
   bool enabled_, tty_;
 };
 
+// Bad input: one sentence on stderr, exit code 2.
+int reportInputError(const std::exception& e, bool root) {
+  if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
+  return 2;
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) {
@@ -105,11 +111,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                   << sm.model.mesh->numElements() << " elements)\n";
     }
   } catch (const InputError& e) {
-    if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
-    return 2;
+    return reportInputError(e, root);
   } catch (const LinearSolverError& e) {
-    if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
-    return 2;
+    return reportInputError(e, root);
   }
   if (options.validateOnly) return 0;
   const double setupSeconds = elapsed();

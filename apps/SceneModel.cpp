@@ -5,10 +5,10 @@
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
+#include "core/problem/CollectiveError.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
 #include <Teuchos_DefaultMpiComm.hpp>
-#include <mpi.h>
 
 #include <cmath>
 #include <limits>
@@ -18,28 +18,14 @@ namespace {
 
 using Teuchos::ParameterList;
 
-// Runs `build` on rank 0; an InputError there is rethrown on every rank.
+// Runs `build` on rank 0 and broadcasts the mesh; an error there is rethrown on every rank.
 std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>()>& build,
-                                      MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
+                                      const Teuchos::RCP<const Comm>& comm) {
   auto mesh = std::make_shared<Mesh>();
-  std::string error;
-  if (rank == 0) {
-    try {
-      mesh = std::shared_ptr<Mesh>(build());
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
-  int length = static_cast<int>(error.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  if (length > 0) {
-    error.resize(length);
-    MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
-    throw InputError(error);
-  }
-  broadcastMesh(*mesh, comm, 0);
+  collectively(*comm, [&] {
+    if (comm->getRank() == 0) mesh = std::shared_ptr<Mesh>(build());
+  });
+  broadcastMesh(*mesh, rawMpiComm(comm), 0);
   return mesh;
 }
 
@@ -94,7 +80,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
           throw InputError(where + ": Mesh: " + e.what());
         }
       },
-      rawMpiComm(comm));
+      comm);
   sm.model.mesh = mesh;
   const int dim = mesh->dim;
 
