@@ -32,7 +32,7 @@ docs: build
 	/usr/bin/python3 tests/app/check_scenes_doc.py $(BUILD_DIR)/apps/contactlab doc/scenes.md --update
 
 format:
-	find core linear algorithms apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find core formulations linear algorithms apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -32,6 +32,9 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   p->set("Relative Tolerance", 1e-8,
          "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate||");
   p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
+  p->set("Max Geometry Iterations", 10,
+         "Contact: geometry updates (pairing, normals) allowed per step after Newton "
+         "converged with the geometry frozen (>= 0)");
   return p;
 }
 
@@ -43,15 +46,19 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.maxIterations = newton.get<int>("Max Iterations");
   o.relativeTolerance = newton.get<double>("Relative Tolerance");
   o.absoluteTolerance = newton.get<double>("Absolute Tolerance");
+  o.maxGeometryIterations = newton.get<int>("Max Geometry Iterations");
   if (o.steps < 1) throw std::invalid_argument("Load Steps/Steps must be >= 1");
   if (!(o.endTime > 0)) throw std::invalid_argument("Load Steps/End Time must be > 0");
   if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");
+  if (o.maxGeometryIterations < 0)
+    throw std::invalid_argument("Newton/Max Geometry Iterations must be >= 0");
   if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0))
     throw std::invalid_argument("Newton tolerances must be >= 0");
   return o;
 }
 
-StaticSolver::StaticSolver(Problem& problem, LinearSolver& solver, StaticSolverOptions options)
+StaticSolver::StaticSolver(NonlinearSystem& problem, LinearSolver& solver,
+                           StaticSolverOptions options)
     : problem_(problem), solver_(solver), options_(options) {}
 
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
@@ -69,6 +76,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     sr.time = options_.endTime * step / options_.steps;
     trial->assign(u);
     problem_.applyDirichlet(sr.time, *trial);
+    problem_.updateGeometry(*trial, sr.time);
     double reference = 0;
     bool converged = false;
     for (int it = 0;; ++it) {
@@ -86,8 +94,19 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
         break;
       }
       if (norm <= std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) {
-        converged = true;
-        break;
+        if (!problem_.updateGeometry(*trial, sr.time)) {
+          converged = true;
+          break;
+        }
+        if (sr.geometryIterations == options_.maxGeometryIterations) {
+          report.failure = "geometry-not-converged";
+          report.message = "the contact geometry still moved after " +
+                           std::to_string(sr.geometryIterations) + " updates at step " +
+                           std::to_string(step) + " (Newton/Max Geometry Iterations)";
+          break;
+        }
+        ++sr.geometryIterations;
+        continue;  // the residual at the new geometry is assembled at the top
       }
       if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
         report.failure = "diverged";
@@ -95,7 +114,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
             "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " + sci(norm);
         break;
       }
-      if (it == options_.maxIterations) {
+      if (sr.iterations == options_.maxIterations) {
         report.failure = "max-iterations";
         report.message =
             "Newton did not converge in " + std::to_string(it) + " iterations at step " +
@@ -105,7 +124,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       }
       t0 = clock::now();
       try {
-        solver_.setMatrix(problem_.tangent(), firstFactorization);
+        const bool patternChanged = problem_.takePatternChanged();
+        solver_.setMatrix(problem_.tangent(), firstFactorization || patternChanged);
         firstFactorization = false;
         residual->scale(-1.0);
         increment->putScalar(0.0);
@@ -122,11 +142,12 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       trial->update(1.0, *increment, 1.0);
     }
     report.iterations += sr.iterations;
+    report.geometryIterations += sr.geometryIterations;
     report.seconds.assembly += sr.seconds.assembly;
     report.seconds.linearSolve += sr.seconds.linearSolve;
     if (!converged) return report;
     u.assign(*trial);
-    problem_.commitState();
+    problem_.commitState(u, sr.time);
     ++report.steps;
     auto t0 = clock::now();
     if (onStep) onStep(sr, u);

@@ -1,9 +1,12 @@
 #pragma once
-// Quasi-static load stepping with a plain Newton loop on R(u, t) = 0: the foundation's driver.
-// Per step: prescribed values at the new time, then Newton until
-//   ||R|| <= max(Absolute Tolerance, Relative Tolerance * ||R at the step's first iterate||).
-// The contact algorithms (fixed point, generalized and partial Newton on NOX) come on top.
-#include "core/problem/Problem.hpp"
+// Quasi-static load stepping with a Newton loop on R(x, t) = 0.
+// Per step: prescribed values at the new time, geometry frozen at the start state, then Newton
+// until ||R|| <= max(Absolute Tolerance, Relative Tolerance * ||R at the step's first iterate||).
+// When Newton has converged the geometry is updated at the solution (a fixed point on the
+// geometry, as in the seed's partial Newton); if it moved, Newton goes on from there. Statuses
+// and friction threshold are Newton variables here (generalized Jacobian of the formulation).
+// The configurable algorithms (fixed point, generalized and partial Newton on NOX) come next.
+#include "core/problem/NonlinearSystem.hpp"
 #include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -19,6 +22,7 @@ struct StaticSolverOptions {
   int maxIterations = 20;
   double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
+  int maxGeometryIterations = 10;
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();
@@ -33,7 +37,8 @@ struct PhaseSeconds {
 struct StepReport {
   int step = 0;  // 1-based
   double time = 0;
-  int iterations = 0;  // Newton iterations (linear solves) of this step
+  int iterations = 0;          // Newton iterations (linear solves) of this step
+  int geometryIterations = 0;  // geometry updates that moved and restarted Newton
   double residual = 0;
   PhaseSeconds seconds;
 };
@@ -41,10 +46,12 @@ struct StepReport {
 struct RunReport {
   bool converged = false;
   std::string failure;  // empty, or a named reason: "diverged", "max-iterations",
-                        // "nan-detected", "linear-solver-failed"
+                        // "nan-detected", "linear-solver-failed",
+                        // "geometry-not-converged"
   std::string message;  // one sentence for the user
   int steps = 0;        // converged steps
   int iterations = 0;   // total Newton iterations
+  int geometryIterations = 0;
   int linearSolves = 0;
   PhaseSeconds seconds;
 };
@@ -55,7 +62,7 @@ class StaticSolver {
   using IterationCallback =
       std::function<void(int step, int steps, int iteration, double residual)>;
 
-  StaticSolver(Problem& problem, LinearSolver& solver, StaticSolverOptions options);
+  StaticSolver(NonlinearSystem& problem, LinearSolver& solver, StaticSolverOptions options);
 
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
   // solution and onStep runs (results are written there). Never throws on a numerical failure:
@@ -63,7 +70,7 @@ class StaticSolver {
   RunReport run(Vector& u, const StepCallback& onStep, const IterationCallback& onIteration = {});
 
  private:
-  Problem& problem_;
+  NonlinearSystem& problem_;
   LinearSolver& solver_;
   const StaticSolverOptions options_;
 };

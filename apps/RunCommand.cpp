@@ -7,11 +7,13 @@
 #include "core/io/JsonWriter.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/Problem.hpp"
+#include "formulations/ContactProblem.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -91,6 +93,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // 1. Read, validate and build everything that can fail on bad input: nothing is written yet.
   SceneModel sm;
   std::unique_ptr<Problem> problem;
+  std::unique_ptr<ContactProblem> contact;
   std::unique_ptr<LinearSolver> solver;
   try {
     SceneFile file = options.scenePath.empty()
@@ -103,6 +106,17 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       const std::string message = e.what();
       if (message.find(sm.scene.path) != std::string::npos) throw;
       throw InputError(sm.scene.path + ": " + message);
+    }
+    if (!sm.contact.empty()) {
+      try {
+        contact = std::make_unique<ContactProblem>(*problem, sm.contact);
+        // Pairs the surfaces in the initial state: an initial penetration deeper than an
+        // element is refused here, before anything runs (same verdict on every rank).
+        auto x0 = contact->createVector();
+        contact->updateGeometry(*x0, 0.0);
+      } catch (const InputError& e) {
+        throw InputError(sm.scene.path + ": Contact: " + e.what());
+      }
     }
     solver = buildLinearSolver(*sm.scene.params, comm);
     if (options.validateOnly) {
@@ -122,9 +136,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       options.outputDirectory.empty() ? sm.outputDirectory : options.outputDirectory;
   const auto& params = *sm.scene.params;
   const int steps = sm.solverOptions.steps;
+  NonlinearSystem& system = contact ? static_cast<NonlinearSystem&>(*contact) : *problem;
+  const long long multipliers = contact ? static_cast<long long>(contact->numMultipliers()) : 0;
   if (root)
     std::cerr << "contactlab: " << sm.scene.name << ": " << problem->dofs().numGlobalDofs()
-              << " dofs on " << comm->getSize() << " rank(s), " << steps << " load step(s)\n";
+              << " dofs"
+              << (multipliers ? " + " + std::to_string(multipliers) + " multipliers" : "") << " on "
+              << comm->getSize() << " rank(s), " << steps << " load step(s)\n";
 
   // 2. Solve; each converged step is written at once.
   MPI_Comm mpiComm = rawMpiComm(comm);
@@ -133,8 +151,25 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                       "contact_points", "stick_points", "slip_points", "cycling_events",
                       "assembly_s", "pairing_s", "contact_s", "linear_solve_s"});
   Progress progress(root);
-  auto u = problem->createVector();
-  StaticSolver driver(*problem, *solver, sm.solverOptions);
+  auto x = system.createVector();
+  StaticSolver driver(system, *solver, sm.solverOptions);
+  // The displacement part of the system's unknowns (the whole vector without contact).
+  auto displacementOf = [&](const Vector& solution) {
+    return contact ? contact->displacement(solution)
+                   : Teuchos::rcp(new Vector(solution, Teuchos::Copy));
+  };
+  CsvWriter contactCsv({"zone", "node", "x", "y", "z", "gap", "pressure", "traction_x",
+                        "traction_y", "traction_z", "slip_x", "slip_y", "slip_z", "status"});
+  auto writeContactCsv = [&] {
+    CsvWriter table(contactCsv.columns());
+    for (const auto& p : contact->results())
+      table.addRow(sm.contact[p.zone].name, static_cast<long long>(p.node + 1), p.x[0], p.x[1],
+                   p.x[2], p.paired ? p.gap : std::numeric_limits<double>::quiet_NaN(), p.pressure,
+                   p.traction[0], p.traction[1], p.traction[2], p.slip[0], p.slip[1], p.slip[2],
+                   static_cast<int>(p.status));
+    table.write(outDir + "/contact.csv");
+  };
+  double lastPairing = 0, lastContact = 0;
   JsonValue probes = JsonValue::object();
   auto recordProbes = [&](const Vector& solution) {
     for (const auto& p : sm.probes) {
@@ -158,26 +193,79 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
               .set("value", value));
     }
   };
-  auto onStep = [&](const StepReport& s, const Vector& solution) {
+  auto onStep = [&](const StepReport& s, const Vector& state) {
+    auto solution = displacementOf(state);
     if (sm.writeVtk) {
       if (!vtk) vtk = std::make_unique<VtkSeriesWriter>(outDir, "result", mpiComm);
-      vtk->writeStep(s.time, problem->outputPiece(solution));
+      MeshPiece piece = problem->outputPiece(*solution);
+      if (contact) contact->addPointData(piece);
+      vtk->writeStep(s.time, piece);
     }
-    stepsCsv.addRow(s.step, s.time, s.iterations, s.iterations, s.residual, 0, 0, 0, 0,
-                    s.seconds.assembly, 0.0, 0.0, s.seconds.linearSolve);
+    ContactResultants cr;
+    double pairing = 0, contactTerms = 0;
+    if (contact) {
+      cr = contact->resultants();
+      pairing = contact->pairingSeconds() - lastPairing;
+      contactTerms = contact->contactSeconds() - lastContact;
+      lastPairing = contact->pairingSeconds();
+      lastContact = contact->contactSeconds();
+      if (root) writeContactCsv();
+    }
+    stepsCsv.addRow(s.step, s.time, s.iterations, s.iterations, s.residual, cr.contact, cr.stick,
+                    cr.slip, 0, s.seconds.assembly - contactTerms, pairing, contactTerms,
+                    s.seconds.linearSolve);
     if (root) stepsCsv.write(outDir + "/steps.csv");
-    recordProbes(solution);
+    recordProbes(*solution);
     progress.step(s, steps, elapsed());
   };
   auto onIteration = [&](int step, int n, int it, double residual) {
     if (root) progress.iteration(step, n, it, residual, elapsed());
   };
-  const RunReport report = driver.run(*u, onStep, onIteration);
+  const RunReport report = driver.run(*x, onStep, onIteration);
+  if (contact && root && report.steps > 0 && !contact->everInContact())
+    std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
+                 "contact surfaces never met (check the geometry, the loads and the "
+                 "search distance)\n";
 
   // 3. Summary, also when the run failed (the last converged step stays written).
   const double localMemory = peakMemoryMB();
   double maxMemory = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &localMemory, &maxMemory);
+  const double pairingSeconds = contact ? contact->pairingSeconds() : 0.0;
+  const double contactSeconds = contact ? contact->contactSeconds() : 0.0;
+  long long contactMultipliers = 0, frictionMultipliers = 0;
+  if (contact)
+    for (const auto& p : contact->results())
+      if (sm.contact[p.zone].law->hasMultipliers()) {
+        ++contactMultipliers;
+        frictionMultipliers += sm.contact[p.zone].friction > 0 ? problem->dim() - 1 : 0;
+      }
+  auto contactFormulations = [&] {
+    if (!contact) return JsonValue();
+    JsonValue zones = JsonValue::object();
+    const auto& section = params.sublist("Contact");
+    for (const auto& zone : sm.contact)
+      zones.set(zone.name, typedSection(section.sublist(zone.name).sublist("Formulation"))
+                               .set("friction", zone.friction));
+    return zones;
+  };
+  auto contactSummary = [&] {
+    if (!contact) return JsonValue();
+    const ContactResultants r = contact->resultants();
+    auto vec = [&](const std::array<double, 3>& v) {
+      return JsonValue::array(std::vector<double>(v.begin(), v.begin() + problem->dim()));
+    };
+    return JsonValue::object()
+        .set("normal_force", r.normalForceMagnitude)
+        .set("normal_force_vector", vec(r.normalForce))
+        .set("tangential_force_vector", vec(r.tangentialForce))
+        .set("max_pressure", r.maxPressure)
+        .set("max_penetration", r.maxPenetration)
+        .set("contact_points_closed", r.contact)
+        .set("stick_points", r.stick)
+        .set("slip_points", r.slip)
+        .set("surfaces_met", contact->everInContact());
+  };
   if (root) {
     JsonValue reactions = JsonValue::object();
     for (const auto& r : problem->reactions())
@@ -192,8 +280,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("message", report.message.empty() ? JsonValue() : JsonValue(report.message))
         .set("dimension", problem->dim())
         .set("mesh", typedSection(params.sublist("Mesh")))
-        .set("formulation", JsonValue())
-        .set("discretization", JsonValue())
+        .set("formulation", contactFormulations())
+        .set("discretization", contact ? JsonValue("node-to-segment") : JsonValue())
         .set("algorithm", JsonValue::object()
                               .set("type", "newton")
                               .set("parameters", toJson(params.sublist("Newton"))))
@@ -202,27 +290,29 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("unknowns",
              JsonValue::object()
                  .set("displacement", static_cast<long long>(problem->dofs().numGlobalDofs()))
-                 .set("contact_multipliers", 0)
-                 .set("friction_multipliers", 0))
+                 .set("contact_multipliers", contactMultipliers)
+                 .set("friction_multipliers", frictionMultipliers))
         .set("nodes", static_cast<long long>(sm.model.mesh->numNodes()))
         .set("elements", static_cast<long long>(sm.model.mesh->numElements()))
-        .set("contact_points", 0)
+        .set("contact_points", contact ? static_cast<long long>(contact->numPoints()) : 0LL)
         .set("ranks", comm->getSize())
         .set("load_steps",
              JsonValue::object().set("requested", steps).set("converged", report.steps))
-        .set("iterations", JsonValue::object().set("newton", report.iterations))
+        .set("iterations", JsonValue::object()
+                               .set("newton", report.iterations)
+                               .set("geometry", report.geometryIterations))
         .set("linear_solves", report.linearSolves)
         .set("cycling", JsonValue::object())
         .set("seconds", JsonValue::object()
                             .set("setup", setupSeconds)
-                            .set("assembly", report.seconds.assembly)
-                            .set("pairing", 0.0)
-                            .set("contact", 0.0)
+                            .set("assembly", report.seconds.assembly - contactSeconds)
+                            .set("pairing", pairingSeconds)
+                            .set("contact", contactSeconds)
                             .set("linear_solve", report.seconds.linearSolve)
                             .set("output", report.seconds.output)
                             .set("total", elapsed()))
         .set("peak_memory_mb", maxMemory)
-        .set("contact", JsonValue())
+        .set("contact", contactSummary())
         .set("reactions", reactions)
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());

@@ -6,6 +6,7 @@
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "core/problem/CollectiveError.hpp"
+#include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -47,6 +48,88 @@ std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
   for (int i = 0; i < dim; ++i)
     out[i] = v[i];
   return out;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names)
+    s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+// Contact/<zone>: checked against the mesh (the same on every rank, so every rank agrees).
+ContactZone contactZone(const ParameterList& z, const std::string& name, const Mesh& mesh,
+                        double endTime, const std::string& where) {
+  const std::string path = where + ": Contact/" + name;
+  ContactZone zone;
+  zone.name = name;
+  zone.slave = z.get<std::string>("Slave");
+  zone.master = z.get<std::string>("Master");
+  auto isBoundary = [&](const std::string& group) { return !mesh.findBoundaries(group).empty(); };
+  const std::string boundaries = joined(mesh.boundaryNames());
+  if (zone.slave.empty())
+    throw InputError(
+        path + "/Slave is empty; give a boundary physical group (one of: " + boundaries + ")");
+  if (!isBoundary(zone.slave))
+    throw InputError(path + "/Slave: '" + zone.slave + "' is not a boundary group of the mesh " +
+                     "(boundary groups: " + boundaries + ")");
+  const bool obstacle = z.isSublist("Obstacle");
+  if (obstacle && !zone.master.empty())
+    throw InputError(path +
+                     ": give either Master (a second body) or Obstacle (a rigid "
+                     "surface), not both");
+  if (!obstacle && zone.master.empty())
+    throw InputError(path + ": give a Master boundary group or an Obstacle");
+  if (!obstacle && !isBoundary(zone.master))
+    throw InputError(path + "/Master: '" + zone.master + "' is not a boundary group of the " +
+                     "mesh (boundary groups: " + boundaries + ")");
+  if (zone.slave == zone.master)
+    throw InputError(path + ": Slave and Master are the same group '" + zone.slave +
+                     "' (self-contact is not supported)");
+  zone.friction = z.get<double>("Friction");
+  if (!(zone.friction >= 0) || !std::isfinite(zone.friction))
+    throw InputError(path + "/Friction must be a finite number >= 0 (got " +
+                     std::to_string(zone.friction) + ")");
+  zone.searchDistance = z.get<double>("Search Distance");
+  if (!(zone.searchDistance >= 0))
+    throw InputError(path + "/Search Distance must be >= 0 (0 = automatic)");
+  if (obstacle) {
+    const ParameterList& o = z.sublist("Obstacle");
+    RigidObstacleSpec spec;
+    const std::string type = o.get<std::string>("Type");
+    spec.shape = type == "plane"    ? RigidObstacleSpec::Shape::Plane
+                 : type == "sphere" ? RigidObstacleSpec::Shape::Sphere
+                                    : RigidObstacleSpec::Shape::Cylinder;
+    spec.side = o.get<std::string>("Side") == "inside" ? RigidObstacleSpec::Side::Inside
+                                                       : RigidObstacleSpec::Side::Outside;
+    const std::string opath = "Contact/" + name + "/Obstacle";
+    spec.point = vector3(o, "Point", where, opath, mesh.dim);
+    spec.direction = vector3(o, type == "cylinder" ? "Axis" : "Normal", where, opath,
+                             type == "cylinder" ? 3 : mesh.dim);
+    spec.radius = o.get<double>("Radius");
+    spec.displacement = vector3(o, "Displacement", where, opath, mesh.dim);
+    spec.function = loadFunction(o, endTime);
+    try {
+      RigidObstacle check(spec, mesh.dim);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path + "/Obstacle: " + e.what());
+    }
+    zone.obstacle = spec;
+  }
+  const ParameterList& f = z.sublist("Formulation");
+  zone.formulation = f.get<std::string>("Type");
+  const ParameterList& params = f.sublist(zone.formulation);
+  try {
+    zone.law = formulationRegistry().get(zone.formulation).build(params);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path + "/Formulation/" + zone.formulation + ": " + e.what());
+  }
+  // With friction the tangential coefficient is used: it must be given.
+  for (const char* key : {"Tangential Penalty", "Tangential Augmentation"})
+    if (zone.friction > 0 && params.isParameter(key) && !(params.get<double>(key) > 0))
+      throw InputError(path + "/Formulation/" + zone.formulation + "/" + key +
+                       " must be > 0 when Friction > 0");
+  return zone;
 }
 
 }  // namespace
@@ -137,6 +220,12 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     s.function = loadFunction(l, endTime);
     sm.model.surfaceLoads.push_back(s);
   }
+
+  // Contact zones.
+  const ParameterList& contact = p.sublist("Contact");
+  for (auto it = contact.begin(); it != contact.end(); ++it)
+    sm.contact.push_back(
+        contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh, endTime, where));
 
   // Output and probes.
   const ParameterList& output = p.sublist("Output");

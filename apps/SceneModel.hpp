@@ -4,6 +4,7 @@
 #include "algorithms/StaticSolver.hpp"
 #include "core/io/SceneFile.hpp"
 #include "core/problem/SolidModel.hpp"
+#include "formulations/ContactZone.hpp"
 #include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -26,6 +27,7 @@ struct Probe {
 struct SceneModel {
   SceneFile scene;  // validated, defaults filled in
   SolidModel model;
+  std::vector<ContactZone> contact;  // empty: no contact (no contact unknowns are built)
   StaticSolverOptions solverOptions;
   std::vector<Probe> probes;
   std::string outputDirectory;

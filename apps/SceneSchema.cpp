@@ -5,6 +5,7 @@
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
+#include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -40,6 +41,12 @@ ParameterList typedSection(const RegistryT& registry, const ParameterList* user,
               "The " + registry.axis() + " (one of: " + registry.joinedNames() + ")",
               choices(registry.names()));
   section.set(type, *registry.get(type).validParameters());
+  // Parameters of other types may stay next to the chosen one (validated, unused), so that a
+  // scene can switch type with a single --set Type=... (studies do).
+  if (user)
+    for (const auto& other : registry.names())
+      if (other != type && user->isSublist(other))
+        section.set(other, *registry.get(other).validParameters());
   return section;
 }
 
@@ -103,6 +110,45 @@ ParameterList probeItem() {
   return p;
 }
 
+ParameterList obstacleItem() {
+  ParameterList p;
+  p.set("Type", "plane",
+        "Rigid analytic master: 'plane', 'sphere' (a circle in 2D) or 'cylinder' (axis z in 2D)",
+        choices({"plane", "sphere", "cylinder"}));
+  p.set("Point", Teuchos::Array<double>(3, 0.0),
+        "plane: a point on it; sphere: its centre; cylinder: a point on its axis");
+  p.set("Normal", Teuchos::Array<double>(3, 0.0), "plane: normal pointing towards the body");
+  p.set("Axis", Teuchos::Array<double>({0.0, 0.0, 1.0}), "cylinder: axis direction");
+  p.set("Radius", 0.0, "sphere, cylinder: radius (> 0)");
+  p.set("Side", "outside",
+        "sphere, cylinder: where the body is, 'outside' (an indenter) or 'inside' (a hole)",
+        choices({"outside", "inside"}));
+  p.set("Displacement", Teuchos::Array<double>(3, 0.0),
+        "Rigid translation of the obstacle at the end of the load");
+  p.set("Function", "ramp", "Time scaling of Displacement: 'ramp' or 'constant'",
+        choices({"ramp", "constant"}));
+  return p;
+}
+
+// A contact zone; `user` (may be null) picks the formulation type and says whether an obstacle
+// is given (its sublist is only valid when present).
+ParameterList contactItem(const ParameterList* user, const std::string& where,
+                          const std::string& path) {
+  ParameterList p;
+  p.set("Slave", "",
+        "Boundary physical group whose nodes are the contact points (prefer the finer mesh)");
+  p.set("Master", "",
+        "Boundary physical group of the other body; leave empty when an Obstacle is given");
+  if (!user || user->isSublist("Obstacle")) p.set("Obstacle", obstacleItem());
+  p.set("Friction", 0.0, "Coulomb coefficient mu >= 0; 0 builds no friction unknowns");
+  p.set("Search Distance", 0.0,
+        "Master points farther than this from a slave point are ignored; 0 = twice the largest "
+        "slave facet");
+  p.set("Formulation", typedSection(formulationRegistry(), userSublist(user, "Formulation"),
+                                    "augmented-lagrangian", where, path + "/Formulation"));
+  return p;
+}
+
 ParameterList outputSection(const ParameterList* user, const std::string& where) {
   ParameterList p("Output");
   p.set("Directory", "",
@@ -120,6 +166,7 @@ void registerAll() {
   registerMeshSources();
   registerMaterials();
   registerLinearSolvers();
+  registerFormulations();
 }
 
 ParameterList sceneSchema(const ParameterList& scene, const std::string& where) {
@@ -139,6 +186,10 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Loads",
             namedSection(userSublist(&scene, "Loads"), "Loads", where,
                          [](const ParameterList&, const std::string&) { return loadItem(); }));
+  valid.set("Contact", namedSection(userSublist(&scene, "Contact"), "Contact", where,
+                                    [&](const ParameterList& user, const std::string& path) {
+                                      return contactItem(&user, where, path);
+                                    }));
   valid.set("Load Steps", *StaticSolverOptions::validLoadSteps());
   valid.set("Newton", *StaticSolverOptions::validNewton());
   valid.set("Linear Solver",
@@ -224,6 +275,10 @@ std::string sceneReference() {
   describeList(out, dirichlet, "");
   out << "\n### Loads/<name>\n\n";
   describeList(out, load, "");
+  out << "\n### Contact/<zone>\n\n";
+  describeList(out, contactItem(nullptr, "", "Contact/<zone>"), "");
+  out << "\n### Contact/<zone>/Obstacle\n\n";
+  describeList(out, obstacleItem(), "");
   out << "\n### Load Steps\n\n";
   describeList(out, *StaticSolverOptions::validLoadSteps(), "");
   out << "\n### Newton\n\n";
@@ -235,6 +290,7 @@ std::string sceneReference() {
   out << "\n## Registries\n\n";
   describeRegistry(out, meshSourceRegistry(), "Mesh");
   describeRegistry(out, materialRegistry(), "Materials/<block>");
+  describeRegistry(out, formulationRegistry(), "Contact/<zone>/Formulation");
   describeRegistry(out, linearSolverRegistry(), "Linear Solver");
   return out.str();
 }

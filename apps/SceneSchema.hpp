@@ -1,8 +1,9 @@
 #pragma once
 // The scene file's schema: which keys a scene may hold, each with a default and a doc string.
-// Typed sections (Mesh, Materials/<block>, Linear Solver) take `Type: name` and a sibling
-// sublist named after the type whose valid parameters come from that axis' registry; named
-// sections (Materials, Dirichlet, Loads, Output/Probes) hold one sublist per user-chosen name.
+// Typed sections (Mesh, Materials/<block>, Contact/<zone>/Formulation, Linear Solver) take `Type:
+// name` and a sibling sublist named after the type whose valid parameters come from that axis'
+// registry; named sections (Materials, Dirichlet, Loads, Contact, Output/Probes) hold one sublist
+// per user-chosen name.
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>

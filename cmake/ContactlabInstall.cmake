@@ -2,8 +2,8 @@
 #   find_package(contactlab REQUIRED)   # with the prefix in CMAKE_PREFIX_PATH
 #   target_link_libraries(app PRIVATE contactlab::core contactlab::linear)
 # Layout under the prefix:
-#   lib/libcontactlab_{core,linear,algorithms}.so, bin/contactlab
-#   include/contactlab/{core,linear,algorithms}/**.hpp   (#include "core/mesh/Mesh.hpp")
+#   lib/libcontactlab_{core,formulations,linear,algorithms}.so, bin/contactlab
+#   include/contactlab/{core,formulations,linear,algorithms}/**.hpp   (#include "core/mesh/Mesh.hpp")
 #   lib/cmake/contactlab/contactlab{Config,ConfigVersion,Targets*}.cmake
 #   lib/cmake/contactlab/ContactlabDependencies.cmake    (shared with the build, see there)
 # tests/downstream checks all of it from ctest.
@@ -13,7 +13,8 @@ set(CONTACTLAB_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/contactlab" CACHE
   "Where contactlabConfig.cmake is installed (relative to the prefix)")
 mark_as_advanced(CONTACTLAB_INSTALL_CMAKEDIR)
 
-set(_contactlab_install_targets contactlab_core contactlab_linear contactlab_algorithms)
+set(_contactlab_install_targets contactlab_core contactlab_formulations contactlab_linear
+  contactlab_algorithms)
 if(TARGET contactlab)
   list(APPEND _contactlab_install_targets contactlab)
 endif()
@@ -64,7 +65,7 @@ install(TARGETS ${_contactlab_install_targets}
 # include/contactlab of the targets. install(DIRECTORY) globs at install time, so headers
 # added later need no re-configure. Headers generated into the build tree (the targets also
 # have ${PROJECT_BINARY_DIR} as include directory) are installed the same way.
-foreach(dir core linear algorithms)
+foreach(dir core formulations linear algorithms)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}/"
     DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/contactlab/${dir}"
     FILES_MATCHING PATTERN "*.hpp")

@@ -10,6 +10,7 @@
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/DofMap.hpp"
 #include "core/problem/LinearAlgebra.hpp"
+#include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SolidModel.hpp"
 
 #include <Teuchos_RCP.hpp>
@@ -39,30 +40,33 @@ struct Reaction {
   std::array<double, 3> force{};  // sum of reactions over its nodes (global)
 };
 
-class Problem {
+class Problem : public NonlinearSystem {
  public:
   // Partitions the mesh, builds the maps and the matrix graph, and checks the model: every
   // block has a material, every group named by a condition exists, no element is inverted.
   // Throws InputError with a sentence naming what is wrong.
   Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm);
-  ~Problem();
+  ~Problem() override;
 
   const SolidModel& model() const { return model_; }
   const DofMap& dofs() const { return *dofs_; }
   int dim() const { return dofs_->dim(); }
 
-  Teuchos::RCP<Vector> createVector() const;
+  Teuchos::RCP<Vector> createVector() const override;
   // The tangent matrix (owned rows), refilled by every assemble() with a tangent.
-  const Teuchos::RCP<Matrix>& tangent() const;
+  const Teuchos::RCP<Matrix>& tangent() const override;
 
   // Sets the prescribed values at time t in u (owned entries).
-  void applyDirichlet(double t, Vector& u) const;
+  void applyDirichlet(double t, Vector& u) const override;
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
-  void assemble(const Vector& u, double t, Vector* residual, bool withTangent);
+  void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
   // Reactions of the Dirichlet conditions at the last assemble() with a residual.
   const std::vector<Reaction>& reactions() const { return reactions_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
   void commitState();
+  void commitState(const Vector& /*u*/, double /*t*/) override { commitState(); }
+  // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
+  const std::vector<char>& constrainedDofs() const { return constrained_; }
 
   // This rank's elements and nodes with displacement, stress (cell average), von_mises,
   // material (block index) and rank, for the result writers.

@@ -36,7 +36,7 @@ if(STEP STREQUAL "install")
     endif()
   endforeach()
   # Every header of the modules is installed.
-  foreach(dir core linear algorithms)
+  foreach(dir core formulations linear algorithms)
     file(GLOB_RECURSE _headers RELATIVE "${CONTACTLAB_SOURCE_DIR}" "${CONTACTLAB_SOURCE_DIR}/${dir}/*.hpp")
     foreach(h IN LISTS _headers)
       if(NOT EXISTS "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/${h}")

@@ -1,0 +1,29 @@
+#pragma once
+// The seed's augmented Lagrangian ("methode continue", DESIGN.md §6), at one point:
+//   augmented pressure     p^ = p - r_n g            (seed: lambda^_n = lambda_n - r_n d_n)
+//   contact status         S_R = 1 if p^ >= 0         (seed: lambda^_n <= 0)
+//   augmented friction     Lambda^ = Lambda + r_t v,  S_f = 1 if ||Lambda^|| < 1 (stick)
+//   R_u  += -S_R p^ dg + S_R mu p^ P_B(Lambda^) . dv   (= -(F_cont + F_frot))
+//   R_p   = -(1/r_n) (p - S_R p^)                       (= F~_cont)
+//   R_Lam = S_R (Lambda - P_B(Lambda^)) + (1 - S_R) Lambda   (= F~_frot)
+// with P_B the projection on the unit ball (stick: Lambda^, slip: Lambda^/||Lambda^||), each
+// term times the point's weight. Separated points (p = 0, g > 0) get p^ < 0, S_R = 0; closed
+// points under compression (g = 0, p > 0) get S_R = 1. The Jacobian is the generalized one:
+// exact on each status piece, the piece chosen by the current statuses.
+#include "formulations/ContactLaw.hpp"
+
+namespace contactlab {
+
+class AugmentedLagrangian : public ContactLaw {
+ public:
+  // rn, rt > 0: augmentation coefficients (pressure per length; inverse length).
+  AugmentedLagrangian(double rn, double rt);
+  std::string name() const override { return "augmented-lagrangian"; }
+  bool hasMultipliers() const override { return true; }
+  void evaluate(const LawInput& in, LawOutput& out) const override;
+
+ private:
+  const double rn_, rt_;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,36 @@
+#pragma once
+// Projection on the ball of radius rho in R^nt (nt <= 2) and its derivative: the return map of
+// Coulomb friction. Inside (||x|| < rho, or x = 0): P = x, D = I. Outside: P = rho x/||x||,
+// D = rho (I - e e^T)/||x|| with e = x/||x||.
+#include <array>
+#include <cmath>
+
+namespace contactlab {
+
+struct BallProjection {
+  std::array<double, 2> P{};
+  std::array<double, 4> D{};  // row major nt x nt
+  std::array<double, 2> e{};  // unit direction of x (zero when x = 0)
+  bool inside = true;
+};
+
+inline BallProjection projectOnBall(const std::array<double, 2>& x, int nt, double rho) {
+  BallProjection b;
+  double norm = 0;
+  for (int k = 0; k < nt; ++k)
+    norm += x[k] * x[k];
+  norm = std::sqrt(norm);
+  if (norm > 0)
+    for (int k = 0; k < nt; ++k)
+      b.e[k] = x[k] / norm;
+  b.inside = norm < rho || norm == 0.0;
+  for (int k = 0; k < nt; ++k) {
+    b.P[k] = b.inside ? x[k] : rho * b.e[k];
+    for (int j = 0; j < nt; ++j)
+      b.D[k * nt + j] =
+          b.inside ? (k == j ? 1.0 : 0.0) : rho / norm * ((k == j ? 1.0 : 0.0) - b.e[k] * b.e[j]);
+  }
+  return b;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,68 @@
+#pragma once
+// Contact law at one contact point: the pointwise part of a formulation (penalty, exact
+// Lagrange multipliers, augmented Lagrangian), independent of how the point was discretized.
+//
+// The discretization (node-to-segment, rigid obstacle) supplies the point's kinematic
+// variables k = (g, v_1 .. v_nt) and their linear operators B on the element dofs:
+//   g   gap along the master normal n, positive when the surfaces are apart;
+//   v   slip increment of the slave point relative to the master since the last converged step,
+//       in the tangent basis (t_1, t_2), nt = dim - 1 components (none when mu = 0).
+// Formulations with multipliers add m = (p, Lambda_1 .. Lambda_nt) at the point:
+//   p       contact pressure (>= 0 in compression),
+//   Lambda  the seed's normalized tangential multiplier, ||Lambda|| <= 1 (slip direction).
+// The law returns the residual coefficients r = (r_k, r_m) and their Jacobian J = dr/d(k, m),
+// all already multiplied by the point's weight w (tributary area). The element residual is
+// R_u = sum_i r_k[i] B_i and R_m = r_m; the tangent is B^T J_kk B, B^T J_km, J_mk B, J_mm.
+//
+// Relation to the seed's notation (DESIGN.md §6): d_n = -g, lambda_n = -p, lambda-hat_n =
+// -p-hat, and the seed's weak forms F = 0 are our residuals with R_u = -(F_cont + F_frot)
+// (R_u = f_int - f_ext + contact), R_p = F~_cont, R_Lambda = F~_frot.
+#include <array>
+#include <string>
+
+namespace contactlab {
+
+constexpr int kMaxLawVariables = 6;  // (g, v1, v2, p, Lambda1, Lambda2)
+
+// Contact status of a point, as written to the results (contact_status).
+enum class ContactStatus { Free = 0, Stick = 1, Slip = 2 };
+
+struct LawInput {
+  double weight = 0.0;  // tributary area w of the point
+  double mu = 0.0;      // friction coefficient
+  int nt = 0;           // tangential components in use (0 when mu == 0)
+  double gap = 0.0;
+  std::array<double, 2> slip{};  // slip increment v
+  double p = 0.0;                // multipliers (ignored by laws without them)
+  std::array<double, 2> Lambda{};
+  // History of laws that carry one (penalty: tangential resistance at the last converged step,
+  // in the current tangent basis).
+  std::array<double, 2> tangentialOld{};
+  // The seam for the algorithms: a status or friction threshold frozen by a fixed-point loop.
+  // frozenStatus < 0 lets the status follow the iterate (Newton); frozenThreshold < 0 lets the
+  // friction threshold mu * pressure follow it.
+  int frozenStatus = -1;
+  double frozenThreshold = -1.0;
+};
+
+struct LawOutput {
+  std::array<double, kMaxLawVariables> r{};
+  std::array<double, kMaxLawVariables * kMaxLawVariables> J{};  // row major, n x n, n = size()
+  ContactStatus status = ContactStatus::Free;
+  double pressure = 0.0;                       // contact pressure transmitted (>= 0)
+  std::array<double, 2> tangentialTraction{};  // on the slave, tangent basis (opposes slip)
+  double threshold = 0.0;                      // friction threshold in use (mu * pressure-like)
+};
+
+class ContactLaw {
+ public:
+  virtual ~ContactLaw() = default;
+  virtual std::string name() const = 0;
+  // Whether the point carries multiplier unknowns (p and, with friction, Lambda).
+  virtual bool hasMultipliers() const = 0;
+  // Number of law variables: kinematic (1 + nt) plus multipliers (1 + nt, if any).
+  int size(int nt) const { return (1 + nt) * (hasMultipliers() ? 2 : 1); }
+  virtual void evaluate(const LawInput& in, LawOutput& out) const = 0;
+};
+
+}  // namespace contactlab

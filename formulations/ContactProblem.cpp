@@ -1,0 +1,715 @@
+#include "formulations/ContactProblem.hpp"
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/QuadratureRule.hpp"
+#include "core/fem/ReferenceElement.hpp"
+#include "core/io/InputError.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace contactlab {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// A tangent basis of the plane normal to n: t1 = rotated n in 2D; in 3D, the coordinate axis
+// least aligned with n made orthogonal to it, and t2 = n x t1 (deterministic, so every rank and
+// every update picks the same basis for the same normal).
+void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
+                  std::array<double, 3>& t2) {
+  if (dim == 2) {
+    t1 = {-n[1], n[0], 0.0};
+    t2 = {0, 0, 0};
+    return;
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(n[i]) < std::abs(n[axis])) axis = i;
+  std::array<double, 3> e{};
+  e[axis] = 1.0;
+  const double en = n[axis];
+  for (int i = 0; i < 3; ++i)
+    t1[i] = e[i] - en * n[i];
+  const double norm = std::sqrt(dot(t1, t1));
+  for (double& v : t1)
+    v /= norm;
+  t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+}
+
+}  // namespace
+
+struct ContactProblem::Point {
+  int zone = 0;
+  std::int64_t node = -1;
+  double weight = 0;
+  GO multiplier = -1;  // first multiplier GID (-1: none)
+  int nt = 0;
+  // Frozen geometry.
+  bool paired = false;
+  int facet = -1;
+  std::vector<std::int64_t> master;  // master facet nodes
+  std::vector<double> N;             // their shape values at the master point
+  std::array<double, 3> normal{}, t1{}, t2{}, obstaclePoint{};  // obstacle: minus translation
+  // History.
+  std::array<double, 3> resistanceOld{}, slipTotal{};
+  // Last evaluation.
+  ContactPointResult result;
+  std::array<double, 3> slipIncrement{};
+  // Element dofs (GIDs), our column LIDs, owned row LIDs (-1) and positions in surface_.
+  std::vector<GO> dofs;
+  std::vector<LO> cols, rows;
+  std::vector<int> surfacePos;
+};
+
+ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
+    : solid_(solid), zones_(std::move(zones)), dim_(solid.dim()) {
+  const Mesh& mesh = *solid_.model().mesh;
+  const DofMap& dofs = solid_.dofs();
+  const int rank = dofs.comm()->getRank();
+  const GO displacementDofs = dofs.numGlobalDofs();
+  ownedDisplacements_ = static_cast<LO>(dofs.ownedMap()->getNodeNumElements());
+
+  std::vector<GO> ownedMultipliers;
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    const ContactZone& zone = zones_[z];
+    if (!zone.law) throw InputError("Contact/" + zone.name + ": no formulation");
+    try {
+      if (zone.obstacle) {
+        obstacles_.push_back(std::make_unique<RigidObstacle>(*zone.obstacle, dim_));
+        masterFacetNodes_.emplace_back();
+        masterFacetType_.push_back(ElementType::Point1);
+      } else {
+        obstacles_.push_back(nullptr);
+        std::vector<std::int64_t> nodes;
+        ElementType type = ElementType::Point1;
+        for (const CellGroup* g : mesh.findBoundaries(zone.master)) {
+          nodes.insert(nodes.end(), g->nodes.begin(), g->nodes.end());
+          type = g->type;
+        }
+        if (nodes.empty()) throw std::invalid_argument("no boundary group '" + zone.master + "'");
+        masterFacetNodes_.push_back(std::move(nodes));
+        masterFacetType_.push_back(type);
+      }
+    } catch (const std::invalid_argument& e) {
+      throw InputError("Contact/" + zone.name + ": " + e.what());
+    }
+    const int nt = zone.friction > 0 ? dim_ - 1 : 0;
+    const int multipliers = zone.law->hasMultipliers() ? 1 + nt : 0;
+    for (std::int64_t node : mesh.boundaryNodes(zone.slave)) {
+      if (dofs.globalNode(node) < 0) continue;
+      Point pt;
+      pt.zone = static_cast<int>(z);
+      pt.node = node;
+      pt.nt = nt;
+      if (multipliers > 0) {
+        pt.multiplier = displacementDofs + numMultipliers_;
+        if (dofs.nodeOwner(node) == rank)
+          for (int k = 0; k < multipliers; ++k)
+            ownedMultipliers.push_back(pt.multiplier + k);
+        numMultipliers_ += multipliers;
+      }
+      points_.push_back(std::move(pt));
+    }
+  }
+
+  std::vector<GO> owned(dofs.ownedMap()->getNodeElementList().begin(),
+                        dofs.ownedMap()->getNodeElementList().end());
+  owned.insert(owned.end(), ownedMultipliers.begin(), ownedMultipliers.end());
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  map_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(owned), 0, dofs.comm()));
+  buildSurfaceMaps();
+  computeWeights();
+  searchDistance_.resize(zones_.size());
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    if (zones_[z].searchDistance > 0) {
+      searchDistance_[z] = zones_[z].searchDistance;
+      continue;
+    }
+    // Automatic: twice the largest slave facet (a slave point moves less than that in a step
+    // of a reasonable load history).
+    double largest = 0;
+    for (const CellGroup* g : mesh.findBoundaries(zones_[z].slave)) {
+      const int n = g->nodesPerCell();
+      for (std::size_t c = 0; c < g->size(); ++c) {
+        std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+        for (int a = 0; a < n; ++a)
+          for (int i = 0; i < 3; ++i) {
+            lo[i] = std::min(lo[i], mesh.coords[3 * g->nodes[c * n + a] + i]);
+            hi[i] = std::max(hi[i], mesh.coords[3 * g->nodes[c * n + a] + i]);
+          }
+        largest =
+            std::max(largest, std::sqrt(std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) +
+                                        std::pow(hi[2] - lo[2], 2)));
+      }
+    }
+    searchDistance_[z] = 2.0 * largest;
+  }
+  signature_.assign(points_.size(), std::numeric_limits<int>::min());
+}
+
+ContactProblem::~ContactProblem() = default;
+
+std::size_t ContactProblem::numPoints() const {
+  return points_.size();
+}
+
+void ContactProblem::buildSurfaceMaps() {
+  const Mesh& mesh = *solid_.model().mesh;
+  const DofMap& dofs = solid_.dofs();
+  std::set<std::int64_t> nodes;
+  for (const Point& pt : points_)
+    nodes.insert(pt.node);
+  for (const auto& facetNodes : masterFacetNodes_)
+    nodes.insert(facetNodes.begin(), facetNodes.end());
+  surfaceIndex_.assign(mesh.numNodes(), -1);
+  std::vector<GO> gids;
+  int k = 0;
+  for (std::int64_t node : nodes) {
+    surfaceIndex_[node] = k++;
+    for (int c = 0; c < dim_; ++c)
+      gids.push_back(dofs.globalNode(node) * dim_ + c);
+  }
+  surfaceDofs_ = gids.size();
+  for (GO m = 0; m < numMultipliers_; ++m)
+    gids.push_back(dofs.numGlobalDofs() + m);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  surfaceMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids), 0, dofs.comm()));
+  surfaceImporter_ = Teuchos::rcp(new Import(map_, surfaceMap_));
+  surface_ = Teuchos::rcp(new Vector(surfaceMap_));
+  surfaceConverged_.assign(surfaceDofs_, 0.0);
+
+  // Dirichlet flags of the surface dofs, from their owners.
+  Vector flags(map_);
+  {
+    auto f = flags.getDataNonConst(0);
+    const auto& constrained = solid_.constrainedDofs();
+    for (LO i = 0; i < ownedDisplacements_; ++i)
+      f[i] = constrained[i] ? 1.0 : 0.0;
+  }
+  Vector surfaceFlags(surfaceMap_);
+  surfaceFlags.doImport(flags, *surfaceImporter_, Tpetra::INSERT);
+  auto sf = surfaceFlags.getData(0);
+  surfaceConstrained_.assign(sf.size(), 0);
+  for (std::size_t i = 0; i < surfaceDofs_; ++i)
+    surfaceConstrained_[i] = sf[i] > 0.5;
+}
+
+// Tributary areas by HRZ lumping: w_a = A * m_aa / sum_b m_bb with m_aa = int N_a^2 dA, which
+// is positive on every facet type (the row sum int N_a dA vanishes at tri6 corners and is
+// negative at quad8 corners) and gives the usual halves on linear segments.
+void ContactProblem::computeWeights() {
+  const Mesh& mesh = *solid_.model().mesh;
+  std::vector<std::map<std::int64_t, double>> weights(zones_.size());
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    for (const CellGroup* g : mesh.findBoundaries(zones_[z].slave)) {
+      const ReferenceElement& ref = ReferenceElement::get(g->type);
+      const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
+      const int n = g->nodesPerCell();
+      std::vector<double> x(3 * n), N(n), dN(n * ref.dim()), diag(n);
+      double normal[3];
+      for (std::size_t c = 0; c < g->size(); ++c) {
+        for (int a = 0; a < n; ++a)
+          for (int i = 0; i < 3; ++i)
+            x[3 * a + i] = mesh.coords[3 * g->nodes[c * n + a] + i];
+        std::fill(diag.begin(), diag.end(), 0.0);
+        double area = 0, sum = 0;
+        for (int q = 0; q < rule.size(); ++q) {
+          const double* xi = &rule.points[q * rule.dim];
+          ref.shape(xi, N.data());
+          ref.shapeDerivatives(xi, dN.data());
+          const double dA = facetGeometry(dim_, n, x.data(), dN.data(), normal) * rule.weights[q];
+          area += dA;
+          for (int a = 0; a < n; ++a)
+            diag[a] += N[a] * N[a] * dA;
+        }
+        for (int a = 0; a < n; ++a)
+          sum += diag[a];
+        for (int a = 0; a < n; ++a)
+          weights[z][g->nodes[c * n + a]] += area * diag[a] / sum;
+      }
+    }
+  }
+  for (Point& pt : points_)
+    pt.weight = weights[pt.zone][pt.node];
+}
+
+Teuchos::RCP<Vector> ContactProblem::createVector() const {
+  return Teuchos::rcp(new Vector(map_));
+}
+
+Teuchos::RCP<Vector> ContactProblem::displacement(const Vector& x) const {
+  auto u = solid_.createVector();
+  auto src = x.getData(0);
+  auto dst = u->getDataNonConst(0);
+  for (LO i = 0; i < ownedDisplacements_; ++i)
+    dst[i] = src[i];
+  return u;
+}
+
+void ContactProblem::applyDirichlet(double t, Vector& x) const {
+  auto u = displacement(x);
+  solid_.applyDirichlet(t, *u);
+  auto src = u->getData(0);
+  auto dst = x.getDataNonConst(0);
+  for (LO i = 0; i < ownedDisplacements_; ++i)
+    dst[i] = src[i];
+}
+
+void ContactProblem::importSurface(const Vector& x) {
+  surface_->doImport(x, *surfaceImporter_, Tpetra::INSERT);
+}
+
+std::array<double, 3> ContactProblem::surfaceDisplacement(std::int64_t node, bool converged) const {
+  const int k = surfaceIndex_[node];
+  std::array<double, 3> u{};
+  if (converged) {
+    for (int c = 0; c < dim_; ++c)
+      u[c] = surfaceConverged_[k * dim_ + c];
+  } else {
+    auto s = surface_->getData(0);
+    for (int c = 0; c < dim_; ++c)
+      u[c] = s[k * dim_ + c];
+  }
+  return u;
+}
+
+std::array<double, 3> ContactProblem::surfacePosition(std::int64_t node) const {
+  const Mesh& mesh = *solid_.model().mesh;
+  auto u = surfaceDisplacement(node, false);
+  for (int i = 0; i < 3; ++i)
+    u[i] += mesh.coords[3 * node + i];
+  return u;
+}
+
+bool ContactProblem::updateGeometry(const Vector& x, double t) {
+  const auto start = std::chrono::steady_clock::now();
+  importSurface(x);
+  bool moved = false, repaired = false;
+  std::vector<std::string> deep;
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    std::unique_ptr<ContactSearch> search;
+    const ElementType type = masterFacetType_[z];
+    const int nn = obstacles_[z] ? 0 : info(type).nodes;
+    if (!obstacles_[z]) {
+      const auto& nodes = masterFacetNodes_[z];
+      std::vector<Facet> facets(nodes.size() / nn);
+      for (std::size_t f = 0; f < facets.size(); ++f) {
+        facets[f].type = type;
+        facets[f].tag = static_cast<std::int64_t>(f);
+        for (int a = 0; a < nn; ++a) {
+          const auto p = surfacePosition(nodes[f * nn + a]);
+          facets[f].coords.insert(facets[f].coords.end(), p.begin(), p.end());
+        }
+      }
+      search = std::make_unique<ContactSearch>(std::move(facets), searchDistance_[z]);
+    }
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      Point& pt = points_[i];
+      if (pt.zone != static_cast<int>(z)) continue;
+      const auto xs = surfacePosition(pt.node);
+      const Point old = pt;
+      double gap = 0, size = searchDistance_[z] / 2;
+      if (obstacles_[z]) {
+        const ObstacleProjection proj = obstacles_[z]->project(xs.data(), t);
+        pt.paired = proj.gap < searchDistance_[z];
+        pt.normal = proj.normal;
+        const auto shift = obstacles_[z]->translation(t);
+        for (int c = 0; c < 3; ++c)
+          pt.obstaclePoint[c] = proj.point[c] - shift[c];
+        gap = proj.gap;
+        signature_[i] = pt.paired ? -2 : -1;
+      } else {
+        const Pairing pairing = search->findClosest(xs.data());
+        pt.paired = pairing.found;
+        if (pt.paired) {
+          pt.facet = static_cast<int>(pairing.facet);
+          pt.master.assign(masterFacetNodes_[z].begin() + pt.facet * nn,
+                           masterFacetNodes_[z].begin() + (pt.facet + 1) * nn);
+          pt.N.resize(nn);
+          ReferenceElement::get(type).shape(pairing.projection.xi, pt.N.data());
+          for (int c = 0; c < 3; ++c)
+            pt.normal[c] = pairing.projection.normal[c];
+          gap = pairing.projection.gap;
+          const auto& fc = search->facets()[pt.facet].coords;
+          std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+          for (int a = 0; a < nn; ++a)
+            for (int c = 0; c < 3; ++c)
+              lo[c] = std::min(lo[c], fc[3 * a + c]), hi[c] = std::max(hi[c], fc[3 * a + c]);
+          size = std::sqrt(std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) +
+                           std::pow(hi[2] - lo[2], 2));
+        }
+        signature_[i] = pt.paired ? pt.facet : -1;
+      }
+      if (!pt.paired) {
+        pt.master.clear();
+        pt.N.clear();
+      }
+      tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+      if (!frozenOnce_ && pt.paired && gap < -size)
+        deep.push_back("node " + std::to_string(pt.node + 1) + " of '" + zones_[z].slave +
+                       "' (zone " + zones_[z].name + ") is " + std::to_string(-gap) +
+                       " inside its master, more than the master facet size " +
+                       std::to_string(size));
+      // Moved: a different master, or a different normal or master point at this state.
+      if (old.paired != pt.paired || old.facet != pt.facet) {
+        moved = repaired = true;
+      } else if (pt.paired) {
+        double change = 0;
+        for (int c = 0; c < 3; ++c)
+          change = std::max(change, std::abs(old.normal[c] - pt.normal[c]));
+        for (std::size_t a = 0; a < pt.N.size(); ++a)
+          change = std::max(change, std::abs(old.N[a] - pt.N[a]));
+        if (obstacles_[z])
+          for (int c = 0; c < 3; ++c)
+            change = std::max(change, std::abs(old.obstaclePoint[c] - pt.obstaclePoint[c]) /
+                                          std::max(size, 1e-300));
+        if (change > 1e-12) moved = true;
+      }
+    }
+  }
+  if (!deep.empty())
+    throw InputError(
+        "initial penetration larger than an element: " + deep.front() +
+        (deep.size() > 1 ? " (and " + std::to_string(deep.size() - 1) + " more)" : std::string()) +
+        ". Check the geometry, the master/slave choice or the obstacle's position "
+        "and normal");
+  frozenOnce_ = true;
+  // Element dofs of each point: slave, master nodes, multipliers.
+  const DofMap& dofs = solid_.dofs();
+  for (Point& pt : points_) {
+    pt.dofs.clear();
+    pt.surfacePos.clear();
+    auto addNode = [&](std::int64_t node) {
+      for (int c = 0; c < dim_; ++c) {
+        pt.dofs.push_back(dofs.globalNode(node) * dim_ + c);
+        pt.surfacePos.push_back(surfaceIndex_[node] * dim_ + c);
+      }
+    };
+    addNode(pt.node);
+    for (std::int64_t m : pt.master)
+      addNode(m);
+    const int multipliers = pt.multiplier < 0 ? 0 : 1 + pt.nt;
+    for (int k = 0; k < multipliers; ++k) {
+      pt.dofs.push_back(pt.multiplier + k);
+      pt.surfacePos.push_back(
+          static_cast<int>(surfaceDofs_ + (pt.multiplier + k - dofs.numGlobalDofs())));
+    }
+  }
+  // Only a new pairing changes the couplings (and the direct solver's symbolic analysis).
+  if (repaired || matrix_.is_null()) buildGraph();
+  pairingSeconds_ += secondsSince(start);
+  return moved;
+}
+
+void ContactProblem::buildGraph() {
+  const auto& K = solid_.tangent();
+  const auto kLocal = K->getLocalMatrixHost();
+  const auto kCols = K->getColMap();
+  const std::size_t owned = map_->getNodeNumElements();
+  std::vector<std::vector<GO>> rows(owned);
+  for (LO r = 0; r < ownedDisplacements_; ++r)
+    for (auto j = kLocal.graph.row_map(r); j < kLocal.graph.row_map(r + 1); ++j)
+      rows[r].push_back(kCols->getGlobalElement(kLocal.graph.entries(j)));
+  for (Point& pt : points_) {
+    pt.rows.assign(pt.dofs.size(), -1);
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
+      const LO row = map_->getLocalElement(pt.dofs[i]);
+      if (row == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+      pt.rows[i] = row;
+      rows[row].insert(rows[row].end(), pt.dofs.begin(), pt.dofs.end());
+    }
+  }
+  std::vector<size_t> lengths(owned);
+  for (std::size_t r = 0; r < owned; ++r) {
+    std::sort(rows[r].begin(), rows[r].end());
+    rows[r].erase(std::unique(rows[r].begin(), rows[r].end()), rows[r].end());
+    lengths[r] = rows[r].size();
+  }
+  auto graph = Teuchos::rcp(new Graph(map_, Teuchos::ArrayView<const size_t>(lengths)));
+  for (std::size_t r = 0; r < owned; ++r)
+    graph->insertGlobalIndices(map_->getGlobalElement(static_cast<LO>(r)),
+                               Teuchos::ArrayView<const GO>(rows[r]));
+  graph->fillComplete(map_, map_);
+  matrix_ = Teuchos::rcp(new Matrix(graph));
+
+  const auto local = matrix_->getLocalMatrixHost();
+  const auto cols = matrix_->getColMap();
+  solidOffsets_.assign(kLocal.graph.entries.extent(0), 0);
+  for (LO r = 0; r < ownedDisplacements_; ++r) {
+    const auto begin = local.graph.entries.data() + local.graph.row_map(r);
+    const auto end = local.graph.entries.data() + local.graph.row_map(r + 1);
+    for (auto j = kLocal.graph.row_map(r); j < kLocal.graph.row_map(r + 1); ++j) {
+      const LO col = cols->getLocalElement(kCols->getGlobalElement(kLocal.graph.entries(j)));
+      const auto it = std::find(begin, end, col);
+      solidOffsets_[j] = static_cast<std::size_t>(local.graph.row_map(r) + (it - begin));
+    }
+  }
+  for (Point& pt : points_) {
+    pt.cols.assign(pt.dofs.size(), -1);
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i)
+      pt.cols[i] = cols->getLocalElement(pt.dofs[i]);
+  }
+  patternChanged_ = true;
+}
+
+bool ContactProblem::takePatternChanged() {
+  const bool changed = patternChanged_;
+  patternChanged_ = false;
+  return changed;
+}
+
+void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::vector<double>& re,
+                                   std::vector<double>& ke) const {
+  const ContactZone& zone = zones_[pt.zone];
+  const ContactLaw& law = *zone.law;
+  const int nt = pt.nt, nk = 1 + nt, n = law.size(nt);
+  const int nodes = 1 + static_cast<int>(pt.master.size());
+  const int nu = nodes * dim_;
+  const int nd = static_cast<int>(pt.dofs.size());
+  auto s = surface_->getData(0);
+
+  // Operators B_i (i = 0: gap, 1..nt: slip components) on the displacement dofs.
+  std::vector<double> B(static_cast<std::size_t>(nk) * nu, 0.0);
+  const std::array<double, 3>* dirs[3] = {&pt.normal, &pt.t1, &pt.t2};
+  LawInput in;
+  in.weight = pt.weight;
+  in.mu = zone.friction;
+  in.nt = nt;
+  const auto xs = surfacePosition(pt.node);
+  std::array<double, 3> rel{}, slip{};  // x_s - x_m, and the slip increment
+  if (pt.paired) {
+    const auto us = surfaceDisplacement(pt.node, false);
+    const auto usc = surfaceDisplacement(pt.node, true);
+    for (int c = 0; c < 3; ++c) {
+      rel[c] = xs[c];
+      slip[c] = us[c] - usc[c];
+    }
+    if (obstacles_[pt.zone]) {
+      const auto now = obstacles_[pt.zone]->translation(t);
+      const auto then = obstacles_[pt.zone]->translation(tConverged_);
+      for (int c = 0; c < 3; ++c) {
+        rel[c] -= pt.obstaclePoint[c] + now[c];
+        slip[c] -= now[c] - then[c];
+      }
+    } else {
+      for (std::size_t a = 0; a < pt.master.size(); ++a) {
+        const auto xm = surfacePosition(pt.master[a]);
+        const auto um = surfaceDisplacement(pt.master[a], false);
+        const auto umc = surfaceDisplacement(pt.master[a], true);
+        for (int c = 0; c < 3; ++c) {
+          rel[c] -= pt.N[a] * xm[c];
+          slip[c] -= pt.N[a] * (um[c] - umc[c]);
+        }
+      }
+    }
+    for (int i = 0; i < nk; ++i) {
+      const auto& d = *dirs[i];
+      for (int c = 0; c < dim_; ++c) {
+        B[i * nu + c] = d[c];
+        for (std::size_t a = 0; a < pt.master.size(); ++a)
+          B[i * nu + (1 + a) * dim_ + c] = -pt.N[a] * d[c];
+      }
+    }
+    in.gap = dot(pt.normal, rel);
+    for (int k = 0; k < nt; ++k)
+      in.slip[k] = dot(*dirs[1 + k], slip);
+  } else {
+    in.gap = searchDistance_[pt.zone];  // apart: no master within reach
+  }
+  if (pt.multiplier >= 0) {
+    const std::size_t m =
+        surfaceDofs_ + static_cast<std::size_t>(pt.multiplier - solid_.dofs().numGlobalDofs());
+    in.p = s[m];
+    for (int k = 0; k < nt; ++k)
+      in.Lambda[k] = s[m + 1 + k];
+  }
+  for (int k = 0; k < nt; ++k)
+    in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
+  LawOutput out;
+  law.evaluate(in, out);
+
+  ContactPointResult& r = pt.result;
+  r.zone = pt.zone;
+  r.node = pt.node;
+  r.x = xs;
+  r.weight = pt.weight;
+  r.paired = pt.paired;
+  r.gap = in.gap;
+  r.pressure = out.pressure;
+  r.normal = pt.normal;
+  r.status = out.status;
+  r.traction = {0, 0, 0};
+  pt.slipIncrement = {0, 0, 0};
+  for (int k = 0; k < nt; ++k)
+    for (int c = 0; c < 3; ++c) {
+      r.traction[c] += out.tangentialTraction[k] * (*dirs[1 + k])[c];
+      pt.slipIncrement[c] += in.slip[k] * (*dirs[1 + k])[c];
+    }
+  for (int c = 0; c < 3; ++c)
+    r.slip[c] = pt.slipTotal[c] + pt.slipIncrement[c];
+
+  // Element residual and tangent on (displacement dofs, multipliers).
+  re.assign(nd, 0.0);
+  for (int d = 0; d < nu; ++d)
+    for (int i = 0; i < nk; ++i)
+      re[d] += out.r[i] * B[i * nu + d];
+  for (int j = nu; j < nd; ++j)
+    re[j] = out.r[nk + (j - nu)];
+  if (!withTangent) return;
+  ke.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+  auto J = [&](int i, int j) { return out.J[i * n + j]; };
+  // Law variable index of element dof column/row j >= nu: nk + (j - nu).
+  for (int a = 0; a < nd; ++a) {
+    for (int b = 0; b < nd; ++b) {
+      double v = 0;
+      if (a < nu && b < nu) {
+        for (int i = 0; i < nk; ++i) {
+          if (B[i * nu + a] == 0.0) continue;
+          for (int j = 0; j < nk; ++j)
+            v += B[i * nu + a] * J(i, j) * B[j * nu + b];
+        }
+      } else if (a < nu) {
+        for (int i = 0; i < nk; ++i)
+          v += B[i * nu + a] * J(i, nk + (b - nu));
+      } else if (b < nu) {
+        for (int j = 0; j < nk; ++j)
+          v += J(nk + (a - nu), j) * B[j * nu + b];
+      } else {
+        v = J(nk + (a - nu), nk + (b - nu));
+      }
+      ke[static_cast<std::size_t>(a) * nd + b] = v;
+    }
+  }
+}
+
+void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool withTangent) {
+  if (matrix_.is_null()) updateGeometry(x, t);
+  auto u = displacement(x);
+  Teuchos::RCP<Vector> ru = residual ? solid_.createVector() : Teuchos::null;
+  solid_.assemble(*u, t, ru.get(), withTangent);
+  const auto start = std::chrono::steady_clock::now();
+  importSurface(x);
+
+  Teuchos::ArrayRCP<double> res;
+  if (residual) {
+    residual->putScalar(0.0);
+    res = residual->getDataNonConst(0);
+    auto src = ru->getData(0);
+    for (LO i = 0; i < ownedDisplacements_; ++i)
+      res[i] = src[i];
+  }
+  double* values = nullptr;
+  if (withTangent) {
+    matrix_->resumeFill();
+    matrix_->setAllToScalar(0.0);
+    const auto local = matrix_->getLocalMatrixHost();
+    values = local.values.data();
+    const auto kValues = solid_.tangent()->getLocalMatrixHost().values;
+    for (std::size_t j = 0; j < solidOffsets_.size(); ++j)
+      values[solidOffsets_[j]] += kValues(j);
+  }
+  std::vector<double> re, ke, row;
+  for (Point& pt : points_) {
+    evaluatePoint(pt, t, withTangent, re, ke);
+    const int nd = static_cast<int>(pt.dofs.size());
+    for (int i = 0; i < nd; ++i) {
+      if (pt.rows[i] < 0) continue;
+      const bool rowConstrained = static_cast<std::size_t>(pt.surfacePos[i]) < surfaceDofs_ &&
+                                  surfaceConstrained_[pt.surfacePos[i]];
+      if (rowConstrained) continue;
+      if (residual) res[pt.rows[i]] += re[i];
+      if (!withTangent) continue;
+      row.assign(ke.begin() + static_cast<std::ptrdiff_t>(i) * nd,
+                 ke.begin() + static_cast<std::ptrdiff_t>(i + 1) * nd);
+      for (int j = 0; j < nd; ++j)
+        if (static_cast<std::size_t>(pt.surfacePos[j]) < surfaceDofs_ &&
+            surfaceConstrained_[pt.surfacePos[j]])
+          row[j] = 0.0;
+      matrix_->sumIntoLocalValues(pt.rows[i], nd, row.data(), pt.cols.data());
+    }
+  }
+  if (withTangent) matrix_->fillComplete(map_, map_);
+  contactSeconds_ += secondsSince(start);
+}
+
+void ContactProblem::commitState(const Vector& x, double t) {
+  importSurface(x);
+  std::vector<double> re, ke;
+  for (Point& pt : points_) {
+    evaluatePoint(pt, t, false, re, ke);
+    for (int c = 0; c < 3; ++c) {
+      pt.resistanceOld[c] = -pt.result.traction[c];
+      pt.slipTotal[c] += pt.slipIncrement[c];
+    }
+    pt.result.slip = pt.slipTotal;
+    pt.slipIncrement = {0, 0, 0};
+    if (pt.result.status != ContactStatus::Free) everInContact_ = true;
+  }
+  auto s = surface_->getData(0);
+  for (std::size_t i = 0; i < surfaceDofs_; ++i)
+    surfaceConverged_[i] = s[i];
+  tConverged_ = t;
+  solid_.commitState();
+}
+
+std::vector<ContactPointResult> ContactProblem::results() const {
+  std::vector<ContactPointResult> out;
+  out.reserve(points_.size());
+  for (const Point& pt : points_)
+    out.push_back(pt.result);
+  return out;
+}
+
+ContactResultants ContactProblem::resultants() const {
+  ContactResultants r;
+  for (const Point& pt : points_) {
+    const ContactPointResult& p = pt.result;
+    if (p.status == ContactStatus::Free) continue;
+    ++r.contact;
+    if (p.status == ContactStatus::Stick && pt.nt > 0) ++r.stick;
+    if (p.status == ContactStatus::Slip) ++r.slip;
+    for (int c = 0; c < 3; ++c) {
+      r.normalForce[c] += p.weight * p.pressure * p.normal[c];
+      r.tangentialForce[c] += p.weight * p.traction[c];
+    }
+    r.normalForceMagnitude += p.weight * p.pressure;
+    r.maxPressure = std::max(r.maxPressure, p.pressure);
+    r.maxPenetration = std::max(r.maxPenetration, -p.gap);
+  }
+  return r;
+}
+
+void ContactProblem::addPointData(MeshPiece& piece) const {
+  const auto& nodes = solid_.dofs().overlapNodes();
+  std::map<std::int64_t, const ContactPointResult*> byNode;
+  for (const Point& pt : points_)
+    byNode.emplace(pt.node, &pt.result);  // first zone wins for a node in two zones
+  FieldData pressure{"contact_pressure", 1, {}}, traction{"tangential_traction", 3, {}},
+      gap{"gap", 1, {}}, slip{"slip", 3, {}}, status{"contact_status", 1, {}};
+  for (std::int64_t node : nodes) {
+    auto it = byNode.find(node);
+    const ContactPointResult* p = it == byNode.end() ? nullptr : it->second;
+    pressure.values.push_back(p ? p->pressure : 0.0);
+    gap.values.push_back(p && p->paired ? p->gap : 0.0);
+    status.values.push_back(p ? static_cast<double>(p->status) : 0.0);
+    for (int c = 0; c < 3; ++c) {
+      traction.values.push_back(p ? p->traction[c] : 0.0);
+      slip.values.push_back(p ? p->slip[c] : 0.0);
+    }
+  }
+  for (auto* f : {&pressure, &traction, &gap, &slip, &status})
+    piece.pointData.push_back(std::move(*f));
+}
+
+}  // namespace contactlab

@@ -1,0 +1,131 @@
+#pragma once
+// The solid problem plus contact zones, as one system R(x, t) = 0 on Tpetra.
+//
+// Unknowns x = (u, m): the solid's displacements, then the multipliers of the formulations that
+// have them (p and, with friction, Lambda at each slave point), one monolithic map whose owned
+// part starts with the solid's owned dofs (same local indices), then the multipliers of the
+// slave points whose node this rank owns.
+//
+// Discretization: node-to-segment collocation (the seed's). Each slave node is a contact point
+// weighted by its tributary area (row-sum-free HRZ lumping of the slave facets in the
+// reference configuration, positive for every facet type); its master is the closest point on
+// the master surface (ContactSearch) or on a rigid obstacle. Between two updateGeometry calls
+// the pairing, the master point's shape values N_a, the normal n and the tangent basis t_k are
+// frozen, so the gap g = n . (x_s - sum_a N_a x_a) and the slip increment
+// v_k = t_k . ((u_s - u_s^conv) - sum_a N_a (u_a - u_a^conv)) are linear in u and the tangent
+// is exact for the frozen geometry (geometric terms are the next issue's "geometry in Newton").
+//
+// Parallel: contact surfaces are small. At every evaluation each rank imports the surface
+// displacements and all multipliers (a replicated vector), evaluates every contact point (the
+// same numbers on every rank, so pairings and statuses agree everywhere) and adds the rows it
+// owns. The tangent's graph is the solid's plus the contact couplings and is rebuilt only when
+// a pairing changes.
+#include "core/contact/ContactSearch.hpp"
+#include "core/contact/RigidObstacle.hpp"
+#include "core/io/MeshPiece.hpp"
+#include "core/problem/NonlinearSystem.hpp"
+#include "core/problem/Problem.hpp"
+#include "formulations/ContactZone.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace contactlab {
+
+// One contact point at the last evaluation (every rank holds all of them).
+struct ContactPointResult {
+  int zone = 0;
+  std::int64_t node = -1;            // slave mesh node
+  std::array<double, 3> x{};         // current position
+  double weight = 0;                 // tributary area
+  bool paired = false;               // a master point was found within the search distance
+  double gap = 0;                    // > 0 apart
+  double pressure = 0;               // >= 0
+  std::array<double, 3> traction{};  // tangential traction on the slave
+  std::array<double, 3> normal{};
+  std::array<double, 3> slip{};  // accumulated slip (sum of converged increments)
+  ContactStatus status = ContactStatus::Free;
+};
+
+struct ContactResultants {
+  std::array<double, 3> normalForce{};      // sum w p n (force on the slave surfaces)
+  std::array<double, 3> tangentialForce{};  // sum w t
+  double normalForceMagnitude = 0;          // sum w p
+  double maxPressure = 0;
+  double maxPenetration = 0;  // max(-gap) over closed points, >= 0
+  int contact = 0, stick = 0, slip = 0;
+};
+
+class ContactProblem : public NonlinearSystem {
+ public:
+  // `solid` must outlive this. Throws InputError for a zone whose groups are missing.
+  ContactProblem(Problem& solid, std::vector<ContactZone> zones);
+  ~ContactProblem() override;
+
+  Teuchos::RCP<Vector> createVector() const override;
+  void applyDirichlet(double t, Vector& x) const override;
+  void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
+  const Teuchos::RCP<Matrix>& tangent() const override { return matrix_; }
+  bool takePatternChanged() override;
+  // Re-pairs every slave point at x, t. The first call also checks the initial penetration
+  // (InputError, on every rank, when a slave point is deeper than its master facet's size).
+  bool updateGeometry(const Vector& x, double t) override;
+  void commitState(const Vector& x, double t) override;
+
+  // The displacement part of x on the solid's owned map.
+  Teuchos::RCP<Vector> displacement(const Vector& x) const;
+  const Problem& solid() const { return solid_; }
+  const std::vector<ContactZone>& zones() const { return zones_; }
+  std::size_t numPoints() const;
+  GO numMultipliers() const { return numMultipliers_; }
+  // Results of the last assemble() (or commit).
+  std::vector<ContactPointResult> results() const;
+  ContactResultants resultants() const;
+  // Whether any point has been closed at a converged step (surfaces that never meet: false).
+  bool everInContact() const { return everInContact_; }
+  // Adds contact_pressure, tangential_traction, gap, slip, contact_status to a piece made by
+  // solid().outputPiece (points in the solid's overlap-node order).
+  void addPointData(MeshPiece& piece) const;
+  // Wall time spent so far in pairing (updateGeometry) and in the contact terms (evaluation and
+  // insertion of the contact points in assemble; the solid's assembly is not counted).
+  double pairingSeconds() const { return pairingSeconds_; }
+  double contactSeconds() const { return contactSeconds_; }
+
+ private:
+  struct Point;
+  void buildSurfaceMaps();
+  void computeWeights();
+  void buildGraph();
+  void importSurface(const Vector& x);
+  void evaluatePoint(Point& pt, double t, bool withTangent, std::vector<double>& re,
+                     std::vector<double>& ke) const;
+  std::array<double, 3> surfacePosition(std::int64_t node) const;
+  std::array<double, 3> surfaceDisplacement(std::int64_t node, bool converged) const;
+
+  Problem& solid_;
+  std::vector<ContactZone> zones_;
+  std::vector<std::unique_ptr<RigidObstacle>> obstacles_;    // per zone (null: two bodies)
+  std::vector<std::vector<std::int64_t>> masterFacetNodes_;  // per zone, flat
+  std::vector<ElementType> masterFacetType_;
+  std::vector<double> searchDistance_;  // per zone, resolved
+  std::vector<Point> points_;
+  int dim_;
+  GO numMultipliers_ = 0;
+  LO ownedDisplacements_ = 0;
+  Teuchos::RCP<const Map> map_, surfaceMap_;
+  Teuchos::RCP<Import> surfaceImporter_;
+  Teuchos::RCP<Vector> surface_;          // replicated surface dofs then all multipliers
+  std::vector<double> surfaceConverged_;  // surface dofs at the last converged step
+  std::vector<char> surfaceConstrained_;
+  std::vector<int> surfaceIndex_;  // mesh node -> surface node index (-1)
+  std::size_t surfaceDofs_ = 0;
+  double tConverged_ = 0;
+  Teuchos::RCP<Matrix> matrix_;
+  std::vector<std::size_t> solidOffsets_;  // solid CRS entry -> our CRS entry
+  std::vector<int> signature_;             // master facet (or -2 obstacle, -1 none) per point
+  bool patternChanged_ = true, frozenOnce_ = false, everInContact_ = false;
+  double pairingSeconds_ = 0, contactSeconds_ = 0;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,27 @@
+#pragma once
+// One contact zone of a scene: a slave surface against a master surface or a rigid obstacle,
+// with a friction coefficient and a formulation (the contact law at each slave point).
+#include "core/contact/RigidObstacle.hpp"
+#include "formulations/ContactLaw.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace contactlab {
+
+struct ContactZone {
+  std::string name;
+  std::string slave;   // boundary physical group (its nodes are the contact points)
+  std::string master;  // boundary physical group; empty when `obstacle` is set
+  std::optional<RigidObstacleSpec> obstacle;
+  double friction = 0.0;  // Coulomb mu >= 0; 0 builds no friction unknowns
+  // Master facets farther than this from a slave point are not candidates; 0 = automatic
+  // (twice the largest slave facet size).
+  double searchDistance = 0.0;
+  std::string formulation;  // registry name, for reports
+  std::shared_ptr<const ContactLaw> law;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,101 @@
+#include "formulations/FormulationRegistry.hpp"
+
+#include "formulations/AugmentedLagrangian.hpp"
+#include "formulations/Lagrange.hpp"
+#include "formulations/Penalty.hpp"
+
+namespace contactlab {
+namespace {
+
+using Teuchos::ParameterList;
+
+// Two positive coefficients; 0 (the default of the required ones) fails validation in the
+// law's constructor with a sentence naming them.
+Teuchos::RCP<const ParameterList> coefficients(const std::string& normal, double normalDefault,
+                                               const std::string& normalDoc,
+                                               const std::string& tangential,
+                                               double tangentialDefault,
+                                               const std::string& tangentialDoc) {
+  auto p = Teuchos::rcp(new ParameterList);
+  p->set(normal, normalDefault, normalDoc);
+  p->set(tangential, tangentialDefault, tangentialDoc);
+  return p;
+}
+
+std::invalid_argument named(const std::invalid_argument& e, const std::string& keys) {
+  return std::invalid_argument(std::string(e.what()) + " (" + keys + ")");
+}
+
+}  // namespace
+
+FormulationRegistry& formulationRegistry() {
+  static FormulationRegistry registry("formulation");
+  return registry;
+}
+
+void registerFormulations() {
+  auto& r = formulationRegistry();
+  r.add({"penalty",
+         "Penalty: p = eps_n <-g>, regularized Coulomb friction; no multipliers, inexact "
+         "(interpenetration p/eps_n)",
+         [] {
+           return coefficients("Normal Penalty", 0.0,
+                               "eps_n > 0 (pressure per length; required). Start near 10-100 E/h",
+                               "Tangential Penalty", 0.0,
+                               "eps_t > 0 (traction per length of elastic slip; required "
+                               "with friction, unused without)");
+         },
+         [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
+           try {
+             const double epsN = p.get<double>("Normal Penalty");
+             double epsT = p.get<double>("Tangential Penalty");
+             if (epsT == 0.0 && epsN > 0) epsT = epsN;  // unused without friction
+             return std::make_unique<Penalty>(epsN, epsT);
+           } catch (const std::invalid_argument& e) {
+             throw named(e, "Normal Penalty, Tangential Penalty");
+           }
+         }});
+  r.add({"lagrange",
+         "Exact Lagrange multipliers (pressure and normalized friction direction per slave "
+         "point) with a primal-dual active set for contact and stick/slip",
+         [] {
+           return coefficients(
+               "Normal Complementarity Constant", 1.0,
+               "c_n > 0: weighs the gap against the pressure when choosing the active set "
+               "(p - c_n g >= 0); does not change the solution. E/h is a good scale",
+               "Tangential Complementarity Constant", 1.0,
+               "c_t > 0 (inverse length): same role for stick/slip (||Lambda + c_t v|| < 1)");
+         },
+         [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
+           try {
+             return std::make_unique<Lagrange>(
+                 p.get<double>("Normal Complementarity Constant"),
+                 p.get<double>("Tangential Complementarity Constant"));
+           } catch (const std::invalid_argument& e) {
+             throw named(e, "Normal Complementarity Constant, Tangential Complementarity Constant");
+           }
+         }});
+  r.add({"augmented-lagrangian",
+         "The seed's augmented Lagrangian: multipliers p and Lambda, augmented p^ = p - r_n g "
+         "and Lambda^ = Lambda + r_t v, generalized Newton on the statuses",
+         [] {
+           return coefficients(
+               "Normal Augmentation", 0.0,
+               "r_n > 0 (pressure per length; required). Start near E/h", "Tangential Augmentation",
+               0.0,
+               "r_t > 0 (inverse length; required with friction, unused without). Start near "
+               "1/h");
+         },
+         [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
+           try {
+             const double rn = p.get<double>("Normal Augmentation");
+             double rt = p.get<double>("Tangential Augmentation");
+             if (rt == 0.0 && rn > 0) rt = 1.0;  // unused without friction
+             return std::make_unique<AugmentedLagrangian>(rn, rt);
+           } catch (const std::invalid_argument& e) {
+             throw named(e, "Normal Augmentation, Tangential Augmentation");
+           }
+         }});
+}
+
+}  // namespace contactlab

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Runs a contact scene with the contactlab command and compares its contact results with a
+reference nobody on this project wrote (../shared/VERIFICATION.md).
+
+usage: check_contact.py CONTACTLAB SCENE OUTDIR RANKS CASE TOL [--set key=value ...]
+CASE:
+  hertz-2d   V1: pressure at the contact nodes against Hertz's profile for the computed line
+             load P (a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a)); TOL bounds max|p - p_H| / p0 over
+             the nodes with |x| <= 0.9 a; the edge nodes, where p_H has an infinite slope, are
+             reported (and bounded by 3 TOL). Needs at least 10 nodes in the contact width.
+  hertz-3d   V2: the same with a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), r = sqrt(x^2 + y^2).
+  patch      V3: uniform pressure PRESSURE on the interface (--pressure); TOL bounds the max
+             relative deviation over the closed points.
+  holds      V5 below the threshold: the run converges, the floor carries the applied
+             tangential load (--tangential, TOL relative) and some point sticks (an elastic
+             block redistributes its traction: most points may end at the threshold).
+  no-equilibrium  V5 above the threshold under load control: no static equilibrium exists, so
+             the run must stop with a named reason (exit code 1, failure not null) and keep
+             its last converged step.
+Prints one line "RESULT case h error" for the documentation tables."""
+import argparse, csv, json, math, os, shutil, subprocess, sys
+
+ap = argparse.ArgumentParser()
+ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
+ap.add_argument("ranks", type=int); ap.add_argument("case"); ap.add_argument("tol", type=float)
+ap.add_argument("--set", action="append", default=[])
+ap.add_argument("--E", type=float, default=1.0); ap.add_argument("--nu", type=float, default=0.3)
+ap.add_argument("--radius", type=float, default=1.0)
+ap.add_argument("--pressure", type=float, default=0.0)
+ap.add_argument("--tangential", type=float, default=0.0)
+ap.add_argument("--metric", choices=["max", "rms"], default="max",
+                help="Hertz: bound the max or the root mean square of the interior error")
+args = ap.parse_args()
+
+shutil.rmtree(args.out, ignore_errors=True)
+cmd = [args.exe, "run", args.scene, "--out", args.out]
+for s in args.set:
+    cmd += ["--set", s]
+if args.ranks > 1:
+    cmd = ["mpirun", "-np", str(args.ranks), "--oversubscribe"] + cmd
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=900)
+print(" ".join(cmd)); print(run.stdout, run.stderr)
+summary = json.load(open(os.path.join(args.out, "summary.json")))
+
+if args.case == "no-equilibrium":
+    assert run.returncode == 1, f"exit code {run.returncode}: expected a named failure"
+    assert summary["converged"] is False and summary["failure"], summary["failure"]
+    print("RESULT no-equilibrium failure", summary["failure"])
+    sys.exit(0)
+
+assert run.returncode == 0, f"exit code {run.returncode}"
+assert summary["converged"] is True
+rows = list(csv.DictReader(open(os.path.join(args.out, "contact.csv"))))
+closed = [r for r in rows if int(r["status"]) != 0]
+assert closed, "no contact point closed: contact switched off?"
+contact = summary["contact"]
+
+if args.case in ("hertz-2d", "hertz-3d"):
+    P = contact["normal_force"]
+    Estar = args.E / (1 - args.nu ** 2)
+    if args.case == "hertz-2d":
+        a = math.sqrt(4 * P * args.radius / (math.pi * Estar))
+        p0 = 2 * P / (math.pi * a)
+        radius = lambda r: abs(float(r["x"]))
+    else:
+        a = (3 * P * args.radius / (4 * Estar)) ** (1 / 3)
+        p0 = 3 * P / (2 * math.pi * a * a)
+        radius = lambda r: math.hypot(float(r["x"]), float(r["y"]))
+    inside = [r for r in rows if radius(r) < a]
+    assert len(inside) >= 10, f"only {len(inside)} nodes in the contact width 2a = {2 * a}"
+    err = edge = sq = 0.0
+    n = 0
+    for r in rows:
+        x = radius(r)
+        ph = p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
+        e = abs(float(r["pressure"]) - ph) / p0
+        if abs(x) <= 0.9 * a:
+            err = max(err, e)
+            sq += e * e
+            n += 1
+        else:
+            edge = max(edge, e)
+    # Mesh size: the area per contact node inside the contact zone (2D: the width per node).
+    area = 2 * a if args.case == "hertz-2d" else math.pi * a * a
+    h = area / len(inside) if args.case == "hertz-2d" else math.sqrt(area / len(inside))
+    rms = math.sqrt(sq / max(n, 1))
+    print(f"P = {P:.6g}, a = {a:.6g}, p0 = {p0:.6g}, nodes in the contact zone: {len(inside)}, "
+          f"|p - p_H| / p0: max {err:.4g}, rms {rms:.4g} (|x| <= 0.9a), max {edge:.4g} (edge), "
+          f"max penetration {contact['max_penetration']:.3g}")
+    print(f"RESULT {args.case} h={h:.4g} a/h={a / h:.1f} max={err:.4g} rms={rms:.4g} "
+          f"edge={edge:.4g} penetration={contact['max_penetration']:.3g} "
+          f"newton={summary['iterations']['newton']}")
+    measured = err if args.metric == "max" else rms
+    assert measured <= args.tol, f"pressure error ({args.metric}) {measured} > {args.tol}"
+    assert edge <= 3 * max(args.tol, err), f"edge pressure error {edge} > {3 * max(args.tol, err)}"
+elif args.case == "patch":
+    err = max(abs(float(r["pressure"]) - args.pressure) / args.pressure for r in closed)
+    print(f"max relative pressure deviation {err:.4g} over {len(closed)} closed points")
+    print(f"RESULT patch - {err:.6g}")
+    assert err <= args.tol, f"patch test deviation {err} > {args.tol}"
+elif args.case == "holds":
+    sticking = [r for r in closed if int(r["status"]) == 1]
+    assert sticking, "no point sticks: the block slides"
+    T = abs(contact["tangential_force_vector"][0])
+    N = contact["normal_force"]
+    print(f"N = {N:.6g}, T = {T:.6g}, T/N = {T / N:.6g}, {len(sticking)} of {len(closed)} stick")
+    print(f"RESULT holds {abs(T - args.tangential) / args.tangential:.6g}")
+    assert abs(T - args.tangential) <= args.tol * args.tangential, (T, args.tangential)
+else:
+    sys.exit(f"unknown case {args.case}")
