@@ -30,11 +30,15 @@ std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>(
   return mesh;
 }
 
-LoadFunction loadFunction(const ParameterList& p, double endTime) {
+LoadFunction loadFunction(const ParameterList& p, double endTime, const std::string& where,
+                          const std::string& path) {
   LoadFunction f;
   f.kind = p.get<std::string>("Function") == "constant" ? LoadFunction::Kind::Constant
                                                         : LoadFunction::Kind::Ramp;
   f.endTime = endTime;
+  f.startTime = p.get<double>("Start Time");
+  if (!(f.startTime >= 0 && f.startTime < endTime))
+    throw InputError(where + ": " + path + "/Start Time must be in [0, End Time)");
   return f;
 }
 
@@ -108,7 +112,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
                              type == "cylinder" ? 3 : mesh.dim);
     spec.radius = o.get<double>("Radius");
     spec.displacement = vector3(o, "Displacement", where, opath, mesh.dim);
-    spec.function = loadFunction(o, endTime);
+    spec.function = loadFunction(o, endTime, where, opath);
     try {
       RigidObstacle check(spec, mesh.dim);
     } catch (const std::invalid_argument& e) {
@@ -190,7 +194,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     for (char c : d.get<std::string>("Components"))
       if (c - 'x' < dim) bc.components.push_back(c - 'x');
     bc.value = d.get<double>("Value");
-    bc.function = loadFunction(d, endTime);
+    bc.function = loadFunction(d, endTime, where, "Dirichlet/" + bc.name);
     if (bc.group.empty()) throw InputError(where + ": Dirichlet/" + bc.name + "/Group is empty");
     sm.model.dirichlet.push_back(bc);
   }
@@ -206,7 +210,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       b.name = name;
       b.block = l.get<std::string>("Block");
       b.value = vector3(l, "Vector", where, path, dim);
-      b.function = loadFunction(l, endTime);
+      b.function = loadFunction(l, endTime, where, path);
       sm.model.bodyForces.push_back(b);
       continue;
     }
@@ -217,7 +221,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     s.kind = type == "pressure" ? SurfaceLoad::Kind::Pressure : SurfaceLoad::Kind::Traction;
     s.pressure = l.get<double>("Value");
     s.traction = vector3(l, "Vector", where, path, dim);
-    s.function = loadFunction(l, endTime);
+    s.function = loadFunction(l, endTime, where, path);
     sm.model.surfaceLoads.push_back(s);
   }
 

@@ -78,8 +78,10 @@ ParameterList dirichletItem() {
         choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
   p.set("Value", 0.0, "Prescribed displacement at the end of the load");
   p.set("Function", "ramp",
-        "Time scaling: 'ramp' = Value * t / End Time, 'constant' = Value at every step",
+        "Time scaling: 'ramp' = Value * (t - Start Time) / (End Time - Start Time) after Start "
+        "Time (0 before), 'constant' = Value at every step",
         choices({"ramp", "constant"}));
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
   return p;
 }
 
@@ -96,6 +98,7 @@ ParameterList loadItem() {
         "Force per unit area (traction) or volume (body-force) at the end of the load");
   p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",
         choices({"ramp", "constant"}));
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
   return p;
 }
 
@@ -127,6 +130,7 @@ ParameterList obstacleItem() {
         "Rigid translation of the obstacle at the end of the load");
   p.set("Function", "ramp", "Time scaling of Displacement: 'ramp' or 'constant'",
         choices({"ramp", "constant"}));
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
   return p;
 }
 

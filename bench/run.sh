@@ -27,4 +27,19 @@ block = f"{start}\nMeasured {datetime.date.today()} by `bench/run.sh`:\n\n{table
 text = re.sub(re.escape(start) + ".*?" + re.escape(end), block, text, flags=re.S)
 open(doc, "w").write(text)
 PY
+# 3D Hertz with contact, every formulation (~100 000 dofs; --large: finer).
+hertz=$(mktemp)
+size=0.008
+if [[ "${1:-}" == "--large" ]]; then size=0.005; fi
+"$BUILD/bench/bench_hertz" tet4 $size --header | tee "$hertz"
+python3 - "$hertz" <<'PY'
+import re, sys, datetime
+table = open(sys.argv[1]).read()
+doc = "doc/performance.md"
+text = open(doc).read()
+start, end = "<!-- bench:hertz:start -->", "<!-- bench:hertz:end -->"
+block = f"{start}\nMeasured {datetime.date.today()} by `bench/run.sh`:\n\n{table}{end}"
+text = re.sub(re.escape(start) + ".*?" + re.escape(end), block, text, flags=re.S)
+open(doc, "w").write(text)
+PY
 echo "bench: doc/performance.md updated"

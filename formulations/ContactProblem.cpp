@@ -63,6 +63,10 @@ struct ContactProblem::Point {
   std::array<double, 3> normal{}, t1{}, t2{}, obstaclePoint{};  // obstacle: minus translation
   // History.
   std::array<double, 3> resistanceOld{}, slipTotal{};
+  // Frozen by an algorithm (-1: follows the iterate).
+  int frozenStatus = -1;
+  double frozenThreshold = -1.0;
+  double threshold = 0.0;  // of the last evaluation
   // Last evaluation.
   ContactPointResult result;
   std::array<double, 3> slipIncrement{};
@@ -162,6 +166,16 @@ ContactProblem::~ContactProblem() = default;
 
 std::size_t ContactProblem::numPoints() const {
   return points_.size();
+}
+
+void ContactProblem::freezeStatuses(bool frozen) {
+  for (Point& pt : points_)
+    pt.frozenStatus = frozen ? static_cast<int>(pt.result.status) : -1;
+}
+
+void ContactProblem::freezeThresholds(bool frozen) {
+  for (Point& pt : points_)
+    pt.frozenThreshold = frozen ? pt.threshold : -1.0;
 }
 
 void ContactProblem::buildSurfaceMaps() {
@@ -359,8 +373,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
       if (!frozenOnce_ && pt.paired && gap < -size)
         deep.push_back("node " + std::to_string(pt.node + 1) + " of '" + zones_[z].slave +
                        "' (zone " + zones_[z].name + ") is " + std::to_string(-gap) +
-                       " inside its master, more than the master facet size " +
-                       std::to_string(size));
+                       " inside its master, more than the facet size " + std::to_string(size));
       // Moved: a different master, or a different normal or master point at this state.
       if (old.paired != pt.paired || old.facet != pt.facet) {
         moved = repaired = true;
@@ -536,8 +549,11 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   }
   for (int k = 0; k < nt; ++k)
     in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
+  in.frozenStatus = pt.frozenStatus;
+  in.frozenThreshold = pt.frozenThreshold;
   LawOutput out;
   law.evaluate(in, out);
+  pt.threshold = out.threshold;
 
   ContactPointResult& r = pt.result;
   r.zone = pt.zone;

@@ -73,6 +73,12 @@ class ContactProblem : public NonlinearSystem {
   bool updateGeometry(const Vector& x, double t) override;
   void commitState(const Vector& x, double t) override;
 
+  // The seam for the algorithms (fixed points on statuses and friction threshold): freeze the
+  // statuses / thresholds of the last evaluation at every point, so that the laws use them
+  // instead of the iterate's, until released.
+  void freezeStatuses(bool frozen);
+  void freezeThresholds(bool frozen);
+
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;
   const Problem& solid() const { return solid_; }

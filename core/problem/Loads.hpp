@@ -9,13 +9,17 @@
 
 namespace contactlab {
 
-// Scale factor of a load at time t: `ramp` grows linearly from 0 at t = 0 to 1 at t = endTime;
-// `constant` is 1 at every time.
+// Scale factor of a load at time t: `ramp` is 0 until startTime, then grows linearly to 1 at
+// t = endTime (sequenced loading: press first, then shift); `constant` is 1 at every time.
 struct LoadFunction {
   enum class Kind { Ramp, Constant };
   Kind kind = Kind::Ramp;
   double endTime = 1.0;
-  double operator()(double t) const { return kind == Kind::Constant ? 1.0 : t / endTime; }
+  double startTime = 0.0;
+  double operator()(double t) const {
+    if (kind == Kind::Constant) return 1.0;
+    return t <= startTime ? 0.0 : (t - startTime) / (endTime - startTime);
+  }
 };
 
 struct DirichletCondition {

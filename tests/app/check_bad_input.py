@@ -51,6 +51,23 @@ $Elements
 $EndElements
 """
 
+CONTACT = GOOD.replace("""  Dirichlet:
+    fix: {Group: bottom, Components: xy}
+""", """  Dirichlet:
+    fix: {Group: top, Components: xy}
+""").replace("    p: {Type: pressure, Group: top, Value: 1.0}\n", "    g: {Type: body-force, Vector: [0, -1]}\n") + """  Contact:
+    floor:
+      Slave: bottom
+      Obstacle: {Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}
+      Formulation:
+        Type: augmented-lagrangian
+        augmented-lagrangian: {Normal Augmentation: 100.0}
+"""
+
+def contact_with(old, new):
+    assert old in CONTACT, old
+    return CONTACT.replace(old, new)
+
 def scene_with(old, new):
     assert old in GOOD, old
     return GOOD.replace(old, new)
@@ -83,6 +100,36 @@ cases = [
          "    p: {Type: pressure, Group: top, Value: 1.0}\n", "    g: {Type: body-force, Vector: [0, -1]}\n"),
      [], ["inverted", "element 1 (gmsh tag 4)", "block 'body'", "inverted.msh"]),
     ("bad --set", GOOD, ["--set", "Mesh/rectangle/nx"], ["--set", "key=value"]),
+    ("contact: unknown slave group", contact_with("Slave: bottom", "Slave: botom"), [],
+     ["Contact/floor/Slave", "'botom'", "bottom, right, top, left"]),
+    ("contact: slave is a volume block", contact_with("Slave: bottom", "Slave: body"), [],
+     ["Contact/floor/Slave", "'body' is not a boundary group"]),
+    ("contact: master and obstacle", contact_with("Slave: bottom", "Slave: bottom\n      Master: top"),
+     [], ["Contact/floor", "either Master", "not both"]),
+    ("contact: neither master nor obstacle",
+     contact_with("      Obstacle: {Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}\n", ""), [],
+     ["Contact/floor", "Master boundary group or an Obstacle"]),
+    ("contact: slave == master",
+     contact_with("      Obstacle: {Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}\n",
+                  "      Master: bottom\n"), [], ["Contact/floor", "the same group 'bottom'"]),
+    ("contact: negative friction", contact_with("Slave: bottom", "Slave: bottom\n      Friction: -0.1"),
+     [], ["Contact/floor/Friction", ">= 0"]),
+    ("contact: missing augmentation", contact_with("{Normal Augmentation: 100.0}", "{}"), [],
+     ["Contact/floor/Formulation/augmented-lagrangian", "r_n", "Normal Augmentation"]),
+    ("contact: friction without tangential coefficient",
+     contact_with("Slave: bottom", "Slave: bottom\n      Friction: 0.3"), [],
+     ["Tangential Augmentation", "Friction > 0"]),
+    ("contact: unknown formulation", contact_with("Type: augmented-lagrangian", "Type: mortar-magic"),
+     [], ["'mortar-magic'", "Contact/floor/Formulation/Type", "penalty", "lagrange"]),
+    ("contact: misspelt key", contact_with("Slave: bottom", "Slave: bottom\n      Frction: 0.3"), [],
+     ["unknown key 'Frction'", "Contact/floor", "Friction"]),
+    ("contact: sphere of radius 0",
+     contact_with("{Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}",
+                  "{Type: sphere, Point: [0.0, -1.0], Radius: 0.0}"), [],
+     ["Contact/floor/Obstacle", "Radius must be > 0"]),
+    ("contact: initial penetration deeper than an element",
+     contact_with("Point: [0.0, 0.0]", "Point: [0.0, 0.9]"), [],
+     ["initial penetration larger than an element", "'bottom'", "zone floor"]),
 ]
 
 open(os.path.join(work, "inverted.msh"), "w").write(INVERTED_MSH)

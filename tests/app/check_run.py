@@ -44,6 +44,14 @@ for name in ["displacement"]:
     assert grid.GetPointData().GetArray(name) is not None, name
 for name in ["stress", "von_mises", "material", "rank"]:
     assert grid.GetCellData().GetArray(name) is not None, name
+if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN.md §5)
+    for name in ["contact_pressure", "tangential_traction", "gap", "slip", "contact_status"]:
+        assert grid.GetPointData().GetArray(name) is not None, name
+    points = list(csv.DictReader(open(os.path.join(out, "contact.csv"))))
+    assert len(points) == summary["contact_points"], (len(points), summary["contact_points"])
+    status = grid.GetPointData().GetArray("contact_status")
+    closed_vtk = sum(1 for i in range(status.GetNumberOfTuples()) if status.GetValue(i) > 0)
+    assert closed_vtk >= summary["contact"]["contact_points_closed"] > 0, closed_vtk
 rank_array = grid.GetCellData().GetArray("rank")
 ranks_seen = {int(rank_array.GetValue(i)) for i in range(rank_array.GetNumberOfTuples())}
 assert ranks_seen == set(range(ranks)), ranks_seen

@@ -9,6 +9,11 @@ CASE:
              the nodes with |x| <= 0.9 a; the edge nodes, where p_H has an infinite slope, are
              reported (and bounded by 3 TOL). Needs at least 10 nodes in the contact width.
   hertz-3d   V2: the same with a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), r = sqrt(x^2 + y^2).
+  cattaneo-mindlin  V4 (2D): stick-zone half-width c against a sqrt(1 - Q/(mu P)) within TOL
+             node spacings; the shear traction against Cattaneo-Mindlin's q(x) is reported
+             (max |t - q| / (mu p0) over |x| <= 0.9 a), not bounded: on a finite disc pressed on
+             a rigid plane, friction locks part of the Poisson expansion and the profile is
+             not symmetric (doc/verification.md). Needs --mu.
   patch      V3: uniform pressure PRESSURE on the interface (--pressure); TOL bounds the max
              relative deviation over the closed points.
   holds      V5 below the threshold: the run converges, the floor carries the applied
@@ -28,6 +33,7 @@ ap.add_argument("--E", type=float, default=1.0); ap.add_argument("--nu", type=fl
 ap.add_argument("--radius", type=float, default=1.0)
 ap.add_argument("--pressure", type=float, default=0.0)
 ap.add_argument("--tangential", type=float, default=0.0)
+ap.add_argument("--mu", type=float, default=0.0)
 ap.add_argument("--metric", choices=["max", "rms"], default="max",
                 help="Hertz: bound the max or the root mean square of the interior error")
 args = ap.parse_args()
@@ -94,6 +100,36 @@ if args.case in ("hertz-2d", "hertz-3d"):
     measured = err if args.metric == "max" else rms
     assert measured <= args.tol, f"pressure error ({args.metric}) {measured} > {args.tol}"
     assert edge <= 3 * max(args.tol, err), f"edge pressure error {edge} > {3 * max(args.tol, err)}"
+elif args.case == "cattaneo-mindlin":
+    P = contact["normal_force"]
+    Q = abs(contact["tangential_force_vector"][0])
+    Estar = args.E / (1 - args.nu ** 2)
+    a = math.sqrt(4 * P * args.radius / (math.pi * Estar))
+    p0 = 2 * P / (math.pi * a)
+    ratio = Q / (args.mu * P)
+    assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
+    c = a * math.sqrt(1 - ratio)
+    xs = sorted(float(r["x"]) for r in closed)
+    h = sorted(b - a_ for a_, b in zip(xs, xs[1:]))[len(xs) // 2]
+    stick = [float(r["x"]) for r in closed if int(r["status"]) == 1]
+    slip = [float(r["x"]) for r in closed if int(r["status"]) == 2]
+    assert stick and slip, "partial slip expected: both stick and slip points"
+    c_fe = (max(stick) - min(stick)) / 2
+    err = 0.0
+    for r in closed:
+        x = float(r["x"])
+        if abs(x) > 0.9 * a:
+            continue
+        q = args.mu * p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
+        if abs(x) < c:
+            q -= args.mu * p0 * (c / a) * math.sqrt(1 - (x / c) ** 2)
+        err = max(err, abs(abs(float(r["traction_x"])) - q) / (args.mu * p0))
+    print(f"P = {P:.6g}, Q = {Q:.6g}, Q/(mu P) = {ratio:.4f}, a = {a:.5g}, c/a: Cattaneo-Mindlin "
+          f"{c / a:.4f}, computed {c_fe / a:.4f} (centre {(max(stick) + min(stick)) / 2:.3g}), "
+          f"h = {h:.3g}, traction error max {err:.4g} mu p0")
+    print(f"RESULT cattaneo-mindlin Q/muP={ratio:.3f} c/a={c / a:.4f} fe={c_fe / a:.4f} "
+          f"dc/h={abs(c_fe - c) / h:.2f} traction={err:.4g}")
+    assert abs(c_fe - c) <= args.tol * h, f"stick zone {c_fe} vs {c}: more than {args.tol} node spacings ({h})"
 elif args.case == "patch":
     err = max(abs(float(r["pressure"]) - args.pressure) / args.pressure for r in closed)
     print(f"max relative pressure deviation {err:.4g} over {len(closed)} closed points")

@@ -294,6 +294,43 @@ TEST_P(ContactProblemTest, AssembledTangentMatchesFiniteDifferences) {
   }
 }
 
+// The seam for the fixed-point algorithms: frozen statuses stay as they were however the
+// iterate moves, and released ones follow it again.
+TEST_P(ContactProblemTest, FrozenStatusesDoNotFollowTheIterate) {
+  RectangleParams r;
+  r.divisions = {4, 4};
+  auto mesh = std::make_shared<Mesh>(generateRectangle(r));
+  ContactZone zone;
+  zone.name = "floor";
+  zone.slave = "bottom";
+  RigidObstacleSpec plane;
+  plane.direction = {0, 1, 0};
+  zone.obstacle = plane;
+  zone.friction = 0.3;
+  zone.law = law(GetParam());
+  auto comm = Tpetra::getDefaultComm();
+  Problem solid(squeezedBlock(mesh, ""), comm);
+  ContactProblem contact(solid, {zone});
+  auto x = contact.createVector();
+  contact.applyDirichlet(1.0, *x);
+  x->putScalar(-0.01);  // every point 0.01 into the plane: closed
+  contact.updateGeometry(*x, 1.0);
+  auto res = contact.createVector();
+  contact.assemble(*x, 1.0, res.get(), true);
+  for (const auto& p : contact.results())
+    ASSERT_NE(p.status, ContactStatus::Free);
+  contact.freezeStatuses(true);
+  auto apart = contact.createVector();
+  apart->putScalar(0.5);  // far above the plane: open, were the statuses free to move
+  contact.assemble(*apart, 1.0, res.get(), true);
+  for (const auto& p : contact.results())
+    EXPECT_NE(p.status, ContactStatus::Free) << "frozen status moved";
+  contact.freezeStatuses(false);
+  contact.assemble(*apart, 1.0, res.get(), true);
+  for (const auto& p : contact.results())
+    EXPECT_EQ(p.status, ContactStatus::Free) << "released status did not follow";
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryFormulation, ContactProblemTest,
                          ::testing::Values("penalty", "lagrange", "augmented-lagrangian"));
 
