@@ -35,17 +35,7 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
   std::array<double, 2> LamHat{};
   for (int k = 0; k < nt; ++k)
     LamHat[k] = in.Lambda[k] + rt_ * in.slip[k];
-  BallProjection b = projectOnBall(LamHat, nt, 1.0);
-  if (in.frozenStatus > 0 && (in.frozenStatus == 1) != b.inside) {
-    // A frozen stick/slip status overrides the one the iterate would give.
-    b.inside = in.frozenStatus == 1;
-    const double norm = b.inside ? 1.0 : std::max(std::hypot(LamHat[0], LamHat[1]), 1e-300);
-    for (int k = 0; k < nt; ++k) {
-      b.P[k] = b.inside ? LamHat[k] : b.e[k];
-      for (int j = 0; j < nt; ++j)
-        b.D[k * nt + j] = b.inside ? (k == j) : ((k == j) - b.e[k] * b.e[j]) / norm;
-    }
-  }
+  const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   const double tau = thresholdFrozen ? in.frozenThreshold : in.mu * pHat;
   const double dTauDp = thresholdFrozen ? 0.0 : in.mu;

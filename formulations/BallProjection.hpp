@@ -2,6 +2,7 @@
 // Projection on the ball of radius rho in R^nt (nt <= 2) and its derivative: the return map of
 // Coulomb friction. Inside (||x|| < rho, or x = 0): P = x, D = I. Outside: P = rho x/||x||,
 // D = rho (I - e e^T)/||x|| with e = x/||x||.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -14,7 +15,10 @@ struct BallProjection {
   bool inside = true;
 };
 
-inline BallProjection projectOnBall(const std::array<double, 2>& x, int nt, double rho) {
+// `status` 1 (stick) or 2 (slip) forces that branch (a status frozen by an algorithm); any
+// other value lets x decide. A forced slip at x = 0 keeps a zero direction.
+inline BallProjection projectOnBall(const std::array<double, 2>& x, int nt, double rho,
+                                    int status = -1) {
   BallProjection b;
   double norm = 0;
   for (int k = 0; k < nt; ++k)
@@ -23,12 +27,13 @@ inline BallProjection projectOnBall(const std::array<double, 2>& x, int nt, doub
   if (norm > 0)
     for (int k = 0; k < nt; ++k)
       b.e[k] = x[k] / norm;
-  b.inside = norm < rho || norm == 0.0;
+  b.inside = status == 1 || (status != 2 && (norm < rho || norm == 0.0));
+  const double scale = rho / std::max(norm, 1e-300);
   for (int k = 0; k < nt; ++k) {
     b.P[k] = b.inside ? x[k] : rho * b.e[k];
     for (int j = 0; j < nt; ++j)
       b.D[k * nt + j] =
-          b.inside ? (k == j ? 1.0 : 0.0) : rho / norm * ((k == j ? 1.0 : 0.0) - b.e[k] * b.e[j]);
+          b.inside ? (k == j ? 1.0 : 0.0) : scale * ((k == j ? 1.0 : 0.0) - b.e[k] * b.e[j]);
   }
   return b;
 }

@@ -34,16 +34,7 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
   std::array<double, 2> LamHat{};
   for (int k = 0; k < nt; ++k)
     LamHat[k] = in.Lambda[k] + ct_ * in.slip[k];
-  BallProjection b = projectOnBall(LamHat, nt, 1.0);
-  if (in.frozenStatus > 0) {
-    b.inside = in.frozenStatus == 1;
-    const double norm = std::max(std::hypot(LamHat[0], LamHat[1]), 1e-300);
-    for (int k = 0; k < nt; ++k) {
-      b.P[k] = b.inside ? LamHat[k] : b.e[k];
-      for (int j = 0; j < nt; ++j)
-        b.D[k * nt + j] = b.inside ? (k == j) : ((k == j) - b.e[k] * b.e[j]) / norm;
-    }
-  }
+  const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   // Threshold mu (p - c_n g): equal to mu p at convergence (g = 0 on active points), and
   // already positive on a first iterate that starts in contact with p = 0.

@@ -33,16 +33,7 @@ void Penalty::evaluate(const LawInput& in, LawOutput& out) const {
   std::array<double, 2> trial{};
   for (int k = 0; k < nt; ++k)
     trial[k] = in.tangentialOld[k] + epsT_ * in.slip[k];
-  BallProjection b = projectOnBall(trial, nt, tau);
-  if (in.frozenStatus > 0 && (in.frozenStatus == 1) != b.inside) {
-    b.inside = in.frozenStatus == 1;
-    const double norm = std::max(std::hypot(trial[0], trial[1]), 1e-300);
-    for (int k = 0; k < nt; ++k) {
-      b.P[k] = b.inside ? trial[k] : tau * b.e[k];
-      for (int j = 0; j < nt; ++j)
-        b.D[k * nt + j] = b.inside ? (k == j) : tau * ((k == j) - b.e[k] * b.e[j]) / norm;
-    }
-  }
+  const BallProjection b = projectOnBall(trial, nt, tau, in.frozenStatus);
   for (int k = 0; k < nt; ++k) {
     const int v = 1 + k;
     out.r[v] = w * b.P[k];
