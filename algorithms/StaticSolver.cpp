@@ -32,6 +32,9 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   p->set("Relative Tolerance", 1e-8,
          "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate||");
   p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
+  p->set("Geometry Tolerance", 1e-6,
+         "Contact: the geometric fixed point has converged when the residual at the updated "
+         "geometry is <= Geometry Tolerance * ||R at the step's first iterate||");
   p->set("Max Geometry Iterations", 10,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
@@ -47,12 +50,13 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.relativeTolerance = newton.get<double>("Relative Tolerance");
   o.absoluteTolerance = newton.get<double>("Absolute Tolerance");
   o.maxGeometryIterations = newton.get<int>("Max Geometry Iterations");
+  o.geometryTolerance = newton.get<double>("Geometry Tolerance");
   if (o.steps < 1) throw std::invalid_argument("Load Steps/Steps must be >= 1");
   if (!(o.endTime > 0)) throw std::invalid_argument("Load Steps/End Time must be > 0");
   if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");
   if (o.maxGeometryIterations < 0)
     throw std::invalid_argument("Newton/Max Geometry Iterations must be >= 0");
-  if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0))
+  if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0) || !(o.geometryTolerance >= 0))
     throw std::invalid_argument("Newton tolerances must be >= 0");
   return o;
 }
@@ -78,7 +82,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     problem_.applyDirichlet(sr.time, *trial);
     problem_.updateGeometry(*trial, sr.time);
     double reference = 0;
-    bool converged = false;
+    bool converged = false, geometryFresh = false;
     for (int it = 0;; ++it) {
       auto t0 = clock::now();
       problem_.assemble(*trial, sr.time, residual.get(), true);
@@ -93,8 +97,17 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                          ", iteration " + std::to_string(it);
         break;
       }
+      // Just after a geometry update the residual only has to be within the geometry
+      // tolerance: the frozen-geometry Newton converged, and the update moved it by less.
+      if (geometryFresh &&
+          norm <= std::max(options_.absoluteTolerance, options_.geometryTolerance * reference)) {
+        converged = true;
+        break;
+      }
       if (norm <= std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) {
-        if (!problem_.updateGeometry(*trial, sr.time)) {
+        // Converged at a geometry frozen at this very iterate: the fixed point has converged
+        // too (the update changed the residual by less than the tolerance).
+        if (geometryFresh || !problem_.updateGeometry(*trial, sr.time)) {
           converged = true;
           break;
         }
@@ -106,6 +119,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
           break;
         }
         ++sr.geometryIterations;
+        geometryFresh = true;
         continue;  // the residual at the new geometry is assembled at the top
       }
       if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
@@ -139,6 +153,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       sr.seconds.linearSolve += seconds(t0);
       ++report.linearSolves;
       ++sr.iterations;
+      geometryFresh = false;
       trial->update(1.0, *increment, 1.0);
     }
     report.iterations += sr.iterations;

@@ -23,6 +23,7 @@ struct StaticSolverOptions {
   double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
   int maxGeometryIterations = 10;
+  double geometryTolerance = 1e-6;
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();

@@ -47,6 +47,35 @@ void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>
   t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
 }
 
+// Unit normal of the master surface at each of its nodes: the average of the normals of the
+// facets around it, each taken at that node.
+std::map<std::int64_t, std::array<double, 3>> masterNodalNormals(
+    const std::vector<Facet>& facets, const std::vector<std::int64_t>& facetNodes) {
+  std::map<std::int64_t, std::array<double, 3>> normals;
+  std::size_t offset = 0;
+  for (const Facet& f : facets) {
+    const ReferenceElement& ref = ReferenceElement::get(f.type);
+    const int n = ref.numNodes(), rd = ref.dim();
+    const int spaceDim = rd + 1;
+    std::vector<double> dN(static_cast<std::size_t>(n) * rd);
+    for (int a = 0; a < n; ++a) {
+      ref.shapeDerivatives(&ref.nodeCoordinates()[a * rd], dN.data());
+      double normal[3];
+      facetGeometry(spaceDim, n, f.coords.data(), dN.data(), normal);
+      auto& sum = normals[facetNodes[offset + a]];
+      for (int c = 0; c < 3; ++c)
+        sum[c] += normal[c];
+    }
+    offset += n;
+  }
+  for (auto& [node, v] : normals) {
+    const double norm = std::sqrt(dot(v, v));
+    for (double& c : v)
+      c /= norm;
+  }
+  return normals;
+}
+
 }  // namespace
 
 struct ContactProblem::Point {
@@ -313,6 +342,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
   std::vector<std::string> deep;
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     std::unique_ptr<ContactSearch> search;
+    std::map<std::int64_t, std::array<double, 3>> nodalNormals;
     const ElementType type = masterFacetType_[z];
     const int nn = obstacles_[z] ? 0 : info(type).nodes;
     if (!obstacles_[z]) {
@@ -327,6 +357,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
         }
       }
       search = std::make_unique<ContactSearch>(std::move(facets), searchDistance_[z]);
+      nodalNormals = masterNodalNormals(search->facets(), masterFacetNodes_[z]);
     }
     for (std::size_t i = 0; i < points_.size(); ++i) {
       Point& pt = points_[i];
@@ -344,7 +375,22 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
         gap = proj.gap;
         signature_[i] = pt.paired ? -2 : -1;
       } else {
-        const Pairing pairing = search->findClosest(xs.data());
+        Pairing pairing = search->findClosest(xs.data());
+        // Hysteresis: at a vertex shared by two facets (equal distances) keep the previous
+        // facet, so that the pairing, the graph and the solver's analysis do not flip-flop.
+        if (pairing.found && old.paired && old.facet >= 0 &&
+            pairing.facet != static_cast<std::size_t>(old.facet)) {
+          const Projection kept = projectOnFacet(
+              type, dim_ == 2 ? 2 : 3, search->facets()[old.facet].coords.data(), xs.data());
+          if (kept.converged &&
+              kept.distance <= pairing.projection.distance + 1e-9 * searchDistance_[z]) {
+            // Same point (a shared vertex or edge): keep the facet, its local coordinates,
+            // and the search's normal and gap (averaged over the facets at a kink).
+            pairing.facet = static_cast<std::size_t>(old.facet);
+            pairing.projection.xi[0] = kept.xi[0];
+            pairing.projection.xi[1] = kept.xi[1];
+          }
+        }
         pt.paired = pairing.found;
         if (pt.paired) {
           pt.facet = static_cast<int>(pairing.facet);
@@ -352,9 +398,19 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
                            masterFacetNodes_[z].begin() + (pt.facet + 1) * nn);
           pt.N.resize(nn);
           ReferenceElement::get(type).shape(pairing.projection.xi, pt.N.data());
+          // Smoothed normal (Code_Aster's LISSAGE): the nodal normals interpolated at the
+          // master point, continuous across the kinks of the deformed master surface, where
+          // the facet normal jumps and the geometric fixed point would flip between facets.
+          std::array<double, 3> n{};
+          for (int a = 0; a < nn; ++a)
+            for (int c = 0; c < 3; ++c)
+              n[c] += pt.N[a] * nodalNormals[pt.master[a]][c];
+          const double norm = std::sqrt(dot(n, n));
           for (int c = 0; c < 3; ++c)
-            pt.normal[c] = pairing.projection.normal[c];
-          gap = pairing.projection.gap;
+            pt.normal[c] = norm > 0 ? n[c] / norm : pairing.projection.normal[c];
+          gap = 0;
+          for (int c = 0; c < 3; ++c)
+            gap += pt.normal[c] * (xs[c] - pairing.projection.point[c]);
           const auto& fc = search->facets()[pt.facet].coords;
           std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
           for (int a = 0; a < nn; ++a)
@@ -374,19 +430,34 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
         deep.push_back("node " + std::to_string(pt.node + 1) + " of '" + zones_[z].slave +
                        "' (zone " + zones_[z].name + ") is " + std::to_string(-gap) +
                        " inside its master, more than the facet size " + std::to_string(size));
-      // Moved: a different master, or a different normal or master point at this state.
-      if (old.paired != pt.paired || old.facet != pt.facet) {
+      // Repaired: other master nodes (a new graph). Moved: a different normal or master point
+      // at this state (Newton must run again); the same point reached through another facet
+      // of a shared vertex is not a move.
+      if (old.paired != pt.paired) {
         moved = repaired = true;
       } else if (pt.paired) {
+        if (old.facet != pt.facet) repaired = true;
         double change = 0;
         for (int c = 0; c < 3; ++c)
           change = std::max(change, std::abs(old.normal[c] - pt.normal[c]));
-        for (std::size_t a = 0; a < pt.N.size(); ++a)
-          change = std::max(change, std::abs(old.N[a] - pt.N[a]));
-        if (obstacles_[z])
-          for (int c = 0; c < 3; ++c)
-            change = std::max(change, std::abs(old.obstaclePoint[c] - pt.obstaclePoint[c]) /
-                                          std::max(size, 1e-300));
+        std::array<double, 3> before{}, after{};
+        if (obstacles_[z]) {
+          before = old.obstaclePoint;
+          after = pt.obstaclePoint;
+        } else {
+          for (std::size_t a = 0; a < old.master.size(); ++a) {
+            const auto x = surfacePosition(old.master[a]);
+            for (int c = 0; c < 3; ++c)
+              before[c] += old.N[a] * x[c];
+          }
+          for (std::size_t a = 0; a < pt.master.size(); ++a) {
+            const auto x = surfacePosition(pt.master[a]);
+            for (int c = 0; c < 3; ++c)
+              after[c] += pt.N[a] * x[c];
+          }
+        }
+        for (int c = 0; c < 3; ++c)
+          change = std::max(change, std::abs(before[c] - after[c]) / std::max(size, 1e-300));
         if (change > 1e-12) moved = true;
       }
     }

@@ -9,7 +9,9 @@
 // Discretization: node-to-segment collocation (the seed's). Each slave node is a contact point
 // weighted by its tributary area (row-sum-free HRZ lumping of the slave facets in the
 // reference configuration, positive for every facet type); its master is the closest point on
-// the master surface (ContactSearch) or on a rigid obstacle. Between two updateGeometry calls
+// the master surface (ContactSearch) or on a rigid obstacle. On a master surface the normal is
+// the nodal-averaged normal interpolated at that point (continuous across the kinks of a
+// faceted, deformed surface, as Code_Aster's normal smoothing). Between two updateGeometry calls
 // the pairing, the master point's shape values N_a, the normal n and the tangent basis t_k are
 // frozen, so the gap g = n . (x_s - sum_a N_a x_a) and the slip increment
 // v_k = t_k . ((u_s - u_s^conv) - sum_a N_a (u_a - u_a^conv)) are linear in u and the tangent

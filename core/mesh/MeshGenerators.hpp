@@ -56,6 +56,24 @@ struct HalfDiscParams {
 };
 Mesh generateHalfDisc(const HalfDiscParams& p);
 
+// Two bodies touching at one point, meshed separately (disjoint nodes): an upper half disc
+// ("roller": flat side up, arc down, lowest point at `contact`) on a base that is either the
+// mirrored half disc ("disc": two elastically similar cylinders) or a block of width x height
+// whose top's middle is the contact point ("block"). Graded towards the contact point.
+// Blocks "roller", "base"; boundaries "roller-flat", "roller-curved", "base-top" (the base's
+// contact side: arc or top edge), "base-bottom" (its flat side or bottom edge), and for a block
+// "base-left", "base-right". Types as generateHalfDisc.
+struct RollerOnBaseParams {
+  std::array<double, 2> contact{0.0, 0.0};
+  double radius = 1.0;
+  std::string base = "block";  // "block" or "disc"
+  double baseWidth = 2.0;      // block only
+  double baseHeight = 1.0;     // block only
+  ContactGrading grading;
+  std::string elementType = "quad4";
+};
+Mesh generateRollerOnBase(const RollerOnBaseParams& p);
+
 // Lower half of the ball of `radius` around `centre`: flat face "flat" on z = centre_z, curved
 // face "curved" touching z = centre_z - radius at the contact point, a mesh node (point group
 // "contact-point"), away from the sphere's poles and seams. Unstructured, graded towards the

@@ -92,6 +92,23 @@ RCP<const ParameterList> halfDiscParameters() {
   return p;
 }
 
+RCP<const ParameterList> rollerOnBaseParameters() {
+  auto p = Teuchos::rcp(new ParameterList("roller-on-base"));
+  RollerOnBaseParams d;
+  p->set("Contact Point", arrayOf<double>({d.contact[0], d.contact[1]}),
+         "Where the roller touches the base");
+  p->set("Radius", d.radius, "Radius of the roller (and of a disc base)");
+  p->set("Base", d.base,
+         "'block' (a rectangle under the roller) or 'disc' (the mirrored half "
+         "disc: two elastically similar cylinders)",
+         oneOf({"block", "disc"}));
+  p->set("Base Width", d.baseWidth, "Block base: width (centred on the contact point)");
+  p->set("Base Height", d.baseHeight, "Block base: height");
+  addGrading(*p, d.grading);
+  p->set("Element", "quad4", "Element type", oneOf(k2D));
+  return p;
+}
+
 RCP<const ParameterList> halfSphereParameters() {
   auto p = Teuchos::rcp(new ParameterList("half-sphere"));
   HalfSphereParams d;
@@ -177,6 +194,22 @@ void registerMeshSources() {
            g.grading = grading(p);
            g.elementType = p.get<std::string>("Element");
            return std::make_unique<Mesh>(generateHalfDisc(g));
+         }});
+  r.add({"roller-on-base",
+         "Two bodies touching at one point (two-body Hertz, Cattaneo-Mindlin): a half disc "
+         "'roller' on a 'base' block or mirrored half disc, meshed separately, graded towards "
+         "the contact. Boundaries 'roller-flat', 'roller-curved', 'base-top', 'base-bottom' "
+         "(block: also 'base-left', 'base-right').",
+         rollerOnBaseParameters, [](const ParameterList& p, const std::string&) {
+           RollerOnBaseParams g;
+           g.contact = fixed<2, double>(p, "Contact Point");
+           g.radius = p.get<double>("Radius");
+           g.base = p.get<std::string>("Base");
+           g.baseWidth = p.get<double>("Base Width");
+           g.baseHeight = p.get<double>("Base Height");
+           g.grading = grading(p);
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateRollerOnBase(g));
          }});
   r.add({"half-sphere",
          "Lower half of a ball (Hertz sphere), graded towards the lowest point. Block 'body'; "

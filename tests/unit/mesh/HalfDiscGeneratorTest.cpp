@@ -71,3 +71,57 @@ TEST(HalfDiscGeneratorErrors, NameTheParameter) {
 
 }  // namespace
 }  // namespace contactlab
+
+namespace contactlab {
+namespace {
+
+// Roller on a base: two bodies, separately meshed (no shared node, not even at the contact
+// point), valid elements, each area right, the boundary groups on their curves.
+class RollerOnBaseGenerator
+    : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(RollerOnBaseGenerator, TwoBodiesTouchingAtOnePoint) {
+  RollerOnBaseParams p;
+  p.contact = {1.0, 2.0};
+  p.radius = 1.0;
+  p.base = std::get<0>(GetParam());
+  p.baseWidth = 3.0;
+  p.baseHeight = 1.5;
+  p.grading = {0.03, 0.3, 0.05, 0.5};
+  p.elementType = std::get<1>(GetParam());
+  const Mesh mesh = generateRollerOnBase(p);
+  EXPECT_GT(test::minJacobian(mesh), 0.0);
+  const auto roller = test::blockNodes(mesh, "roller"), base = test::blockNodes(mesh, "base");
+  for (auto n : roller)
+    EXPECT_EQ(base.count(n), 0u) << "node " << n << " is shared by the two bodies";
+  const double half = M_PI / 2;
+  EXPECT_NEAR(test::blockMeasure(mesh, "roller"), half, 0.01 * half);
+  EXPECT_NEAR(test::blockMeasure(mesh, "base"), p.base == "disc" ? half : 4.5,
+              0.01 * (p.base == "disc" ? half : 4.5));
+  int atContact = 0;
+  for (const char* group : {"roller-curved", "base-top"})
+    for (auto n : mesh.boundaryNodes(group)) {
+      const auto x = test::node(mesh, n);
+      if (std::hypot(x[0] - 1.0, x[1] - 2.0) < 1e-12) ++atContact;
+      const bool onRoller = std::string(group) == "roller-curved";
+      EXPECT_TRUE(onRoller ? x[1] >= 2.0 - 1e-12 : x[1] <= 2.0 + 1e-12) << group;
+    }
+  EXPECT_EQ(atContact, 2) << "one node of each body at the contact point";
+  for (auto n : mesh.boundaryNodes("roller-flat"))
+    EXPECT_NEAR(test::node(mesh, n)[1], 3.0, 1e-12);
+  for (auto n : mesh.boundaryNodes("base-bottom"))
+    EXPECT_NEAR(test::node(mesh, n)[1], p.base == "disc" ? 1.0 : 0.5, 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(BasesAndTypes, RollerOnBaseGenerator,
+                         ::testing::Combine(::testing::Values("block", "disc"),
+                                            ::testing::Values("tri3", "quad4", "quad8")));
+
+TEST(RollerOnBaseGeneratorErrors, NameTheParameter) {
+  RollerOnBaseParams p;
+  p.base = "cone";
+  EXPECT_THROW(generateRollerOnBase(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace contactlab
