@@ -147,8 +147,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // 2. Solve; each converged step is written at once.
   MPI_Comm mpiComm = rawMpiComm(comm);
   std::unique_ptr<VtkSeriesWriter> vtk;
-  CsvWriter stepsCsv({"step", "time", "newton_iterations", "linear_solves", "residual",
-                      "contact_points", "stick_points", "slip_points", "cycling_events",
+  CsvWriter stepsCsv({"step", "time", "newton_iterations", "geometry_iterations", "linear_solves",
+                      "residual", "contact_points", "stick_points", "slip_points", "cycling_events",
                       "assembly_s", "pairing_s", "contact_s", "linear_solve_s"});
   Progress progress(root);
   auto x = system.createVector();
@@ -211,9 +211,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       lastContact = contact->contactSeconds();
       if (root) writeContactCsv();
     }
-    stepsCsv.addRow(s.step, s.time, s.iterations, s.iterations, s.residual, cr.contact, cr.stick,
-                    cr.slip, 0, s.seconds.assembly - contactTerms, pairing, contactTerms,
-                    s.seconds.linearSolve);
+    stepsCsv.addRow(s.step, s.time, s.iterations, s.geometryIterations, s.iterations, s.residual,
+                    cr.contact, cr.stick, cr.slip, 0, s.seconds.assembly - contactTerms, pairing,
+                    contactTerms, s.seconds.linearSolve);
     if (root) stepsCsv.write(outDir + "/steps.csv");
     recordProbes(*solution);
     progress.step(s, steps, elapsed());

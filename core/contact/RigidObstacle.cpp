@@ -17,9 +17,10 @@ RigidObstacle::RigidObstacle(const RigidObstacleSpec& spec, int spaceDim)
   using Shape = RigidObstacleSpec::Shape;
   if (spaceDim != 2 && spaceDim != 3)
     throw std::invalid_argument("rigid obstacle: the space dimension must be 2 or 3");
-  if (spaceDim == 2)
-    spec_.point[2] = 0.0,
-    spec_.direction[2] = spec.shape == Shape::Cylinder ? spec.direction[2] : 0.0;
+  if (spaceDim == 2) {  // plane strain lives in z = 0; only a cylinder's axis points out of it
+    spec_.point[2] = 0.0;
+    if (spec.shape != Shape::Cylinder) spec_.direction[2] = 0.0;
+  }
   if (spec_.shape != Shape::Sphere) {
     const double n = norm3(spec_.direction);
     if (!(n > 0))
