@@ -1,5 +1,6 @@
 #include "formulations/ContactProblem.hpp"
 
+#include "core/contact/SurfaceFrames.hpp"
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
@@ -21,59 +22,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// A tangent basis of the plane normal to n: t1 = rotated n in 2D; in 3D, the coordinate axis
-// least aligned with n made orthogonal to it, and t2 = n x t1 (deterministic, so every rank and
-// every update picks the same basis for the same normal).
-void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
-                  std::array<double, 3>& t2) {
-  if (dim == 2) {
-    t1 = {-n[1], n[0], 0.0};
-    t2 = {0, 0, 0};
-    return;
-  }
-  int axis = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(n[i]) < std::abs(n[axis])) axis = i;
-  std::array<double, 3> e{};
-  e[axis] = 1.0;
-  const double en = n[axis];
-  for (int i = 0; i < 3; ++i)
-    t1[i] = e[i] - en * n[i];
-  const double norm = std::sqrt(dot(t1, t1));
-  for (double& v : t1)
-    v /= norm;
-  t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
-}
-
-// Unit normal of the master surface at each of its nodes: the average of the normals of the
-// facets around it, each taken at that node.
-std::map<std::int64_t, std::array<double, 3>> masterNodalNormals(
-    const std::vector<Facet>& facets, const std::vector<std::int64_t>& facetNodes) {
-  std::map<std::int64_t, std::array<double, 3>> normals;
-  std::size_t offset = 0;
-  for (const Facet& f : facets) {
-    const ReferenceElement& ref = ReferenceElement::get(f.type);
-    const int n = ref.numNodes(), rd = ref.dim();
-    const int spaceDim = rd + 1;
-    std::vector<double> dN(static_cast<std::size_t>(n) * rd);
-    for (int a = 0; a < n; ++a) {
-      ref.shapeDerivatives(&ref.nodeCoordinates()[a * rd], dN.data());
-      double normal[3];
-      facetGeometry(spaceDim, n, f.coords.data(), dN.data(), normal);
-      auto& sum = normals[facetNodes[offset + a]];
-      for (int c = 0; c < 3; ++c)
-        sum[c] += normal[c];
-    }
-    offset += n;
-  }
-  for (auto& [node, v] : normals) {
-    const double norm = std::sqrt(dot(v, v));
-    for (double& c : v)
-      c /= norm;
-  }
-  return normals;
 }
 
 }  // namespace
@@ -357,7 +305,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
         }
       }
       search = std::make_unique<ContactSearch>(std::move(facets), searchDistance_[z]);
-      nodalNormals = masterNodalNormals(search->facets(), masterFacetNodes_[z]);
+      nodalNormals = contactlab::nodalNormals(search->facets(), masterFacetNodes_[z]);
     }
     for (std::size_t i = 0; i < points_.size(); ++i) {
       Point& pt = points_[i];

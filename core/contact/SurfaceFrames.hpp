@@ -1,0 +1,26 @@
+#pragma once
+// Local frames of contact surfaces: a deterministic tangent basis for a normal, and the nodal
+// normals of a faceted master surface (averaged over the facets around each node), which give
+// a normal field continuous across the kinks between facets when interpolated.
+#include "core/contact/ContactSearch.hpp"
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace contactlab {
+
+// t1, t2 completing the unit normal n to an orthonormal frame. 2D (dim = 2): t1 = (-n_y, n_x),
+// t2 = 0. 3D: the coordinate axis least aligned with n made orthogonal to it, then t2 = n x t1.
+// Deterministic: every rank and every update picks the same basis for the same normal.
+void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
+                  std::array<double, 3>& t2);
+
+// Unit normal at each node of `facets` (facetNodes: the mesh nodes of facet f at
+// [f * nodesPerFacet, (f + 1) * nodesPerFacet)): the normalized sum of the normals of the
+// facets around the node, each evaluated at that node.
+std::map<std::int64_t, std::array<double, 3>> nodalNormals(
+    const std::vector<Facet>& facets, const std::vector<std::int64_t>& facetNodes);
+
+}  // namespace contactlab
