@@ -47,9 +47,10 @@ _contactlab_find_package(Amesos2)
 _contactlab_find_package(Belos)
 _contactlab_find_package(Ifpack2)
 _contactlab_find_package(MueLu)
+_contactlab_find_package(NOX)
 _contactlab_find_package(VTK 9 COMPONENTS CommonCore CommonDataModel IOXML)
 
-foreach(pkg Tpetra Amesos2 Belos Ifpack2 MueLu)
+foreach(pkg Tpetra Amesos2 Belos Ifpack2 MueLu NOX)
   if(NOT TARGET contactlab::${pkg})
     add_library(contactlab::${pkg} INTERFACE IMPORTED)
     set_target_properties(contactlab::${pkg} PROPERTIES

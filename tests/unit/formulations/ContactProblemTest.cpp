@@ -2,6 +2,7 @@
 // states with a known answer: a block pressed on a rigid plane (uniform pressure, with and
 // without friction) and two stacked blocks with matching meshes, for every formulation, on 1
 // and 2 ranks.
+#include "algorithms/NoxNewton.hpp"
 #include "algorithms/StaticSolver.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
@@ -329,6 +330,59 @@ TEST_P(ContactProblemTest, FrozenStatusesDoNotFollowTheIterate) {
   contact.assemble(*apart, 1.0, res.get(), true);
   for (const auto& p : contact.results())
     EXPECT_EQ(p.status, ContactStatus::Free) << "released status did not follow";
+}
+
+// NOX (each line search) and the plain Newton driver reach the same frictional state of two
+// non-matching blocks, geometry fixed point included.
+TEST_P(ContactProblemTest, NoxNewtonMatchesThePlainNewton) {
+  StackedBlocks2DParams b;
+  b.lowerDivisions = {4, 2};
+  b.upperDivisions = {3, 2};
+  b.gap = -1e-6;
+  auto mesh = std::make_shared<Mesh>(generateStackedBlocks2D(b));
+  SolidModel model = squeezedBlock(mesh, "lower-bottom");
+  model.dirichlet[0].components = {1};
+  model.dirichlet[1].value = 0.006;
+  ContactZone zone;
+  zone.name = "interface";
+  zone.slave = "upper-bottom";
+  zone.master = "lower-top";
+  zone.friction = 0.2;
+  zone.law = law(GetParam());
+  auto comm = Tpetra::getDefaultComm();
+  registerLinearSolvers();
+  auto solveWith = [&](const std::string& lineSearch) {
+    Problem solid(model, comm);
+    ContactProblem contact(solid, {zone});
+    auto solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
+    auto x = contact.createVector();
+    StaticSolverOptions steps;
+    steps.steps = 2;
+    RunReport report;
+    if (lineSearch.empty()) {
+      report = StaticSolver(contact, *solver, steps).run(*x, {});
+    } else {
+      NoxNewtonOptions o;
+      o.steps = steps;
+      o.lineSearch = lineSearch;
+      report = NoxNewton(contact, *solver, o).run(*x);
+    }
+    EXPECT_TRUE(report.converged) << lineSearch << ": " << report.message;
+    return std::make_pair(x, report);
+  };
+  const auto [reference, plain] = solveWith("");
+  for (const std::string ls : {"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}) {
+    const auto [x, report] = solveWith(ls);
+    // Same layout, different map objects (two problems): compare the local entries.
+    auto a = x->getData(0), r = reference->getData(0);
+    ASSERT_EQ(a.size(), r.size());
+    double local = 0, worst = 0;
+    for (LO i = 0; i < static_cast<LO>(a.size()); ++i)
+      local = std::max(local, std::abs(a[i] - r[i]));
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &local, &worst);
+    EXPECT_LT(worst, 1e-7 * reference->normInf()) << ls;
+    EXPECT_GT(report.iterations, 0) << ls;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryFormulation, ContactProblemTest,
