@@ -4,7 +4,7 @@
 // solved by the project's LinearSolver (MUMPS by default) through a small Thyra
 // linear-op-with-solve factory. First piece of the algorithms issue: the line searches of NOX
 // (Full Step, Backtrack, Polynomial, More'-Thuente) with the geometric fixed point around them.
-// Not yet wired into scenes (StaticSolver runs them).
+// Scenes pick it with Newton/Driver: nox and Newton/Line Search.
 #include "algorithms/StaticSolver.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "linear/LinearSolver.hpp"

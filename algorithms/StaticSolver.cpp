@@ -1,5 +1,7 @@
 #include "algorithms/StaticSolver.hpp"
 
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +37,13 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   p->set("Geometry Tolerance", 1e-6,
          "Contact: the geometric fixed point has converged when the residual at the updated "
          "geometry is <= Geometry Tolerance * ||R at the step's first iterate||");
+  p->set("Driver", "plain",
+         "'plain': contactlab's Newton loop; 'nox': each Newton solve run by NOX's line-search "
+         "based solver (Line Search below)",
+         Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("plain", "nox"))));
+  p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
+         Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
+             "Full Step", "Backtrack", "Polynomial", "More'-Thuente"))));
   p->set("Max Geometry Iterations", 10,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
@@ -51,6 +60,11 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.absoluteTolerance = newton.get<double>("Absolute Tolerance");
   o.maxGeometryIterations = newton.get<int>("Max Geometry Iterations");
   o.geometryTolerance = newton.get<double>("Geometry Tolerance");
+  o.driver = newton.get<std::string>("Driver");
+  o.lineSearch = newton.get<std::string>("Line Search");
+  if (o.driver == "plain" && o.lineSearch != "Full Step")
+    throw std::invalid_argument("Newton/Line Search '" + o.lineSearch +
+                                "' needs Newton/Driver: nox (the plain Newton takes full steps)");
   if (o.steps < 1) throw std::invalid_argument("Load Steps/Steps must be >= 1");
   if (!(o.endTime > 0)) throw std::invalid_argument("Load Steps/End Time must be > 0");
   if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");

@@ -24,6 +24,8 @@ struct StaticSolverOptions {
   double absoluteTolerance = 1e-12;
   int maxGeometryIterations = 10;
   double geometryTolerance = 1e-6;
+  std::string driver = "plain";          // "plain" (StaticSolver) or "nox" (NoxNewton)
+  std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();

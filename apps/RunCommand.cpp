@@ -1,5 +1,6 @@
 #include "apps/RunCommand.hpp"
 
+#include "algorithms/NoxNewton.hpp"
 #include "apps/DefaultScene.hpp"
 #include "apps/SceneModel.hpp"
 #include "core/io/CsvWriter.hpp"
@@ -221,7 +222,15 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   auto onIteration = [&](int step, int n, int it, double residual) {
     if (root) progress.iteration(step, n, it, residual, elapsed());
   };
-  const RunReport report = driver.run(*x, onStep, onIteration);
+  RunReport report;
+  if (sm.solverOptions.driver == "nox") {
+    NoxNewtonOptions nox;
+    nox.steps = sm.solverOptions;
+    nox.lineSearch = sm.solverOptions.lineSearch;
+    report = NoxNewton(system, *solver, nox).run(*x, onStep);
+  } else {
+    report = driver.run(*x, onStep, onIteration);
+  }
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "

@@ -127,6 +127,8 @@ cases = [
      contact_with("{Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}",
                   "{Type: sphere, Point: [0.0, -1.0], Radius: 0.0}"), [],
      ["Contact/floor/Obstacle", "Radius must be > 0"]),
+    ("line search without the NOX driver", GOOD + "  Newton: {Line Search: Backtrack}\n", [],
+     ["Newton/Line Search 'Backtrack'", "Driver: nox"]),
     ("contact: initial penetration deeper than an element",
      contact_with("Point: [0.0, 0.0]", "Point: [0.0, 0.9]"), [],
      ["initial penetration larger than an element", "'bottom'", "zone floor"]),
