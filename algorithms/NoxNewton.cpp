@@ -1,5 +1,6 @@
 #include "algorithms/NoxNewton.hpp"
 
+#include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
 #include <NOX_StatusTest_Combo.H>
@@ -66,15 +67,15 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
 class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
                       public Teuchos::ParameterListAcceptorDefaultBase {
  public:
-  SolverFactory(LinearSolver& solver, NonlinearSystem& system) : solver_(solver), system_(system) {}
+  SolverFactory(LinearSolver& solver, NonlinearSystem& system, bool& first)
+      : solver_(solver), system_(system), first_(first) {}
   bool isCompatible(const Thyra::LinearOpSourceBase<double>&) const override { return true; }
   RCP<Thyra::LinearOpWithSolveBase<double>> createOp() const override { return rcp(new SolverOp); }
   void initializeOp(const RCP<const Thyra::LinearOpSourceBase<double>>& source,
                     Thyra::LinearOpWithSolveBase<double>* op,
                     const Thyra::ESupportSolveUse) const override {
-    auto matrix =
-        Teuchos::rcp_dynamic_cast<const Matrix>(TOE::getConstTpetraOperator(source->getOp()), true);
-    solver_.setMatrix(matrix, first_ || system_.takePatternChanged());
+    // The system's current tangent (with geometry in Newton a re-pairing may have replaced it).
+    solver_.setMatrix(system_.tangent(), first_ || system_.takePatternChanged());
     first_ = false;
     dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_);
   }
@@ -102,16 +103,71 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
  private:
   LinearSolver& solver_;
   NonlinearSystem& system_;
-  mutable bool first_ = true;
+  bool& first_;  // no factorization yet: a full analysis (owned by NoxNewton, across solves)
+};
+
+// The system's tangent as it is now: re-pairing replaces the matrix (and its graph) during a
+// solve with geometry in Newton, so the operator NOX holds forwards to the current one.
+class TangentOperator : public Tpetra::Operator<Scalar, LO, GO, Node> {
+ public:
+  explicit TangentOperator(const NonlinearSystem& system) : system_(system) {}
+  Teuchos::RCP<const Map> getDomainMap() const override {
+    return system_.tangent()->getDomainMap();
+  }
+  Teuchos::RCP<const Map> getRangeMap() const override { return system_.tangent()->getRangeMap(); }
+  void apply(const Tpetra::MultiVector<Scalar, LO, GO, Node>& X,
+             Tpetra::MultiVector<Scalar, LO, GO, Node>& Y, Teuchos::ETransp mode, Scalar alpha,
+             Scalar beta) const override {
+    system_.tangent()->apply(X, Y, mode, alpha, beta);
+  }
+
+ private:
+  const NonlinearSystem& system_;
+};
+
+// Converged only when no contact status changed at the last evaluation.
+class ContactStatusTest : public NOX::StatusTest::Generic {
+ public:
+  explicit ContactStatusTest(const ContactControls* controls) : controls_(controls) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType) override {
+    status_ =
+        (controls_ == nullptr || solver.getNumIterations() == 0 || controls_->statusChanges() == 0)
+            ? NOX::StatusTest::Converged
+            : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent) const override {
+    return stream << std::string(indent, ' ') << status_ << " contact statuses unchanged\n";
+  }
+
+ private:
+  const ContactControls* controls_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+// Hands every accepted iterate to the driver's observer (cycling detection, progress).
+class IterateObserver : public NOX::Observer {
+ public:
+  explicit IterateObserver(const NewtonMethod::Observer& observer) : observer_(observer) {}
+  void runPostIterate(const NOX::Solver::Generic& solver) override {
+    if (observer_) observer_(solver.getNumIterations(), solver.getSolutionGroup().getNormF());
+  }
+
+ private:
+  const NewtonMethod::Observer& observer_;
 };
 
 // R(x, t) = 0 at a fixed time t as a Thyra model: f = R, W = dR/dx.
 class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
  public:
-  SystemModel(NonlinearSystem& system, LinearSolver& solver, const RCP<const Map>& map)
+  SystemModel(NonlinearSystem& system, LinearSolver& solver, const RCP<const Map>& map, bool& first,
+              bool geometryInNewton)
       : system_(system),
         space_(Thyra::createVectorSpace<Scalar, LO, GO, Node>(map)),
-        factory_(rcp(new SolverFactory(solver, system))) {
+        factory_(rcp(new SolverFactory(solver, system, first))),
+        geometryInNewton_(geometryInNewton) {
     Thyra::ModelEvaluatorBase::InArgsSetup<double> in;
     in.setModelEvalDescription("contactlab::SystemModel");
     in.setSupports(Thyra::ModelEvaluatorBase::IN_ARG_x);
@@ -126,9 +182,9 @@ class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
   Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override { return nominal_; }
   Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override { return inArgs_; }
   RCP<Thyra::LinearOpBase<double>> create_W_op() const override {
-    // The system's tangent; its graph is fixed while the geometry is frozen (one NOX solve).
     return Thyra::createLinearOp<Scalar, LO, GO, Node>(
-        Teuchos::rcp_implicit_cast<Tpetra::Operator<Scalar, LO, GO, Node>>(system_.tangent()),
+        Teuchos::rcp_implicit_cast<Tpetra::Operator<Scalar, LO, GO, Node>>(
+            rcp(new TangentOperator(system_))),
         space_, space_);
   }
   RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override {
@@ -147,6 +203,7 @@ class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
                      const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const override {
     auto x = TOE::getConstTpetraVector(in.get_x());
     RCP<Vector> f = out.get_f().is_null() ? Teuchos::null : TOE::getTpetraVector(out.get_f());
+    if (geometryInNewton_) system_.updateGeometry(*x, t_);
     system_.assemble(*x, t_, f.get(), !out.get_W_op().is_null());
   }
 
@@ -154,111 +211,79 @@ class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
   RCP<const Thyra::VectorSpaceBase<double>> space_;
   RCP<SolverFactory> factory_;
   Thyra::ModelEvaluatorBase::InArgs<double> inArgs_, nominal_;
+  bool geometryInNewton_;
   double t_ = 0;
 };
 
 }  // namespace
 
-NoxNewton::NoxNewton(NonlinearSystem& system, LinearSolver& solver, NoxNewtonOptions options)
-    : system_(system), solver_(solver), options_(std::move(options)) {}
+NoxNewton::NoxNewton(NonlinearSystem& system, LinearSolver& solver, const ContactControls* controls,
+                     std::string lineSearch, Teuchos::ParameterList noxParameters)
+    : system_(system),
+      solver_(solver),
+      controls_(controls),
+      lineSearch_(std::move(lineSearch)),
+      noxParameters_(std::move(noxParameters)) {}
 
-RunReport NoxNewton::run(Vector& x, const StaticSolver::StepCallback& onStep) {
-  RunReport report;
-  const StaticSolverOptions& o = options_.steps;
+NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Observer& observer) {
+  NewtonOutcome out;
+  auto model = rcp(new SystemModel(system_, solver_, x.getMap(), first_, request.geometryInNewton));
+  model->setTime(request.time);
   auto trial = system_.createVector();
-  auto residual = system_.createVector();
-  for (int step = 1; step <= o.steps; ++step) {
-    StepReport sr;
-    sr.step = step;
-    sr.time = o.endTime * step / o.steps;
-    trial->assign(x);
-    system_.applyDirichlet(sr.time, *trial);
-    system_.updateGeometry(*trial, sr.time);
-    system_.assemble(*trial, sr.time, residual.get(), false);
-    const double reference = residual->norm2();
-    bool converged = false;
-    for (int geometry = 0;; ++geometry) {
-      // One NOX solve per frozen geometry (the tangent's graph is fixed during it).
-      auto model = rcp(new SystemModel(system_, solver_, trial->getMap()));
-      model->setTime(sr.time);
-      auto thyraX =
-          Thyra::createVector(Teuchos::rcp_implicit_cast<Vector>(trial), model->get_x_space());
-      model->setNominal(thyraX);
-      auto group = rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(thyraX), model));
-      auto params = rcp(new Teuchos::ParameterList);
-      params->set("Nonlinear Solver", "Line Search Based");
-      params->sublist("Line Search").set("Method", options_.lineSearch);
-      // The linear solves are direct: no need for NOX to check (and re-apply) the Jacobian.
-      params->sublist("Direction").sublist("Newton").set("Rescue Bad Newton Solve", false);
-      // More'-Thuente's slope J d at a trial point would need a Jacobian there: use its
-      // Jacobian-free slope (a difference of residuals) instead.
-      params->sublist("Line Search")
-          .sublist("More'-Thuente")
-          .set("Optimize Slope Calculation", true);
-      params->sublist("Printing").set("Output Information", 0);
-      params->sublist("Printing").set("MyPID", 0);
-      params->sublist("Printing").set("Output Processor", 0);
-      const double target = std::max(o.absoluteTolerance, o.relativeTolerance * reference);
-      auto normF = rcp(new NOX::StatusTest::NormF(target, NOX::StatusTest::NormF::Unscaled));
-      auto maxIters = rcp(new NOX::StatusTest::MaxIters(o.maxIterations - sr.iterations));
-      auto finite = rcp(new NOX::StatusTest::FiniteValue);
-      auto tests = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
-      tests->addStatusTest(finite);
-      tests->addStatusTest(normF);
-      tests->addStatusTest(maxIters);
-      auto solver = NOX::Solver::buildSolver(group, tests, params);
-      NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
-      try {
-        status = solver->solve();
-      } catch (const LinearSolverError& e) {
-        report.failure = "linear-solver-failed";
-        report.message = std::string(e.what()) + " (step " + std::to_string(step) + ")";
-      } catch (const std::exception& e) {
-        report.failure = "nonlinear-solver-error";
-        report.message = "NOX (" + options_.lineSearch + ") stopped at step " +
-                         std::to_string(step) + ": " + e.what();
-      }
-      sr.iterations += solver->getNumIterations();
-      report.linearSolves += solver->getNumIterations();
-      const auto& solution =
-          dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
-      trial->assign(*TOE::getConstTpetraVector(solution.getThyraRCPVector()));
-      if (!report.failure.empty()) break;
-      if (status != NOX::StatusTest::Converged) {
-        report.failure =
-            finite->getStatus() == NOX::StatusTest::Failed ? "nan-detected" : "max-iterations";
-        report.message =
-            "NOX (" + options_.lineSearch + ") did not converge at step " + std::to_string(step);
-        break;
-      }
-      // Geometric fixed point, as in StaticSolver.
-      if (!system_.updateGeometry(*trial, sr.time)) {
-        converged = true;
-        break;
-      }
-      system_.assemble(*trial, sr.time, residual.get(), false);
-      sr.residual = residual->norm2();
-      if (sr.residual <= std::max(o.absoluteTolerance, o.geometryTolerance * reference)) {
-        converged = true;
-        break;
-      }
-      if (geometry == o.maxGeometryIterations) {
-        report.failure = "geometry-not-converged";
-        report.message = "the contact geometry still moved at step " + std::to_string(step);
-        break;
-      }
-      ++sr.geometryIterations;
-    }
-    report.iterations += sr.iterations;
-    report.geometryIterations += sr.geometryIterations;
-    if (!converged) return report;
-    x.assign(*trial);
-    system_.commitState(x, sr.time);
-    ++report.steps;
-    if (onStep) onStep(sr, x);
+  trial->assign(x);
+  auto thyraX =
+      Thyra::createVector(Teuchos::rcp_implicit_cast<Vector>(trial), model->get_x_space());
+  model->setNominal(thyraX);
+  auto group = rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(thyraX), model));
+  auto params = rcp(new Teuchos::ParameterList(noxParameters_));
+  params->set("Nonlinear Solver", "Line Search Based");
+  params->sublist("Line Search").set("Method", lineSearch_);
+  // The linear solves are direct: no need for NOX to check (and re-apply) the Jacobian.
+  params->sublist("Direction").sublist("Newton").get("Rescue Bad Newton Solve", false);
+  // More'-Thuente's slope J d at a trial point would need a Jacobian there: use its
+  // Jacobian-free slope (a difference of residuals) instead.
+  params->sublist("Line Search").sublist("More'-Thuente").get("Optimize Slope Calculation", true);
+  params->sublist("Printing").get("Output Information", 0);
+  params->sublist("Printing").set("MyPID", 0);
+  params->sublist("Printing").set("Output Processor", 0);
+  params->sublist("Solver Options")
+      .set<RCP<NOX::Observer>>("Observer", rcp(new IterateObserver(observer)));
+  auto normF = rcp(new NOX::StatusTest::NormF(request.target, NOX::StatusTest::NormF::Unscaled));
+  auto converged = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::AND));
+  converged->addStatusTest(normF);
+  converged->addStatusTest(rcp(new ContactStatusTest(controls_)));
+  auto maxIters = rcp(new NOX::StatusTest::MaxIters(request.maxIterations));
+  auto finite = rcp(new NOX::StatusTest::FiniteValue);
+  auto tests = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  tests->addStatusTest(finite);
+  tests->addStatusTest(converged);
+  tests->addStatusTest(maxIters);
+  NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
+  Teuchos::RCP<NOX::Solver::Generic> solver;
+  try {
+    solver = NOX::Solver::buildSolver(group, tests, params);
+    status = solver->solve();
+  } catch (const LinearSolverError& e) {
+    out.failure = "linear-solver-failed";
+    out.message = e.what();
+  } catch (const std::exception& e) {
+    out.failure = "nonlinear-solver-error";
+    out.message = "NOX (" + lineSearch_ + ") stopped: " + e.what();
   }
-  report.converged = true;
-  return report;
+  if (solver.is_null()) return out;
+  out.iterations = solver->getNumIterations();
+  const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
+  x.assign(*TOE::getConstTpetraVector(solution.getThyraRCPVector()));
+  out.residual = solver->getSolutionGroup().getNormF();
+  if (!out.failure.empty()) return out;
+  if (status != NOX::StatusTest::Converged) {
+    out.failure = finite->getStatus() == NOX::StatusTest::Failed     ? "nan-detected"
+                  : maxIters->getStatus() == NOX::StatusTest::Failed ? "max-iterations"
+                                                                     : "diverged";
+    out.message = "NOX (" + lineSearch_ + ") did not converge in " +
+                  std::to_string(out.iterations) + " iterations";
+  }
+  return out;
 }
 
 }  // namespace contactlab

@@ -15,8 +15,8 @@ std::string sci(double v) {
   return buffer;
 }
 
-double seconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
+  return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
 }
 
 }  // namespace
@@ -25,36 +25,82 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validLoadSteps()
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Load Steps"));
   p->set("Steps", 1, "Number of equal load steps from t = 0 to End Time (>= 1)");
   p->set("End Time", 1.0, "Pseudo-time at the end of the load (> 0); ramps reach 1 there");
+  p->set("Max Cuts", 0,
+         "A step that fails is cut in two and retried, up to this many times in a row (>= 0; "
+         "0: a failed step ends the run). After a step converges without a cut the step "
+         "doubles again, up to End Time / Steps");
   return p;
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
-  p->set("Max Iterations", 20, "Newton iterations allowed per load step (>= 1)");
+  p->set("Max Iterations", 20,
+         "Newton iterations allowed per Newton solve (>= 1); a step runs "
+         "one solve per fixed-point iteration");
   p->set("Relative Tolerance", 1e-8,
-         "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate||");
+         "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate|| and no "
+         "contact status changed at the last iterate");
   p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
   p->set("Geometry Tolerance", 1e-6,
          "Contact: the geometric fixed point has converged when the residual at the updated "
          "geometry is <= Geometry Tolerance * ||R at the step's first iterate||");
   p->set("Driver", "plain",
-         "'plain': contactlab's Newton loop; 'nox': each Newton solve run by NOX's line-search "
-         "based solver (Line Search below)",
-         Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("plain", "nox"))));
+         "'plain': contactlab's Newton loop (full steps); 'nox': each Newton solve run by NOX's "
+         "line-search based solver (Line Search below)",
+         choices({"plain", "nox"}));
   p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
-         Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
-             "Full Step", "Backtrack", "Polynomial", "More'-Thuente"))));
+         choices({"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}));
   p->set("Max Geometry Iterations", 10,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
+  p->sublist("NOX", false,
+             "Driver: nox. Passed through to NOX's solver parameters (e.g. 'Line Search'/"
+             "'Backtrack'/'Max Iters'); NOX checks them")
+      .disableRecursiveValidation();
+  return p;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm() {
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("Algorithm"));
+  p->set("Method", "partial-newton",
+         "How the contact nonlinearities are solved (DESIGN.md §6): 'fixed-point' (geometry, "
+         "friction thresholds and statuses are fixed points around Newton), "
+         "'generalized-newton' (all three in Newton), 'partial-newton' (geometry a fixed point, "
+         "thresholds and statuses in Newton)",
+         choices({"fixed-point", "generalized-newton", "partial-newton"}));
+  const auto perLoop = choices({"method", "fixed-point", "newton"});
+  p->set("Geometry", "method", "Overrides Method for the pairing and normals", perLoop);
+  p->set("Friction Threshold", "method", "Overrides Method for the friction threshold mu p",
+         perLoop);
+  p->set("Contact Statuses", "method",
+         "Overrides Method for the contact statuses (free, stick, slip)", perLoop);
+  p->set("Max Status Iterations", 30,
+         "Status fixed point: updates allowed per step that still change a status (>= 0)");
+  p->set("Max Threshold Iterations", 30,
+         "Threshold fixed point: updates allowed per step that still move a threshold (>= 0)");
+  p->set("Threshold Tolerance", 1e-6,
+         "Threshold fixed point: converged when no threshold moved by more than this times the "
+         "largest threshold (> 0)");
+  p->set("Cycling Treatment", "none",
+         "What to do at a point detected cycling (doc/algorithms.md): 'none' (count it), "
+         "'automatic' (multiply its coefficients by 10, within [1e-2, 1e2] times the local "
+         "stiffness E/h; refused for penalty, whose coefficients are the model), 'forced' "
+         "(impose its status for the rest of the step: closed for contact cycles, slip for "
+         "stick-slip, stick for slip reversal)",
+         choices({"none", "automatic", "forced"}));
+  p->set("Grazing Tolerance", 1e-6,
+         "Grazing contact is a 2-3-2-3 cycle with |g^N| + |g^N+1| below this times the point's "
+         "size (> 0)");
   return p;
 }
 
 StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& loadSteps,
-                                              const Teuchos::ParameterList& newton) {
+                                              const Teuchos::ParameterList& newton,
+                                              const Teuchos::ParameterList& algorithm) {
   StaticSolverOptions o;
   o.steps = loadSteps.get<int>("Steps");
   o.endTime = loadSteps.get<double>("End Time");
+  o.maxCuts = loadSteps.get<int>("Max Cuts");
   o.maxIterations = newton.get<int>("Max Iterations");
   o.relativeTolerance = newton.get<double>("Relative Tolerance");
   o.absoluteTolerance = newton.get<double>("Absolute Tolerance");
@@ -62,125 +108,197 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.geometryTolerance = newton.get<double>("Geometry Tolerance");
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
+  if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
     throw std::invalid_argument("Newton/Line Search '" + o.lineSearch +
                                 "' needs Newton/Driver: nox (the plain Newton takes full steps)");
+  if (o.driver == "plain" && o.nox.numParams() > 0)
+    throw std::invalid_argument("Newton/NOX is read by the NOX driver only (Newton/Driver: nox)");
   if (o.steps < 1) throw std::invalid_argument("Load Steps/Steps must be >= 1");
   if (!(o.endTime > 0)) throw std::invalid_argument("Load Steps/End Time must be > 0");
+  if (o.maxCuts < 0) throw std::invalid_argument("Load Steps/Max Cuts must be >= 0");
   if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");
   if (o.maxGeometryIterations < 0)
     throw std::invalid_argument("Newton/Max Geometry Iterations must be >= 0");
   if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0) || !(o.geometryTolerance >= 0))
     throw std::invalid_argument("Newton tolerances must be >= 0");
+
+  o.method = algorithm.get<std::string>("Method");
+  const bool all = o.method == "generalized-newton";
+  const bool partial = o.method == "partial-newton";
+  const auto inNewton = [&](const char* key, bool byMethod) {
+    const std::string v = algorithm.get<std::string>(key);
+    return v == "method" ? byMethod : v == "newton";
+  };
+  o.geometryInNewton = inNewton("Geometry", all);
+  o.thresholdsInNewton = inNewton("Friction Threshold", all || partial);
+  o.statusesInNewton = inNewton("Contact Statuses", all || partial);
+  o.maxStatusIterations = algorithm.get<int>("Max Status Iterations");
+  o.maxThresholdIterations = algorithm.get<int>("Max Threshold Iterations");
+  o.thresholdTolerance = algorithm.get<double>("Threshold Tolerance");
+  o.cyclingTreatment = algorithm.get<std::string>("Cycling Treatment");
+  o.grazingTolerance = algorithm.get<double>("Grazing Tolerance");
+  if (o.maxStatusIterations < 0 || o.maxThresholdIterations < 0)
+    throw std::invalid_argument("Algorithm/Max Status and Max Threshold Iterations must be >= 0");
+  if (!(o.thresholdTolerance > 0) || !(o.grazingTolerance > 0))
+    throw std::invalid_argument("Algorithm/Threshold and Grazing Tolerance must be > 0");
   return o;
 }
 
-StaticSolver::StaticSolver(NonlinearSystem& problem, LinearSolver& solver,
-                           StaticSolverOptions options)
-    : problem_(problem), solver_(solver), options_(options) {}
+StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
+                           NewtonMethod& newton, StaticSolverOptions options)
+    : problem_(problem),
+      controls_(controls),
+      newton_(newton),
+      options_(std::move(options)),
+      detector_(options_.grazingTolerance) {}
+
+void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
+  for (const CyclingEvent& e : events) {
+    ++sr.cycling[static_cast<int>(e.kind)];
+    controls_->markCycling(e.point, static_cast<int>(e.kind));
+    if (options_.cyclingTreatment == "forced") {
+      const int status = e.kind == CyclingKind::StickSlip      ? 2
+                         : e.kind == CyclingKind::SlipReversal ? 1
+                                                               : kForcedClosed;
+      controls_->forceStatus(e.point, status);
+    } else if (options_.cyclingTreatment == "automatic") {
+      controls_->scaleCoefficients(e.point, 10.0);
+    }
+  }
+}
+
+bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
+                             const IterationCallback& onIteration) {
+  const double t = sr.time;
+  x.assign(u);
+  problem_.applyDirichlet(t, x);
+  const bool statusFixedPoint = controls_ && !options_.statusesInNewton;
+  const bool thresholdFixedPoint = controls_ && !options_.thresholdsInNewton;
+  if (controls_) {
+    controls_->releaseTreatments();
+    controls_->freezeStatuses(false);
+    controls_->freezeThresholds(false);
+    detector_.reset();
+  }
+  problem_.updateGeometry(x, t);
+  auto residual = problem_.createVector();
+  problem_.assemble(x, t, residual.get(), false);
+  const double reference = residual->norm2();
+  // The fixed points start from the statuses and thresholds of the predictor.
+  if (statusFixedPoint) controls_->freezeStatuses(true);
+  if (thresholdFixedPoint) controls_->freezeThresholds(true);
+
+  const auto fail = [&](const std::string& failure, const std::string& message) {
+    report.failure = failure;
+    report.message = message + " at step " + std::to_string(sr.step) + " (t = " + sci(t) + ")";
+    return false;
+  };
+  int solves = 0;
+  const NewtonMethod::Observer observer = [&](int iteration, double norm) {
+    sr.residual = norm;
+    if (onIteration) onIteration(sr.step, t, solves + iteration, norm);
+    if (controls_) treatCycling(detector_.observe(controls_->pointStates()), sr);
+  };
+  NewtonRequest request;
+  request.time = t;
+  request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
+  request.maxIterations = options_.maxIterations;
+  request.geometryInNewton = options_.geometryInNewton;
+  for (;;) {
+    const NewtonOutcome outcome = newton_.solve(x, request, observer);
+    solves += outcome.iterations;
+    sr.iterations += outcome.iterations;
+    sr.residual = outcome.residual;
+    sr.seconds.assembly += outcome.assemblySeconds;
+    sr.seconds.linearSolve += outcome.linearSolveSeconds;
+    report.linearSolves += outcome.iterations;
+    if (!outcome.failure.empty()) return fail(outcome.failure, outcome.message);
+    if (statusFixedPoint && controls_->updateStatuses(x, t) > 0) {
+      if (sr.statusIterations == options_.maxStatusIterations)
+        return fail("statuses-not-converged",
+                    "contact statuses still changed after " + std::to_string(sr.statusIterations) +
+                        " fixed-point updates (Algorithm/Max Status Iterations)");
+      ++sr.statusIterations;
+      continue;
+    }
+    if (thresholdFixedPoint && controls_->updateThresholds(x, t) > options_.thresholdTolerance) {
+      if (sr.thresholdIterations == options_.maxThresholdIterations)
+        return fail("thresholds-not-converged",
+                    "friction thresholds still moved after " +
+                        std::to_string(sr.thresholdIterations) +
+                        " fixed-point updates (Algorithm/Max Threshold Iterations)");
+      ++sr.thresholdIterations;
+      continue;
+    }
+    if (!options_.geometryInNewton && problem_.updateGeometry(x, t)) {
+      if (sr.geometryIterations == options_.maxGeometryIterations)
+        return fail("geometry-not-converged", "the contact geometry still moved after " +
+                                                  std::to_string(sr.geometryIterations) +
+                                                  " updates (Newton/Max Geometry Iterations)");
+      ++sr.geometryIterations;
+      // Newton converged at a geometry frozen at this very iterate: when the update changes
+      // the residual by less than the geometry tolerance, the fixed point has converged too.
+      problem_.assemble(x, t, residual.get(), false);
+      sr.residual = residual->norm2();
+      if (sr.residual <=
+          std::max(options_.absoluteTolerance, options_.geometryTolerance * reference))
+        return true;
+      continue;
+    }
+    return true;
+  }
+}
 
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                             const IterationCallback& onIteration) {
-  using clock = std::chrono::steady_clock;
   RunReport report;
-  auto residual = problem_.createVector();
-  auto increment = problem_.createVector();
-  auto trial = problem_.createVector();
-  bool firstFactorization = true;
-
-  for (int step = 1; step <= options_.steps; ++step) {
+  auto x = problem_.createVector();
+  const double nominal = options_.endTime / options_.steps;
+  double t = 0, dt = nominal;
+  int cuts = 0;  // in a row, for the current step
+  while (t < options_.endTime * (1 - 1e-12)) {
     StepReport sr;
-    sr.step = step;
-    sr.time = options_.endTime * step / options_.steps;
-    trial->assign(u);
-    problem_.applyDirichlet(sr.time, *trial);
-    problem_.updateGeometry(*trial, sr.time);
-    double reference = 0;
-    bool converged = false, geometryFresh = false;
-    for (int it = 0;; ++it) {
-      auto t0 = clock::now();
-      problem_.assemble(*trial, sr.time, residual.get(), true);
-      sr.seconds.assembly += seconds(t0);
-      const double norm = residual->norm2();
-      if (it == 0) reference = norm;
-      sr.residual = norm;
-      if (onIteration) onIteration(step, options_.steps, it, norm);
-      if (!std::isfinite(norm)) {
-        report.failure = "nan-detected";
-        report.message = "the residual is not finite at step " + std::to_string(step) +
-                         ", iteration " + std::to_string(it);
-        break;
-      }
-      // Just after a geometry update the residual only has to be within the geometry
-      // tolerance: the frozen-geometry Newton converged, and the update moved it by less.
-      if (geometryFresh &&
-          norm <= std::max(options_.absoluteTolerance, options_.geometryTolerance * reference)) {
-        converged = true;
-        break;
-      }
-      if (norm <= std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) {
-        // Converged at a geometry frozen at this very iterate: the fixed point has converged
-        // too (the update changed the residual by less than the tolerance).
-        if (geometryFresh || !problem_.updateGeometry(*trial, sr.time)) {
-          converged = true;
-          break;
-        }
-        if (sr.geometryIterations == options_.maxGeometryIterations) {
-          report.failure = "geometry-not-converged";
-          report.message = "the contact geometry still moved after " +
-                           std::to_string(sr.geometryIterations) + " updates at step " +
-                           std::to_string(step) + " (Newton/Max Geometry Iterations)";
-          break;
-        }
-        ++sr.geometryIterations;
-        geometryFresh = true;
-        continue;  // the residual at the new geometry is assembled at the top
-      }
-      if (it > 0 && norm > 1e10 * std::max(reference, options_.absoluteTolerance)) {
-        report.failure = "diverged";
-        report.message =
-            "Newton diverged at step " + std::to_string(step) + ": ||R|| grew to " + sci(norm);
-        break;
-      }
-      if (sr.iterations == options_.maxIterations) {
-        report.failure = "max-iterations";
-        report.message =
-            "Newton did not converge in " + std::to_string(it) + " iterations at step " +
-            std::to_string(step) + " (||R|| = " + sci(norm) + ", target " +
-            sci(std::max(options_.absoluteTolerance, options_.relativeTolerance * reference)) + ")";
-        break;
-      }
-      t0 = clock::now();
-      try {
-        const bool patternChanged = problem_.takePatternChanged();
-        solver_.setMatrix(problem_.tangent(), firstFactorization || patternChanged);
-        firstFactorization = false;
-        residual->scale(-1.0);
-        increment->putScalar(0.0);
-        solver_.solve(*residual, *increment);
-      } catch (const LinearSolverError& e) {
-        sr.seconds.linearSolve += seconds(t0);
-        report.failure = "linear-solver-failed";
-        report.message = std::string(e.what()) + " (step " + std::to_string(step) + ")";
-        break;
-      }
-      sr.seconds.linearSolve += seconds(t0);
-      ++report.linearSolves;
-      ++sr.iterations;
-      geometryFresh = false;
-      trial->update(1.0, *increment, 1.0);
-    }
+    sr.step = report.steps + 1;
+    sr.cuts = cuts;
+    // Land exactly on End Time (no sliver of a last step).
+    sr.time = (options_.endTime - (t + dt) < 1e-9 * nominal) ? options_.endTime : t + dt;
+    const bool ok = solveStep(u, *x, sr, report, onIteration);
     report.iterations += sr.iterations;
+    report.statusIterations += sr.statusIterations;
+    report.thresholdIterations += sr.thresholdIterations;
     report.geometryIterations += sr.geometryIterations;
+    for (int k = 0; k < kCyclingKinds; ++k)
+      report.cycling[k] += sr.cycling[k];
     report.seconds.assembly += sr.seconds.assembly;
     report.seconds.linearSolve += sr.seconds.linearSolve;
-    if (!converged) return report;
-    u.assign(*trial);
+    if (!ok) {
+      if (cuts == options_.maxCuts) {
+        if (options_.maxCuts > 0) {
+          report.failure = "step-too-small";
+          report.message = "the step to t = " + sci(sr.time) + " still failed after " +
+                           std::to_string(cuts) +
+                           " cuts (Load Steps/Max Cuts); last: " + report.message;
+        }
+        return report;
+      }
+      ++cuts;
+      ++report.cuts;
+      dt /= 2;
+      report.failure.clear();
+      report.message.clear();
+      continue;
+    }
+    u.assign(*x);
     problem_.commitState(u, sr.time);
     ++report.steps;
-    auto t0 = clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);
-    report.seconds.output += seconds(t0);
+    report.seconds.output +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t = sr.time;
+    if (cuts == 0) dt = std::min(2 * dt, nominal);
+    cuts = 0;
   }
   report.converged = true;
   return report;

@@ -1,16 +1,26 @@
 #pragma once
-// Quasi-static load stepping with a Newton loop on R(x, t) = 0.
-// Per step: prescribed values at the new time, geometry frozen at the start state, then Newton
-// until ||R|| <= max(Absolute Tolerance, Relative Tolerance * ||R at the step's first iterate||).
-// When Newton has converged the geometry is updated at the solution (a fixed point on the
-// geometry, as in the seed's partial Newton); if it moved, Newton goes on from there. Statuses
-// and friction threshold are Newton variables here (generalized Jacobian of the formulation).
-// The configurable algorithms (fixed point, generalized and partial Newton on NOX) come next.
+// Quasi-static load stepping with the seed's nested algorithms (DESIGN.md §6 "Algorithms").
+//
+// Per load step: prescribed values at the new time, the geometry paired at the predictor, then
+// a Newton solve (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to
+// them, innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
+// Newton" follows the iterate instead (statuses and thresholds through the formulation's
+// generalized Jacobian; the geometry re-paired at every iterate, its tangent without the
+// geometric terms: see doc/algorithms.md). Presets:
+//   fixed-point          geometry, thresholds, statuses all fixed points
+//   generalized-newton   all three in Newton
+//   partial-newton       geometry a fixed point, thresholds and statuses in Newton
+// Every Newton iterate feeds the cycling detector; the treatment (none, automatic, forced)
+// acts on the cycling points for the rest of the step. A failed step is cut in two, up to
+// Max Cuts times; steps that converge easily let the step grow back.
+#include "algorithms/CyclingDetector.hpp"
+#include "algorithms/NewtonMethod.hpp"
+#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
-#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
 #include <functional>
 #include <string>
 
@@ -19,43 +29,64 @@ namespace contactlab {
 struct StaticSolverOptions {
   int steps = 1;
   double endTime = 1.0;
+  int maxCuts = 0;  // bisections of a failed step (0: a failed step ends the run)
   int maxIterations = 20;
   double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
   int maxGeometryIterations = 10;
   double geometryTolerance = 1e-6;
-  std::string driver = "plain";          // "plain" (StaticSolver) or "nox" (NoxNewton)
+  std::string driver = "plain";          // "plain" (PlainNewton) or "nox" (NoxNewton)
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
+  Teuchos::ParameterList nox;            // passed through to NOX
+  // Algorithm.
+  std::string method = "partial-newton";
+  bool geometryInNewton = false, thresholdsInNewton = true, statusesInNewton = true;
+  int maxStatusIterations = 30;
+  int maxThresholdIterations = 30;
+  double thresholdTolerance = 1e-6;
+  std::string cyclingTreatment = "none";  // none | automatic | forced
+  double grazingTolerance = 1e-6;
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();
+  static Teuchos::RCP<const Teuchos::ParameterList> validAlgorithm();
   static StaticSolverOptions from(const Teuchos::ParameterList& loadSteps,
-                                  const Teuchos::ParameterList& newton);
+                                  const Teuchos::ParameterList& newton,
+                                  const Teuchos::ParameterList& algorithm);
 };
 
 struct PhaseSeconds {
   double assembly = 0, linearSolve = 0, output = 0;
 };
 
+using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind (0 unused)
+
 struct StepReport {
-  int step = 0;  // 1-based
+  int step = 0;  // 1-based, converged steps
   double time = 0;
-  int iterations = 0;          // Newton iterations (linear solves) of this step
-  int geometryIterations = 0;  // geometry updates that moved and restarted Newton
+  int cuts = 0;                 // bisections before this step converged
+  int iterations = 0;           // Newton iterations (linear solves), failed attempts included
+  int statusIterations = 0;     // status fixed-point updates that changed a status
+  int thresholdIterations = 0;  // threshold fixed-point updates that moved a threshold
+  int geometryIterations = 0;   // geometry updates that moved and restarted Newton
   double residual = 0;
+  CyclingCounts cycling{};
   PhaseSeconds seconds;
 };
 
 struct RunReport {
   bool converged = false;
   std::string failure;  // empty, or a named reason: "diverged", "max-iterations",
-                        // "nan-detected", "linear-solver-failed",
-                        // "geometry-not-converged"
+                        // "nan-detected", "linear-solver-failed", "nonlinear-solver-error",
+                        // "geometry-not-converged", "statuses-not-converged",
+                        // "thresholds-not-converged", "step-too-small"
   std::string message;  // one sentence for the user
   int steps = 0;        // converged steps
   int iterations = 0;   // total Newton iterations
-  int geometryIterations = 0;
+  int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
+  int cuts = 0;
+  CyclingCounts cycling{};
   PhaseSeconds seconds;
 };
 
@@ -63,9 +94,11 @@ class StaticSolver {
  public:
   using StepCallback = std::function<void(const StepReport&, const Vector& u)>;
   using IterationCallback =
-      std::function<void(int step, int steps, int iteration, double residual)>;
+      std::function<void(int step, double time, int iteration, double residual)>;
 
-  StaticSolver(NonlinearSystem& problem, LinearSolver& solver, StaticSolverOptions options);
+  // `controls` is the system's contact seam, or null for a system without contact.
+  StaticSolver(NonlinearSystem& problem, ContactControls* controls, NewtonMethod& newton,
+               StaticSolverOptions options);
 
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
   // solution and onStep runs (results are written there). Never throws on a numerical failure:
@@ -73,9 +106,16 @@ class StaticSolver {
   RunReport run(Vector& u, const StepCallback& onStep, const IterationCallback& onIteration = {});
 
  private:
+  // One attempt at the step to time t from the converged state u; x holds the result.
+  bool solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
+                 const IterationCallback& onIteration);
+  void treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
+
   NonlinearSystem& problem_;
-  LinearSolver& solver_;
+  ContactControls* controls_;
+  NewtonMethod& newton_;
   const StaticSolverOptions options_;
+  CyclingDetector detector_;
 };
 
 }  // namespace contactlab

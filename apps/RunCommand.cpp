@@ -1,6 +1,6 @@
 #include "apps/RunCommand.hpp"
 
-#include "algorithms/NoxNewton.hpp"
+#include "algorithms/RunStatic.hpp"
 #include "apps/DefaultScene.hpp"
 #include "apps/SceneModel.hpp"
 #include "core/io/CsvWriter.hpp"
@@ -60,17 +60,18 @@ JsonValue typedSection(const Teuchos::ParameterList& section) {
 class Progress {
  public:
   explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
-  void iteration(int step, int steps, int iteration, double residual, double elapsed) {
+  void iteration(int step, double time, int iteration, double residual, double elapsed) {
     if (!enabled_ || !tty_) return;
-    std::fprintf(stderr, "\r  step %d/%d  iteration %d  |R| = %.3e  elapsed %.1f s   ", step, steps,
-                 iteration, residual, elapsed);
+    std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s   ", step,
+                 time, iteration, residual, elapsed);
     std::fflush(stderr);
   }
   void step(const StepReport& s, int steps, double elapsed) {
     if (!enabled_) return;
     if (tty_) std::fprintf(stderr, "\r%70s\r", "");
-    std::fprintf(stderr, "  step %d/%d  t = %g  %d iterations  |R| = %.3e  elapsed %.1f s\n",
-                 s.step, steps, s.time, s.iterations, s.residual, elapsed);
+    std::fprintf(
+        stderr, "  step %d (%d planned)  t = %g  %d iterations%s  |R| = %.3e  elapsed %.1f s\n",
+        s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "", s.residual, elapsed);
   }
 
  private:
@@ -148,12 +149,27 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // 2. Solve; each converged step is written at once.
   MPI_Comm mpiComm = rawMpiComm(comm);
   std::unique_ptr<VtkSeriesWriter> vtk;
-  CsvWriter stepsCsv({"step", "time", "newton_iterations", "geometry_iterations", "linear_solves",
-                      "residual", "contact_points", "stick_points", "slip_points", "cycling_events",
-                      "assembly_s", "pairing_s", "contact_s", "linear_solve_s"});
+  std::vector<std::string> stepColumns{"step",
+                                       "time",
+                                       "cuts",
+                                       "newton_iterations",
+                                       "status_iterations",
+                                       "threshold_iterations",
+                                       "geometry_iterations",
+                                       "linear_solves",
+                                       "residual",
+                                       "contact_points",
+                                       "stick_points",
+                                       "slip_points",
+                                       "cycling_events"};
+  for (int k = 1; k < kCyclingKinds; ++k)
+    stepColumns.push_back(std::string("cycling_") + cyclingKindName(static_cast<CyclingKind>(k)));
+  for (const char* c : {"assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
+    stepColumns.push_back(c);
+  CsvWriter stepsCsv(stepColumns);
   Progress progress(root);
   auto x = system.createVector();
-  StaticSolver driver(system, *solver, sm.solverOptions);
+
   // The displacement part of the system's unknowns (the whole vector without contact).
   auto displacementOf = [&](const Vector& solution) {
     return contact ? contact->displacement(solution)
@@ -212,25 +228,38 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       lastContact = contact->contactSeconds();
       if (root) writeContactCsv();
     }
-    stepsCsv.addRow(s.step, s.time, s.iterations, s.geometryIterations, s.iterations, s.residual,
-                    cr.contact, cr.stick, cr.slip, 0, s.seconds.assembly - contactTerms, pairing,
-                    contactTerms, s.seconds.linearSolve);
+    int events = 0;
+    for (int k = 1; k < kCyclingKinds; ++k)
+      events += s.cycling[k];
+    using F = CsvWriter;
+    std::vector<std::string> row{F::format(s.step),
+                                 F::format(s.time),
+                                 F::format(s.cuts),
+                                 F::format(s.iterations),
+                                 F::format(s.statusIterations),
+                                 F::format(s.thresholdIterations),
+                                 F::format(s.geometryIterations),
+                                 F::format(s.iterations),
+                                 F::format(s.residual),
+                                 F::format(cr.contact),
+                                 F::format(cr.stick),
+                                 F::format(cr.slip),
+                                 F::format(events)};
+    for (int k = 1; k < kCyclingKinds; ++k)
+      row.push_back(F::format(s.cycling[k]));
+    for (double v :
+         {s.seconds.assembly - contactTerms, pairing, contactTerms, s.seconds.linearSolve})
+      row.push_back(F::format(v));
+    stepsCsv.addFormattedRow(std::move(row));
     if (root) stepsCsv.write(outDir + "/steps.csv");
     recordProbes(*solution);
     progress.step(s, steps, elapsed());
   };
-  auto onIteration = [&](int step, int n, int it, double residual) {
-    if (root) progress.iteration(step, n, it, residual, elapsed());
+  auto onIteration = [&](int step, double time, int it, double residual) {
+    if (root) progress.iteration(step, time, it, residual, elapsed());
   };
-  RunReport report;
-  if (sm.solverOptions.driver == "nox") {
-    NoxNewtonOptions nox;
-    nox.steps = sm.solverOptions;
-    nox.lineSearch = sm.solverOptions.lineSearch;
-    report = NoxNewton(system, *solver, nox).run(*x, onStep);
-  } else {
-    report = driver.run(*x, onStep, onIteration);
-  }
+  const RunReport report =
+      runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep, onIteration);
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "
@@ -275,6 +304,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("slip_points", r.slip)
         .set("surfaces_met", contact->everInContact());
   };
+  auto loop = [](bool inNewton) { return inNewton ? "newton" : "fixed-point"; };
+  auto cyclingSummary = [&] {
+    JsonValue counts = JsonValue::object();
+    for (int k = 1; k < kCyclingKinds; ++k)
+      counts.set(cyclingKindName(static_cast<CyclingKind>(k)), report.cycling[k]);
+    return counts;
+  };
   if (root) {
     JsonValue reactions = JsonValue::object();
     for (const auto& r : problem->reactions())
@@ -292,8 +328,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("formulation", contactFormulations())
         .set("discretization", contact ? JsonValue("node-to-segment") : JsonValue())
         .set("algorithm", JsonValue::object()
-                              .set("type", "newton")
-                              .set("parameters", toJson(params.sublist("Newton"))))
+                              .set("method", sm.solverOptions.method)
+                              .set("geometry", loop(sm.solverOptions.geometryInNewton))
+                              .set("friction_threshold", loop(sm.solverOptions.thresholdsInNewton))
+                              .set("contact_statuses", loop(sm.solverOptions.statusesInNewton))
+                              .set("cycling_treatment", sm.solverOptions.cyclingTreatment)
+                              .set("parameters", toJson(params.sublist("Algorithm")))
+                              .set("newton", toJson(params.sublist("Newton"))))
         .set("linear_solver", typedSection(params.sublist("Linear Solver")))
         .set("dofs", static_cast<long long>(problem->dofs().numGlobalDofs()))
         .set("unknowns",
@@ -305,13 +346,17 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("elements", static_cast<long long>(sm.model.mesh->numElements()))
         .set("contact_points", contact ? static_cast<long long>(contact->numPoints()) : 0LL)
         .set("ranks", comm->getSize())
-        .set("load_steps",
-             JsonValue::object().set("requested", steps).set("converged", report.steps))
+        .set("load_steps", JsonValue::object()
+                               .set("requested", steps)
+                               .set("converged", report.steps)
+                               .set("cuts", report.cuts))
         .set("iterations", JsonValue::object()
                                .set("newton", report.iterations)
+                               .set("status", report.statusIterations)
+                               .set("threshold", report.thresholdIterations)
                                .set("geometry", report.geometryIterations))
         .set("linear_solves", report.linearSolves)
-        .set("cycling", JsonValue::object())
+        .set("cycling", cyclingSummary())
         .set("seconds", JsonValue::object()
                             .set("setup", setupSeconds)
                             .set("assembly", report.seconds.assembly - contactSeconds)

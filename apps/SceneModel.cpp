@@ -147,7 +147,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
 
   SceneModel sm;
   try {
-    sm.solverOptions = StaticSolverOptions::from(p.sublist("Load Steps"), p.sublist("Newton"));
+    sm.solverOptions = StaticSolverOptions::from(p.sublist("Load Steps"), p.sublist("Newton"),
+                                                 p.sublist("Algorithm"));
   } catch (const std::invalid_argument& e) {
     throw InputError(where + ": " + e.what());
   }
@@ -230,6 +231,16 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   for (auto it = contact.begin(); it != contact.end(); ++it)
     sm.contact.push_back(
         contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh, endTime, where));
+  // Combinations that cannot work are refused here, with the reason.
+  for (const ContactZone& zone : sm.contact)
+    if (sm.solverOptions.cyclingTreatment == "automatic" && zone.law->coefficientsChangeSolution())
+      throw InputError(where +
+                       ": Algorithm/Cycling Treatment 'automatic' adapts the formulation's "
+                       "coefficients, but in Contact/" +
+                       zone.name + " the formulation '" + zone.formulation +
+                       "' takes them as part of the model (they set the "
+                       "penetration and the solution); use 'forced' or 'none', or a formulation "
+                       "with multipliers");
 
   // Output and probes.
   const ParameterList& output = p.sublist("Output");

@@ -196,6 +196,7 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
                                     }));
   valid.set("Load Steps", *StaticSolverOptions::validLoadSteps());
   valid.set("Newton", *StaticSolverOptions::validNewton());
+  valid.set("Algorithm", *StaticSolverOptions::validAlgorithm());
   valid.set("Linear Solver",
             typedSection(linearSolverRegistry(), userSublist(&scene, "Linear Solver"), "mumps",
                          where, "Linear Solver"));
@@ -287,6 +288,8 @@ std::string sceneReference() {
   describeList(out, *StaticSolverOptions::validLoadSteps(), "");
   out << "\n### Newton\n\n";
   describeList(out, *StaticSolverOptions::validNewton(), "");
+  out << "\n### Algorithm\n\n";
+  describeList(out, *StaticSolverOptions::validAlgorithm(), "");
   out << "\n### Output\n\n";
   describeList(out, outputSection(nullptr, ""), "");
   out << "\n### Output/Probes/<name>\n\n";

@@ -5,7 +5,7 @@
 // and the pressure error against Hertz for the computed load (in % of p0, r <= 0.9 a).
 //
 //   bench_hertz ELEMENT SIZE_CONTACT [--header]
-#include "algorithms/StaticSolver.hpp"
+#include "algorithms/RunStatic.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshGenerators.hpp"
@@ -84,9 +84,8 @@ int main(int argc, char** argv) {
     StaticSolverOptions options;
     options.steps = 1;
     options.maxIterations = 30;
-    StaticSolver driver(contact, *solver, options);
     auto x = contact.createVector();
-    const RunReport report = driver.run(*x, {});
+    const RunReport report = runStatic(contact, &contact, *solver, options, *x);
     const ContactResultants r = contact.resultants();
     const double Estar = E / (1 - nu * nu);
     const double P = r.normalForceMagnitude;

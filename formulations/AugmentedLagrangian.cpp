@@ -18,15 +18,17 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
   const double w = in.weight;
   out = LawOutput{};
   auto J = [&](int i, int j) -> double& { return out.J[i * n + j]; };
+  const double rn = rn_ * in.coefficientScale, rt = rt_ * in.coefficientScale;
 
-  const double pHat = in.p - rn_ * in.gap;
+  const double pHat = in.p - rn * in.gap;
   const bool closed = in.frozenStatus >= 0 ? in.frozenStatus > 0 : pHat >= 0;
+  out.indicator = pHat;
   const double SR = closed ? 1.0 : 0.0;
   out.r[g] = -w * SR * pHat;
-  J(g, g) = w * SR * rn_;
+  J(g, g) = w * SR * rn;
   J(g, p) = -w * SR;
-  out.r[p] = -(w / rn_) * (in.p - SR * pHat);
-  J(p, p) = -(w / rn_) * (1 - SR);
+  out.r[p] = -(w / rn) * (in.p - SR * pHat);
+  J(p, p) = -(w / rn) * (1 - SR);
   J(p, g) = -w * SR;
   out.pressure = SR * pHat;
   out.status = closed ? ContactStatus::Stick : ContactStatus::Free;
@@ -34,12 +36,12 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
 
   std::array<double, 2> LamHat{};
   for (int k = 0; k < nt; ++k)
-    LamHat[k] = in.Lambda[k] + rt_ * in.slip[k];
+    LamHat[k] = in.Lambda[k] + rt * in.slip[k];
   const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   const double tau = thresholdFrozen ? in.frozenThreshold : in.mu * pHat;
   const double dTauDp = thresholdFrozen ? 0.0 : in.mu;
-  const double dTauDg = thresholdFrozen ? 0.0 : -in.mu * rn_;
+  const double dTauDg = thresholdFrozen ? 0.0 : -in.mu * rn;
   // A closed point with a zero threshold (p^ = 0, e.g. surfaces just touching) transmits no
   // friction and Lambda = lambda_t / (mu lambda_n) is undefined there: its friction rows take
   // the open branch (Lambda = 0), a piece of the generalized Jacobian that stays regular.
@@ -59,10 +61,10 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
     out.r[L] = w * (in.Lambda[k] - SR * b.P[k]);
     for (int j = 0; j < nt; ++j) {
       const double D = b.D[k * nt + j];
-      J(v, 1 + j) = w * SR * tau * D * rt_;
+      J(v, 1 + j) = w * SR * tau * D * rt;
       J(v, lam + j) = w * SR * tau * D;
       J(L, lam + j) = w * ((k == j ? 1.0 : 0.0) - SR * D);
-      J(L, 1 + j) = -w * SR * D * rt_;
+      J(L, 1 + j) = -w * SR * D * rt;
     }
     out.tangentialTraction[k] = -SR * tau * b.P[k];
   }

@@ -21,6 +21,7 @@ class AugmentedLagrangian : public ContactLaw {
   std::string name() const override { return "augmented-lagrangian"; }
   bool hasMultipliers() const override { return true; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
+  double normalCoefficient() const override { return rn_; }
 
  private:
   const double rn_, rt_;

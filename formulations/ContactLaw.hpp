@@ -39,10 +39,15 @@ struct LawInput {
   // in the current tangent basis).
   std::array<double, 2> tangentialOld{};
   // The seam for the algorithms: a status or friction threshold frozen by a fixed-point loop.
-  // frozenStatus < 0 lets the status follow the iterate (Newton); frozenThreshold < 0 lets the
+  // frozenStatus < 0 lets the status follow the iterate (Newton); 0 free, 1 stick, 2 slip, 3
+  // closed with the friction status following the iterate. frozenThreshold < 0 lets the
   // friction threshold mu * pressure follow it.
   int frozenStatus = -1;
   double frozenThreshold = -1.0;
+  // Local scale of the formulation's coefficients (c_n, c_t or r_n, r_t), set by the automatic
+  // cycling treatment; 1 elsewhere. Laws whose coefficients are part of the model (penalty)
+  // ignore it.
+  double coefficientScale = 1.0;
 };
 
 struct LawOutput {
@@ -52,6 +57,9 @@ struct LawOutput {
   double pressure = 0.0;                       // contact pressure transmitted (>= 0)
   std::array<double, 2> tangentialTraction{};  // on the slave, tangent basis (opposes slip)
   double threshold = 0.0;                      // friction threshold in use (mu * pressure-like)
+  // The quantity whose sign decides the natural contact status, whatever is frozen: closed
+  // when >= 0 (augmented pressure p^ = p - c g; penalty: -eps_n g).
+  double indicator = 0.0;
 };
 
 class ContactLaw {
@@ -63,6 +71,11 @@ class ContactLaw {
   // Number of law variables: kinematic (1 + nt) plus multipliers (1 + nt, if any).
   int size(int nt) const { return (1 + nt) * (hasMultipliers() ? 2 : 1); }
   virtual void evaluate(const LawInput& in, LawOutput& out) const = 0;
+  // The normal coefficient (c_n, r_n or eps_n) before any local scaling.
+  virtual double normalCoefficient() const = 0;
+  // Whether the coefficients change the solution (penalty) rather than only the path to it;
+  // the automatic cycling treatment, which adapts them, is refused for such laws.
+  virtual bool coefficientsChangeSolution() const { return false; }
 };
 
 }  // namespace contactlab

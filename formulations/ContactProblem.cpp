@@ -6,6 +6,8 @@
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -44,6 +46,11 @@ struct ContactProblem::Point {
   int frozenStatus = -1;
   double frozenThreshold = -1.0;
   double threshold = 0.0;  // of the last evaluation
+  double indicator = 0.0;  // of the last evaluation (closed when >= 0)
+  // Cycling treatments for the current step (-1 / 1: none).
+  int forcedStatus = -1;
+  double coefficientScale = 1.0;
+  int cycling = 0;
   // Last evaluation.
   ContactPointResult result;
   std::array<double, 3> slipIncrement{};
@@ -153,6 +160,120 @@ void ContactProblem::freezeStatuses(bool frozen) {
 void ContactProblem::freezeThresholds(bool frozen) {
   for (Point& pt : points_)
     pt.frozenThreshold = frozen ? pt.threshold : -1.0;
+}
+
+void ContactProblem::evaluateAll(const Vector& x, double t) {
+  importSurface(x);
+  std::vector<double> re, ke;
+  for (Point& pt : points_)
+    evaluatePoint(pt, t, false, re, ke);
+}
+
+int ContactProblem::updateStatuses(const Vector& x, double t) {
+  std::vector<int> old(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    old[i] = points_[i].frozenStatus;
+    points_[i].frozenStatus = -1;
+  }
+  evaluateAll(x, t);
+  int changed = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    points_[i].frozenStatus = static_cast<int>(points_[i].result.status);
+    // A point whose status the cycling treatment forces does not hold the fixed point up.
+    if (points_[i].frozenStatus != old[i] && points_[i].forcedStatus < 0) ++changed;
+  }
+  return changed;
+}
+
+double ContactProblem::updateThresholds(const Vector& x, double t) {
+  std::vector<double> old(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    old[i] = points_[i].frozenThreshold;
+    points_[i].frozenThreshold = -1.0;
+  }
+  evaluateAll(x, t);
+  double change = 0, largest = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    Point& pt = points_[i];
+    pt.frozenThreshold = pt.threshold;
+    change = std::max(change, std::abs(pt.threshold - std::max(old[i], 0.0)));
+    largest = std::max(largest, pt.threshold);
+  }
+  return largest > 0 ? change / largest : 0.0;
+}
+
+std::vector<ContactPointState> ContactProblem::pointStates() const {
+  std::vector<ContactPointState> states(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const Point& pt = points_[i];
+    ContactPointState& s = states[i];
+    const bool open = pt.indicator < 0;
+    s.zone = !pt.paired ? 0 : open ? (pt.result.gap > 0 ? 1 : 2) : (pt.result.gap <= 0 ? 3 : 4);
+    s.status = static_cast<int>(pt.result.status);
+    s.gap = pt.result.gap;
+    s.length = dim_ == 3 ? std::sqrt(pt.weight) : pt.weight;
+    s.traction = pt.result.traction;
+  }
+  return states;
+}
+
+void ContactProblem::forceStatus(std::size_t point, int status) {
+  points_.at(point).forcedStatus = status;
+}
+
+void ContactProblem::computeLocalStiffness() {
+  // Mean diagonal stiffness of the slave node's dofs over its tributary area: E/h up to a
+  // constant of the element. Rows live on their owners; the sum over ranks gives every rank
+  // the same values (treatment decisions are replicated).
+  const auto& K = solid_.tangent();
+  const DofMap& dofs = solid_.dofs();
+  std::vector<double> local(points_.size(), 0.0), global(points_.size(), 0.0);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const Point& pt = points_[i];
+    for (int c = 0; c < dim_; ++c) {
+      const GO dof = pt.dofs[c];
+      const LO row = K->getRowMap()->getLocalElement(dof);
+      if (row == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+      typename Matrix::local_inds_host_view_type cols;
+      typename Matrix::values_host_view_type values;
+      K->getLocalRowView(row, cols, values);
+      for (std::size_t j = 0; j < cols.extent(0); ++j)
+        if (K->getColMap()->getGlobalElement(cols(j)) == dof)
+          local[i] += std::abs(values(j)) / (dim_ * pt.weight);
+    }
+  }
+  Teuchos::reduceAll(*dofs.comm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
+                     local.data(), global.data());
+  localStiffness_ = std::move(global);
+}
+
+bool ContactProblem::scaleCoefficients(std::size_t point, double factor) {
+  // The coefficient stays within [1e-2, 1e2] times the local stiffness E/h: below, the status
+  // is decided by the multiplier alone; above, the system is as ill-conditioned as a stiff
+  // penalty.
+  if (localStiffness_.size() != points_.size()) computeLocalStiffness();
+  Point& pt = points_.at(point);
+  const double nominal = zones_[pt.zone].law->normalCoefficient();
+  const double lo = 1e-2 * localStiffness_[point], hi = 1e2 * localStiffness_[point];
+  const double wanted = std::clamp(nominal * pt.coefficientScale * factor, lo, hi);
+  const double scale = wanted / nominal;
+  if (std::abs(scale - pt.coefficientScale) <= 1e-12 * pt.coefficientScale) return false;
+  pt.coefficientScale = scale;
+  return true;
+}
+
+void ContactProblem::releaseTreatments() {
+  for (Point& pt : points_) {
+    pt.forcedStatus = -1;
+    pt.coefficientScale = 1.0;
+    pt.cycling = 0;
+    pt.result.cycling = 0;
+  }
+}
+
+void ContactProblem::markCycling(std::size_t point, int kind) {
+  points_.at(point).cycling = kind;
+  points_.at(point).result.cycling = kind;
 }
 
 void ContactProblem::buildSurfaceMaps() {
@@ -568,11 +689,13 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   }
   for (int k = 0; k < nt; ++k)
     in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
-  in.frozenStatus = pt.frozenStatus;
+  in.frozenStatus = pt.forcedStatus >= 0 ? pt.forcedStatus : pt.frozenStatus;
   in.frozenThreshold = pt.frozenThreshold;
+  in.coefficientScale = pt.coefficientScale;
   LawOutput out;
   law.evaluate(in, out);
   pt.threshold = out.threshold;
+  pt.indicator = out.indicator;
 
   ContactPointResult& r = pt.result;
   r.zone = pt.zone;
@@ -584,6 +707,7 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   r.pressure = out.pressure;
   r.normal = pt.normal;
   r.status = out.status;
+  r.cycling = pt.cycling;
   r.traction = {0, 0, 0};
   pt.slipIncrement = {0, 0, 0};
   for (int k = 0; k < nt; ++k)
@@ -655,8 +779,11 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
       values[solidOffsets_[j]] += kValues(j);
   }
   std::vector<double> re, ke, row;
+  statusChanges_ = 0;
   for (Point& pt : points_) {
+    const ContactStatus before = pt.result.status;
     evaluatePoint(pt, t, withTangent, re, ke);
+    if (pt.result.status != before) ++statusChanges_;
     const int nd = static_cast<int>(pt.dofs.size());
     for (int i = 0; i < nd; ++i) {
       if (pt.rows[i] < 0) continue;
@@ -731,19 +858,21 @@ void ContactProblem::addPointData(MeshPiece& piece) const {
   for (const Point& pt : points_)
     byNode.emplace(pt.node, &pt.result);  // first zone wins for a node in two zones
   FieldData pressure{"contact_pressure", 1, {}}, traction{"tangential_traction", 3, {}},
-      gap{"gap", 1, {}}, slip{"slip", 3, {}}, status{"contact_status", 1, {}};
+      gap{"gap", 1, {}}, slip{"slip", 3, {}}, status{"contact_status", 1, {}},
+      cycling{"cycling", 1, {}};
   for (std::int64_t node : nodes) {
     auto it = byNode.find(node);
     const ContactPointResult* p = it == byNode.end() ? nullptr : it->second;
     pressure.values.push_back(p ? p->pressure : 0.0);
     gap.values.push_back(p && p->paired ? p->gap : 0.0);
     status.values.push_back(p ? static_cast<double>(p->status) : 0.0);
+    cycling.values.push_back(p ? static_cast<double>(p->cycling) : 0.0);
     for (int c = 0; c < 3; ++c) {
       traction.values.push_back(p ? p->traction[c] : 0.0);
       slip.values.push_back(p ? p->slip[c] : 0.0);
     }
   }
-  for (auto* f : {&pressure, &traction, &gap, &slip, &status})
+  for (auto* f : {&pressure, &traction, &gap, &slip, &status, &cycling})
     piece.pointData.push_back(std::move(*f));
 }
 

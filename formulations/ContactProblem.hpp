@@ -25,6 +25,7 @@
 #include "core/contact/ContactSearch.hpp"
 #include "core/contact/RigidObstacle.hpp"
 #include "core/io/MeshPiece.hpp"
+#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactZone.hpp"
@@ -48,6 +49,7 @@ struct ContactPointResult {
   std::array<double, 3> normal{};
   std::array<double, 3> slip{};  // accumulated slip (sum of converged increments)
   ContactStatus status = ContactStatus::Free;
+  int cycling = 0;  // cycling kind detected in the step (CyclingKind), 0 none
 };
 
 struct ContactResultants {
@@ -59,7 +61,7 @@ struct ContactResultants {
   int contact = 0, stick = 0, slip = 0;
 };
 
-class ContactProblem : public NonlinearSystem {
+class ContactProblem : public NonlinearSystem, public ContactControls {
  public:
   // `solid` must outlive this. Throws InputError for a zone whose groups are missing.
   ContactProblem(Problem& solid, std::vector<ContactZone> zones);
@@ -75,11 +77,17 @@ class ContactProblem : public NonlinearSystem {
   bool updateGeometry(const Vector& x, double t) override;
   void commitState(const Vector& x, double t) override;
 
-  // The seam for the algorithms (fixed points on statuses and friction threshold): freeze the
-  // statuses / thresholds of the last evaluation at every point, so that the laws use them
-  // instead of the iterate's, until released.
-  void freezeStatuses(bool frozen);
-  void freezeThresholds(bool frozen);
+  // ContactControls: the seam for the algorithms (fixed points, cycling treatments).
+  void freezeStatuses(bool frozen) override;
+  void freezeThresholds(bool frozen) override;
+  int updateStatuses(const Vector& x, double t) override;
+  double updateThresholds(const Vector& x, double t) override;
+  int statusChanges() const override { return statusChanges_; }
+  std::vector<ContactPointState> pointStates() const override;
+  void forceStatus(std::size_t point, int status) override;
+  bool scaleCoefficients(std::size_t point, double factor) override;
+  void releaseTreatments() override;
+  void markCycling(std::size_t point, int kind) override;
 
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;
@@ -106,6 +114,8 @@ class ContactProblem : public NonlinearSystem {
   void computeWeights();
   void buildGraph();
   void importSurface(const Vector& x);
+  void evaluateAll(const Vector& x, double t);
+  void computeLocalStiffness();
   void evaluatePoint(Point& pt, double t, bool withTangent, std::vector<double>& re,
                      std::vector<double>& ke) const;
   std::array<double, 3> surfacePosition(std::int64_t node) const;
@@ -134,6 +144,8 @@ class ContactProblem : public NonlinearSystem {
   std::vector<int> signature_;             // master facet (or -2 obstacle, -1 none) per point
   bool patternChanged_ = true, frozenOnce_ = false, everInContact_ = false;
   double pairingSeconds_ = 0, contactSeconds_ = 0;
+  int statusChanges_ = 0;
+  std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
 };
 
 }  // namespace contactlab

@@ -18,14 +18,16 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
   const double w = in.weight;
   out = LawOutput{};
   auto J = [&](int i, int j) -> double& { return out.J[i * n + j]; };
+  const double cn = cn_ * in.coefficientScale, ct = ct_ * in.coefficientScale;
 
-  const double pHat = in.p - cn_ * in.gap;
+  const double pHat = in.p - cn * in.gap;
   const bool closed = in.frozenStatus >= 0 ? in.frozenStatus > 0 : pHat >= 0;
+  out.indicator = pHat;
   const double SR = closed ? 1.0 : 0.0;
   out.r[g] = -w * in.p;
   J(g, p) = -w;
-  out.r[p] = -(w / cn_) * (in.p - SR * pHat);
-  J(p, p) = -(w / cn_) * (1 - SR);
+  out.r[p] = -(w / cn) * (in.p - SR * pHat);
+  J(p, p) = -(w / cn) * (1 - SR);
   J(p, g) = -w * SR;
   out.pressure = in.p;
   out.status = closed ? ContactStatus::Stick : ContactStatus::Free;
@@ -33,7 +35,7 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
 
   std::array<double, 2> LamHat{};
   for (int k = 0; k < nt; ++k)
-    LamHat[k] = in.Lambda[k] + ct_ * in.slip[k];
+    LamHat[k] = in.Lambda[k] + ct * in.slip[k];
   const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   // Threshold mu (p - c_n g): equal to mu p at convergence (g = 0 on active points), and
@@ -54,14 +56,14 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
     out.r[v] = w * tau * in.Lambda[k];
     if (!thresholdFrozen) {
       J(v, p) = w * in.mu * in.Lambda[k];
-      J(v, g) = -w * in.mu * cn_ * in.Lambda[k];
+      J(v, g) = -w * in.mu * cn * in.Lambda[k];
     }
     J(v, L) = w * tau;
     out.r[L] = w * (in.Lambda[k] - SR * b.P[k]);
     for (int j = 0; j < nt; ++j) {
       const double D = b.D[k * nt + j];
       J(L, lam + j) = w * ((k == j ? 1.0 : 0.0) - SR * D);
-      J(L, 1 + j) = -w * SR * D * ct_;
+      J(L, 1 + j) = -w * SR * D * ct;
     }
     out.tangentialTraction[k] = -tau * in.Lambda[k];
   }

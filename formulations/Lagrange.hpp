@@ -18,6 +18,7 @@ class Lagrange : public ContactLaw {
   std::string name() const override { return "lagrange"; }
   bool hasMultipliers() const override { return true; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
+  double normalCoefficient() const override { return cn_; }
 
  private:
   const double cn_, ct_;

@@ -20,6 +20,7 @@ void Penalty::evaluate(const LawInput& in, LawOutput& out) const {
 
   const bool closed = in.frozenStatus >= 0 ? in.frozenStatus > 0 : in.gap < 0;
   const double SR = closed ? 1.0 : 0.0;
+  out.indicator = -epsN_ * in.gap;
   const double pressure = -SR * epsN_ * in.gap;
   out.r[0] = -w * pressure;
   J(0, 0) = w * SR * epsN_;

@@ -15,6 +15,8 @@ class Penalty : public ContactLaw {
   std::string name() const override { return "penalty"; }
   bool hasMultipliers() const override { return false; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
+  double normalCoefficient() const override { return epsN_; }
+  bool coefficientsChangeSolution() const override { return true; }
 
  private:
   const double epsN_, epsT_;

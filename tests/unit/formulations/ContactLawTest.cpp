@@ -193,6 +193,7 @@ class SignFlipped : public ContactLaw {
   SignFlipped(std::unique_ptr<ContactLaw> law, int entry) : law_(std::move(law)), entry_(entry) {}
   std::string name() const override { return law_->name() + "-flipped"; }
   bool hasMultipliers() const override { return law_->hasMultipliers(); }
+  double normalCoefficient() const override { return law_->normalCoefficient(); }
   void evaluate(const LawInput& in, LawOutput& out) const override {
     law_->evaluate(in, out);
     const int n = size(in.nt);

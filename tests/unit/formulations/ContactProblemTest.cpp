@@ -2,8 +2,7 @@
 // states with a known answer: a block pressed on a rigid plane (uniform pressure, with and
 // without friction) and two stacked blocks with matching meshes, for every formulation, on 1
 // and 2 ranks.
-#include "algorithms/NoxNewton.hpp"
-#include "algorithms/StaticSolver.hpp"
+#include "algorithms/RunStatic.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "formulations/ContactProblem.hpp"
@@ -48,10 +47,9 @@ Solved solve(SolidModel model, std::vector<ContactZone> zones, int steps = 2) {
   auto solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
   StaticSolverOptions options;
   options.steps = steps;
-  StaticSolver driver(contact, *solver, options);
   auto x = contact.createVector();
   Solved s;
-  s.report = driver.run(*x, {});
+  s.report = runStatic(contact, &contact, *solver, options, *x);
   s.resultants = contact.resultants();
   s.points = contact.results();
   for (const auto& r : solid.reactions())
@@ -222,9 +220,8 @@ TEST_P(ContactProblemTest, AssembledTangentMatchesFiniteDifferences) {
     auto solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
     StaticSolverOptions options;
     options.steps = 2;
-    StaticSolver driver(contact, *solver, options);
     auto x = contact.createVector();
-    const RunReport report = driver.run(*x, {});
+    const RunReport report = runStatic(contact, &contact, *solver, options, *x);
     ASSERT_TRUE(report.converged) << dim << "D: " << report.message;
     const ContactResultants r = contact.resultants();
     ASSERT_GT(r.contact, 0);
@@ -358,15 +355,11 @@ TEST_P(ContactProblemTest, NoxNewtonMatchesThePlainNewton) {
     auto x = contact.createVector();
     StaticSolverOptions steps;
     steps.steps = 2;
-    RunReport report;
-    if (lineSearch.empty()) {
-      report = StaticSolver(contact, *solver, steps).run(*x, {});
-    } else {
-      NoxNewtonOptions o;
-      o.steps = steps;
-      o.lineSearch = lineSearch;
-      report = NoxNewton(contact, *solver, o).run(*x);
+    if (!lineSearch.empty()) {
+      steps.driver = "nox";
+      steps.lineSearch = lineSearch;
     }
+    const RunReport report = runStatic(contact, &contact, *solver, steps, *x);
     EXPECT_TRUE(report.converged) << lineSearch << ": " << report.message;
     return std::make_pair(x, report);
   };

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the problem tests: structured meshes of every element type, a linear-elastic model
 // with the exact solution imposed on the whole boundary, and a MUMPS solve.
-#include "algorithms/StaticSolver.hpp"
+#include "algorithms/RunStatic.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "core/problem/Problem.hpp"
@@ -89,8 +89,7 @@ inline Teuchos::RCP<Vector> solve(Problem& problem, LinearSolver& solver) {
   auto u = problem.createVector();
   StaticSolverOptions options;
   options.maxIterations = 3;
-  StaticSolver driver(problem, solver, options);
-  const RunReport report = driver.run(*u, {});
+  const RunReport report = runStatic(problem, nullptr, solver, options, *u);
   if (!report.converged) throw std::runtime_error("solve failed: " + report.message);
   return u;
 }

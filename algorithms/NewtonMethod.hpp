@@ -1,0 +1,46 @@
+#pragma once
+// One Newton solve at a fixed load time, with whatever the algorithm froze (statuses,
+// thresholds, geometry) held by the system: the inner loop of the seed's nested algorithms.
+// StaticSolver runs the load steps and the fixed points around it; PlainNewton and NoxNewton
+// implement it.
+#include "core/problem/ContactControls.hpp"
+#include "core/problem/NonlinearSystem.hpp"
+
+#include <functional>
+#include <string>
+
+namespace contactlab {
+
+struct NewtonRequest {
+  double time = 0;
+  double target = 0;              // converged when ||R|| <= target (and no status changed)
+  int maxIterations = 20;         // linear solves allowed
+  bool geometryInNewton = false;  // re-pair at every iterate (the generalized Newton)
+};
+
+struct NewtonOutcome {
+  int iterations = 0;  // linear solves
+  double residual = 0;
+  std::string failure;  // empty, or a named reason (StaticSolver's list)
+  std::string message;
+  double assemblySeconds = 0, linearSolveSeconds = 0;
+};
+
+class NewtonMethod {
+ public:
+  // Called at every iterate once its residual is known (iteration 0: the starting point).
+  // This is where cycling is detected and treated; it may change the system's frozen state.
+  using Observer = std::function<void(int iteration, double residual)>;
+  virtual ~NewtonMethod() = default;
+  // x: the start, on return the last iterate. Never throws on a numerical failure.
+  virtual NewtonOutcome solve(Vector& x, const NewtonRequest& request,
+                              const Observer& observer) = 0;
+};
+
+// Whether Newton may stop at an iterate with residual `norm`: below the target, and with the
+// contact statuses unchanged since the previous iterate (a residual that is small only because
+// statuses just moved is not a solution yet). Iterate 0 has no previous iterate in this solve.
+bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
+                     int iteration);
+
+}  // namespace contactlab

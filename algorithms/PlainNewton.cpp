@@ -1,0 +1,81 @@
+#include "algorithms/PlainNewton.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace contactlab {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string sci(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", v);
+  return buffer;
+}
+
+}  // namespace
+
+bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
+                     int iteration) {
+  if (!(norm <= request.target)) return false;
+  return iteration == 0 || controls == nullptr || controls->statusChanges() == 0;
+}
+
+NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
+                                 const Observer& observer) {
+  using clock = std::chrono::steady_clock;
+  NewtonOutcome out;
+  auto residual = system_.createVector();
+  auto increment = system_.createVector();
+  double start = 0;
+  for (int it = 0;; ++it) {
+    auto t0 = clock::now();
+    if (request.geometryInNewton && it > 0) system_.updateGeometry(x, request.time);
+    system_.assemble(x, request.time, residual.get(), true);
+    out.assemblySeconds += secondsSince(t0);
+    const double norm = residual->norm2();
+    out.residual = norm;
+    if (it == 0) start = norm;
+    if (!std::isfinite(norm)) {
+      out.failure = "nan-detected";
+      out.message = "the residual is not finite at iteration " + std::to_string(it);
+      return out;
+    }
+    if (observer) observer(it, norm);
+    if (newtonConverged(norm, request, controls_, it)) return out;
+    if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
+      out.failure = "diverged";
+      out.message = "Newton diverged: ||R|| grew to " + sci(norm);
+      return out;
+    }
+    if (out.iterations == request.maxIterations) {
+      out.failure = "max-iterations";
+      out.message = "Newton did not converge in " + std::to_string(out.iterations) +
+                    " iterations (||R|| = " + sci(norm) + ", target " + sci(request.target) + ")";
+      return out;
+    }
+    t0 = clock::now();
+    try {
+      const bool patternChanged = system_.takePatternChanged();
+      solver_.setMatrix(system_.tangent(), !factored_ || patternChanged);
+      factored_ = true;
+      residual->scale(-1.0);
+      increment->putScalar(0.0);
+      solver_.solve(*residual, *increment);
+    } catch (const LinearSolverError& e) {
+      out.linearSolveSeconds += secondsSince(t0);
+      out.failure = "linear-solver-failed";
+      out.message = e.what();
+      return out;
+    }
+    out.linearSolveSeconds += secondsSince(t0);
+    ++out.iterations;
+    x.update(1.0, *increment, 1.0);
+  }
+}
+
+}  // namespace contactlab

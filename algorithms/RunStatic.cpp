@@ -1,0 +1,22 @@
+#include "algorithms/RunStatic.hpp"
+
+#include "algorithms/NoxNewton.hpp"
+#include "algorithms/PlainNewton.hpp"
+
+#include <memory>
+
+namespace contactlab {
+
+RunReport runStatic(NonlinearSystem& system, ContactControls* controls, LinearSolver& solver,
+                    const StaticSolverOptions& options, Vector& u,
+                    const StaticSolver::StepCallback& onStep,
+                    const StaticSolver::IterationCallback& onIteration) {
+  std::unique_ptr<NewtonMethod> newton;
+  if (options.driver == "nox")
+    newton = std::make_unique<NoxNewton>(system, solver, controls, options.lineSearch, options.nox);
+  else
+    newton = std::make_unique<PlainNewton>(system, solver, controls);
+  return StaticSolver(system, controls, *newton, options).run(u, onStep, onIteration);
+}
+
+}  // namespace contactlab

@@ -1,0 +1,55 @@
+#pragma once
+// What the algorithms steer in a system with contact, beside R(x, t) = 0: the fixed points on
+// the contact statuses and friction thresholds, the per-point state that cycling detection
+// watches, and the per-point treatments of cycling. A NonlinearSystem without contact has none
+// of this; drivers take a ContactControls pointer that may be null.
+#include "core/problem/LinearAlgebra.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace contactlab {
+
+// The state of one contact point at the last evaluation, as cycling detection sees it.
+struct ContactPointState {
+  // Zone of the normal law in the (gap, augmented pressure) plane, DESIGN.md §6 "Cycling":
+  // 0 unpaired; 1 open and apart; 2 open and penetrating; 3 closed and penetrating; 4 closed
+  // and apart ("open"/"closed": the sign of the status indicator p^ = p - c g).
+  int zone = 0;
+  int status = 0;                    // 0 free, 1 stick, 2 slip (ContactStatus)
+  double gap = 0;                    // > 0 apart
+  double length = 0;                 // the point's size (tributary length), for tolerances
+  std::array<double, 3> traction{};  // tangential traction on the slave (direction of friction)
+};
+
+// A status forced by the cycling treatment: closed, the friction status following the iterate.
+constexpr int kForcedClosed = 3;
+
+class ContactControls {
+ public:
+  virtual ~ContactControls() = default;
+  // Fixed points: freeze the statuses / thresholds of the last evaluation (or release them).
+  virtual void freezeStatuses(bool frozen) = 0;
+  virtual void freezeThresholds(bool frozen) = 0;
+  // One fixed-point update at x, t: the statuses (thresholds) x gives with them released become
+  // the frozen ones. Returns how many statuses changed (the largest threshold change relative to
+  // the largest threshold).
+  virtual int updateStatuses(const Vector& x, double t) = 0;
+  virtual double updateThresholds(const Vector& x, double t) = 0;
+  // Points whose status changed between the last two evaluations.
+  virtual int statusChanges() const = 0;
+
+  virtual std::vector<ContactPointState> pointStates() const = 0;
+  // Cycling treatments at one point, for the rest of the load step (releaseTreatments ends
+  // them): "forced" imposes a status (0 free, 1 stick, 2 slip, kForcedClosed); "automatic"
+  // multiplies its coefficients, within bounds tied to the local stiffness (returns false when a
+  // bound stops it).
+  virtual void forceStatus(std::size_t point, int status) = 0;
+  virtual bool scaleCoefficients(std::size_t point, double factor) = 0;
+  virtual void releaseTreatments() = 0;
+  // Records the cycling kind (CyclingKind as int, 0 none) detected at a point, for the output.
+  virtual void markCycling(std::size_t point, int kind) = 0;
+};
+
+}  // namespace contactlab
