@@ -56,10 +56,16 @@ std::vector<CyclingEvent> CyclingDetector::observe(const std::vector<ContactPoin
     h.reversals = reversed ? h.reversals + 1 : 0;
     if (h.reversals == 2) events.push_back({i, CyclingKind::SlipReversal});
 
-    const Entry e{s.zone, s.status, s.gap};
-    if (!h.entries.empty() && h.entries.back().zone == e.zone &&
+    // Entries differ by the contact status (open zones 1, 2 or closed 3, 4) and the friction
+    // status; within one, only the latest zone and gap are kept (a closed point's gap sits at
+    // zero up to round-off, so its zone may flip between 3 and 4 without any status change).
+    // The friction status counts at closed points only, as stick (1) or slip (2): under a
+    // contact fixed point the reported status is the frozen one, the zone the iterate's.
+    const int friction = s.zone >= 3 ? (s.status == 2 ? 2 : 1) : 0;
+    const Entry e{s.zone, friction, s.gap};
+    if (!h.entries.empty() && (h.entries.back().zone >= 3) == (e.zone >= 3) &&
         h.entries.back().status == e.status) {
-      h.entries.back().gap = e.gap;
+      h.entries.back() = e;
       continue;
     }
     h.entries.push_back(e);
@@ -73,14 +79,14 @@ std::vector<CyclingEvent> CyclingDetector::observe(const std::vector<ContactPoin
 CyclingKind CyclingDetector::classify(const History& h, double length) const {
   if (h.entries.size() < 4) return CyclingKind::None;
   const Entry &a0 = h.entries[0], &b0 = h.entries[1], &a1 = h.entries[2], &b1 = h.entries[3];
-  const bool alternates =
-      a0.zone == a1.zone && b0.zone == b1.zone && a0.status == a1.status && b0.status == b1.status;
-  if (!alternates) return CyclingKind::None;
-  const int za = a0.zone, zb = b0.zone;
-  if (za == zb) {
-    // Same zone, the friction status alternates.
-    return (a0.status != 0 && b0.status != 0) ? CyclingKind::StickSlip : CyclingKind::None;
-  }
+  const auto closed = [](const Entry& e) { return e.zone >= 3; };
+  const auto same = [&](const Entry& x, const Entry& y) {
+    return closed(x) == closed(y) && x.status == y.status;
+  };
+  if (!same(a0, a1) || !same(b0, b1)) return CyclingKind::None;
+  // Same contact status: the friction status alternates (stick <-> slip).
+  if (closed(a1) == closed(b1)) return closed(a1) ? CyclingKind::StickSlip : CyclingKind::None;
+  const int za = a1.zone, zb = b1.zone;
   const auto pair = [&](int x, int y) { return (za == x && zb == y) || (za == y && zb == x); };
   if (pair(1, 3)) return CyclingKind::SubCycling1;
   if (pair(2, 4)) return CyclingKind::SubCycling2;

@@ -215,6 +215,8 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     report.linearSolves += outcome.iterations;
     if (!outcome.failure.empty()) return fail(outcome.failure, outcome.message);
     if (statusFixedPoint && controls_->updateStatuses(x, t) > 0) {
+      // A status that flips from one fixed-point update to the next cycles too.
+      treatCycling(detector_.observe(controls_->pointStates()), sr);
       if (sr.statusIterations == options_.maxStatusIterations)
         return fail("statuses-not-converged",
                     "contact statuses still changed after " + std::to_string(sr.statusIterations) +

@@ -49,6 +49,7 @@ struct ContactProblem::Point {
   double indicator = 0.0;  // of the last evaluation (closed when >= 0)
   // Cycling treatments for the current step (-1 / 1: none).
   int forcedStatus = -1;
+  double forcedThreshold = -1.0;
   double coefficientScale = 1.0;
   int cycling = 0;
   // Last evaluation.
@@ -152,9 +153,17 @@ std::size_t ContactProblem::numPoints() const {
   return points_.size();
 }
 
+namespace {
+// The status fixed point is on the contact status (open or closed) only; stick and slip stay in
+// the friction law's generalized Newton (as Code_Aster's contact fixed point).
+int contactStatusOnly(ContactStatus s) {
+  return s == ContactStatus::Free ? 0 : kForcedClosed;
+}
+}  // namespace
+
 void ContactProblem::freezeStatuses(bool frozen) {
   for (Point& pt : points_)
-    pt.frozenStatus = frozen ? static_cast<int>(pt.result.status) : -1;
+    pt.frozenStatus = frozen ? contactStatusOnly(pt.result.status) : -1;
 }
 
 void ContactProblem::freezeThresholds(bool frozen) {
@@ -178,7 +187,7 @@ int ContactProblem::updateStatuses(const Vector& x, double t) {
   evaluateAll(x, t);
   int changed = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    points_[i].frozenStatus = static_cast<int>(points_[i].result.status);
+    points_[i].frozenStatus = contactStatusOnly(points_[i].result.status);
     // A point whose status the cycling treatment forces does not hold the fixed point up.
     if (points_[i].frozenStatus != old[i] && points_[i].forcedStatus < 0) ++changed;
   }
@@ -218,7 +227,11 @@ std::vector<ContactPointState> ContactProblem::pointStates() const {
 }
 
 void ContactProblem::forceStatus(std::size_t point, int status) {
-  points_.at(point).forcedStatus = status;
+  Point& pt = points_.at(point);
+  pt.forcedStatus = status;
+  // A point held closed keeps the friction threshold it has now: with the threshold following
+  // a pressure that changes sign, its friction would switch on and off and cycle in turn.
+  if (status == kForcedClosed) pt.forcedThreshold = std::max(pt.threshold, 0.0);
 }
 
 void ContactProblem::computeLocalStiffness() {
@@ -265,6 +278,7 @@ bool ContactProblem::scaleCoefficients(std::size_t point, double factor) {
 void ContactProblem::releaseTreatments() {
   for (Point& pt : points_) {
     pt.forcedStatus = -1;
+    pt.forcedThreshold = -1.0;
     pt.coefficientScale = 1.0;
     pt.cycling = 0;
     pt.result.cycling = 0;
@@ -690,7 +704,7 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   for (int k = 0; k < nt; ++k)
     in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
   in.frozenStatus = pt.forcedStatus >= 0 ? pt.forcedStatus : pt.frozenStatus;
-  in.frozenThreshold = pt.frozenThreshold;
+  in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
   in.coefficientScale = pt.coefficientScale;
   LawOutput out;
   law.evaluate(in, out);

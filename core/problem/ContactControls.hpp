@@ -29,12 +29,13 @@ constexpr int kForcedClosed = 3;
 class ContactControls {
  public:
   virtual ~ContactControls() = default;
-  // Fixed points: freeze the statuses / thresholds of the last evaluation (or release them).
+  // Fixed points: freeze the contact statuses (open or closed; stick and slip stay with Newton)
+  // / the friction thresholds of the last evaluation, or release them.
   virtual void freezeStatuses(bool frozen) = 0;
   virtual void freezeThresholds(bool frozen) = 0;
-  // One fixed-point update at x, t: the statuses (thresholds) x gives with them released become
-  // the frozen ones. Returns how many statuses changed (the largest threshold change relative to
-  // the largest threshold).
+  // One fixed-point update at x, t: the contact statuses (thresholds) x gives with them released
+  // become the frozen ones. Returns how many contact statuses changed (the largest threshold change
+  // relative to the largest threshold).
   virtual int updateStatuses(const Vector& x, double t) = 0;
   virtual double updateThresholds(const Vector& x, double t) = 0;
   // Points whose status changed between the last two evaluations.
