@@ -45,7 +45,8 @@ for name in ["displacement"]:
 for name in ["stress", "von_mises", "material", "rank"]:
     assert grid.GetCellData().GetArray(name) is not None, name
 if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN.md §5)
-    for name in ["contact_pressure", "tangential_traction", "gap", "slip", "contact_status"]:
+    for name in ["contact_pressure", "tangential_traction", "gap", "slip", "contact_status",
+                 "cycling"]:
         assert grid.GetPointData().GetArray(name) is not None, name
     points = list(csv.DictReader(open(os.path.join(out, "contact.csv"))))
     assert len(points) == summary["contact_points"], (len(points), summary["contact_points"])

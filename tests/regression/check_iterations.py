@@ -1,42 +1,45 @@
 #!/usr/bin/env python3
 """Regression: the iteration counts of the shipped scenes, pinned in iterations.csv, so that a
-change in convergence (Newton iterations, geometry updates, linear solves, converged steps)
-shows up even when the answer stays within the verification tolerances.
+change in convergence (Newton iterations, status / threshold / geometry fixed-point updates,
+linear solves, converged steps, step cuts, cycling events, the failure's name) shows up even
+when the answer stays within the verification tolerances.
 
 usage: check_iterations.py CONTACTLAB SCENES_DIR WORKDIR GOLD [--update]
-Each gold row names a scene and its formulation (`-` for the scene's own); the run must
-reproduce newton, geometry, linear_solves and converged steps exactly. --update rewrites GOLD
+Each gold row names a scene, its formulation (`-` for the scene's own) and `;`-separated
+--set arguments (e.g. an algorithm preset); the run must reproduce every count exactly. --update rewrites GOLD
 from the current code (review the diff: a change must be explained)."""
 import csv, json, os, shutil, subprocess, sys
 
 exe, scenes, work, gold = sys.argv[1:5]
 update = "--update" in sys.argv[5:]
 rows = list(csv.DictReader(open(gold)))
-fields = ["newton", "geometry", "linear_solves", "steps"]
+fields = ["newton", "status", "threshold", "geometry", "linear_solves", "steps", "cuts",
+          "cycling", "failure"]
 failures, out_rows = [], []
-for row in rows:
-    out = os.path.join(work, f"{row['scene']}-{row['formulation']}")
+for index, row in enumerate(rows):
+    out = os.path.join(work, f"{index:02d}-{row['scene']}")
     shutil.rmtree(out, ignore_errors=True)
     cmd = [exe, "run", os.path.join(scenes, row["scene"] + ".yaml"), "--out", out]
     if row["formulation"] != "-":
         cmd += ["--set", f"{row['zone']}/Formulation/Type={row['formulation']}"]
-        cmd += [arg for s in row["sets"].split(";") if s for arg in ("--set", s)]
+    cmd += [arg for s in row["sets"].split(";") if s for arg in ("--set", s)]
     run = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     summary = json.load(open(os.path.join(out, "summary.json")))
-    got = {"newton": summary["iterations"]["newton"],
-           "geometry": summary["iterations"].get("geometry", 0),
-           "linear_solves": summary["linear_solves"],
-           "steps": summary["load_steps"]["converged"]}
+    it = summary["iterations"]
+    got = {"newton": it["newton"], "status": it["status"], "threshold": it["threshold"],
+           "geometry": it["geometry"], "linear_solves": summary["linear_solves"],
+           "steps": summary["load_steps"]["converged"], "cuts": summary["load_steps"]["cuts"],
+           "cycling": sum(summary["cycling"].values()), "failure": summary["failure"] or "-"}
     new = dict(row, **{k: str(v) for k, v in got.items()})
     out_rows.append(new)
     diff = [f"{k} {row[k]} -> {got[k]}" for k in fields if str(got[k]) != row[k]]
-    print(f"{'ok  ' if not diff else 'DIFF'} {row['scene']} {row['formulation']}: "
+    print(f"{'ok  ' if not diff else 'DIFF'} {row['scene']} {row['formulation']} {row['sets']}: "
           + (", ".join(diff) if diff else ", ".join(f"{k} {got[k]}" for k in fields)))
     if diff:
         failures.append(row["scene"])
 if update:
     with open(gold, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w = csv.DictWriter(f, fieldnames=["scene", "formulation", "zone", "sets"] + fields)
         w.writeheader()
         w.writerows(out_rows)
     print("updated", gold)

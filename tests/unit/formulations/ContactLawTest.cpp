@@ -259,6 +259,46 @@ TEST(ContactLaw, FrozenStatusIsReportedAndJacobianStaysExact) {
   }
 }
 
+// Frozen "closed, friction follows the iterate" (status 3, the contact fixed point and the
+// forced cycling treatment): closed, with the natural stick/slip, and an exact Jacobian.
+TEST(ContactLaw, FrozenClosedLetsFrictionFollowTheIterate) {
+  for (const char* name : kLawNames) {
+    const auto law = makeLaw(name);
+    for (State s : {State::Stick, State::Slip}) {
+      SCOPED_TRACE(std::string(name) + " " + stateName(s));
+      LawInput in = makeState(*law, 1, s);
+      LawOutput natural, frozen;
+      law->evaluate(in, natural);
+      in.frozenStatus = 3;
+      law->evaluate(in, frozen);
+      EXPECT_EQ(frozen.status, natural.status);
+      EXPECT_TRUE(jacobianMatchesFiniteDifferences(*law, in));
+    }
+  }
+}
+
+// The automatic cycling treatment's local scale s on the coefficients is the law built with
+// s times them (penalty excepted: its coefficients are the model, and it is never scaled).
+TEST(ContactLaw, CoefficientScaleEqualsScaledCoefficients) {
+  const AugmentedLagrangian al(10.0, 5.0), al10(100.0, 50.0);
+  const Lagrange lg(10.0, 5.0), lg10(100.0, 50.0);
+  const std::pair<const ContactLaw*, const ContactLaw*> pairs[] = {{&al, &al10}, {&lg, &lg10}};
+  for (const auto& [law, scaled] : pairs) {
+    for (State s : {State::Free, State::Stick, State::Slip}) {
+      SCOPED_TRACE(law->name() + " " + stateName(s));
+      LawInput in = makeState(*law, 1, s);
+      LawOutput expected, got;
+      scaled->evaluate(in, expected);
+      in.coefficientScale = 10.0;
+      law->evaluate(in, got);
+      EXPECT_EQ(got.status, expected.status);
+      for (int i = 0; i < law->size(1); ++i)
+        EXPECT_NEAR(got.r[i], expected.r[i], 1e-12 * (1 + std::abs(expected.r[i])));
+      EXPECT_NEAR(got.indicator, expected.indicator, 1e-12 * (1 + std::abs(expected.indicator)));
+    }
+  }
+}
+
 TEST(ContactLaw, FrozenThresholdDecouplesTangentialRowsFromPressure) {
   const double frozen = 0.25;
   for (const char* name : kLawNames) {
