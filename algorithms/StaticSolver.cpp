@@ -91,6 +91,24 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm()
   p->set("Grazing Tolerance", 1e-6,
          "Grazing contact is a 2-3-2-3 cycle with |g^N| + |g^N+1| below this times the point's "
          "size (> 0)");
+  p->set("Regularization", "none",
+         "'slow-dynamics' adds alpha M / (Time Scale dt)^2 to the tangent, dt the load step's "
+         "time increment, M the mass from each material's density (doc/algorithms.md)",
+         choices({"none", "slow-dynamics"}));
+  Teuchos::ParameterList& sd =
+      p->sublist("slow-dynamics", false, "Options of Regularization: slow-dynamics");
+  sd.set("Alpha", 1.0, "Factor on the mass matrix (> 0): 1 is the real mass");
+  sd.set("Time Scale", 1.0,
+         "Physical seconds per unit of load time (> 0): dt = Time Scale times the step's "
+         "time increment");
+  sd.set("Mass", "consistent", "Mass matrix: 'consistent' or 'lumped' (HRZ diagonal)",
+         choices({"consistent", "lumped"}));
+  sd.set("Inertia", "residual-and-tangent",
+         "'residual-and-tangent': the inertia force alpha M (u - u_n - dt v_n) / dt^2 enters "
+         "the residual too (a slow implicit-Euler dynamics, ~0 when the mass is small); "
+         "'tangent-only': Newton solves (c M + K) dx = -R with the static residual, so a "
+         "converged state is exactly static",
+         choices({"residual-and-tangent", "tangent-only"}));
   return p;
 }
 
@@ -142,6 +160,14 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
     throw std::invalid_argument("Algorithm/Max Status and Max Threshold Iterations must be >= 0");
   if (!(o.thresholdTolerance > 0) || !(o.grazingTolerance > 0))
     throw std::invalid_argument("Algorithm/Threshold and Grazing Tolerance must be > 0");
+  const Teuchos::ParameterList& sd = algorithm.sublist("slow-dynamics");
+  o.slowDynamics.enabled = algorithm.get<std::string>("Regularization") == "slow-dynamics";
+  o.slowDynamics.alpha = sd.get<double>("Alpha");
+  o.slowDynamics.timeScale = sd.get<double>("Time Scale");
+  o.slowDynamics.lumped = sd.get<std::string>("Mass") == "lumped";
+  o.slowDynamics.inertiaInResidual = sd.get<std::string>("Inertia") == "residual-and-tangent";
+  if (!(o.slowDynamics.alpha > 0) || !(o.slowDynamics.timeScale > 0))
+    throw std::invalid_argument("Algorithm/slow-dynamics/Alpha and Time Scale must be > 0");
   return o;
 }
 

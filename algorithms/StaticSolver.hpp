@@ -17,6 +17,7 @@
 #include "algorithms/NewtonMethod.hpp"
 #include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
+#include "core/problem/SlowDynamics.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -46,6 +47,7 @@ struct StaticSolverOptions {
   double thresholdTolerance = 1e-6;
   std::string cyclingTreatment = "none";  // none | automatic | forced
   double grazingTolerance = 1e-6;
+  SlowDynamics slowDynamics;  // applied by the model (SolidModel::slowDynamics), read here
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();

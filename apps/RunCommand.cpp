@@ -164,8 +164,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                        "cycling_events"};
   for (int k = 1; k < kCyclingKinds; ++k)
     stepColumns.push_back(std::string("cycling_") + cyclingKindName(static_cast<CyclingKind>(k)));
-  for (const char* c : {"assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
+  for (const char* c :
+       {"condition_estimate", "assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
     stepColumns.push_back(c);
+  // The linear solver's condition estimate of the last solve of each step, when it computes one
+  // (mumps with Condition Estimate: true); its largest value goes to the summary.
+  double maxCondition = -1;
   CsvWriter stepsCsv(stepColumns);
   Progress progress(root);
   auto x = system.createVector();
@@ -247,6 +251,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                  F::format(events)};
     for (int k = 1; k < kCyclingKinds; ++k)
       row.push_back(F::format(s.cycling[k]));
+    const auto condition = solver->conditionEstimate();
+    row.push_back(condition ? F::format(*condition) : std::string());
+    if (condition) maxCondition = std::max(maxCondition, *condition);
     for (double v :
          {s.seconds.assembly - contactTerms, pairing, contactTerms, s.seconds.linearSolve})
       row.push_back(F::format(v));
@@ -333,6 +340,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                               .set("friction_threshold", loop(sm.solverOptions.thresholdsInNewton))
                               .set("contact_statuses", loop(sm.solverOptions.statusesInNewton))
                               .set("cycling_treatment", sm.solverOptions.cyclingTreatment)
+                              .set("regularization",
+                                   sm.solverOptions.slowDynamics.enabled ? "slow-dynamics" : "none")
                               .set("parameters", toJson(params.sublist("Algorithm")))
                               .set("newton", toJson(params.sublist("Newton"))))
         .set("linear_solver", typedSection(params.sublist("Linear Solver")))
@@ -356,6 +365,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                .set("threshold", report.thresholdIterations)
                                .set("geometry", report.geometryIterations))
         .set("linear_solves", report.linearSolves)
+        .set("condition_estimate", maxCondition >= 0 ? JsonValue(maxCondition) : JsonValue())
         .set("cycling", cyclingSummary())
         .set("seconds", JsonValue::object()
                             .set("setup", setupSeconds)

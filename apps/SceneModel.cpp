@@ -170,6 +170,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       },
       comm);
   sm.model.mesh = mesh;
+  sm.model.slowDynamics = sm.solverOptions.slowDynamics;
   const int dim = mesh->dim;
 
   // Materials, one per block.

@@ -290,6 +290,8 @@ std::string sceneReference() {
   describeList(out, *StaticSolverOptions::validNewton(), "");
   out << "\n### Algorithm\n\n";
   describeList(out, *StaticSolverOptions::validAlgorithm(), "");
+  out << "\n### Algorithm/slow-dynamics\n\n";
+  describeList(out, StaticSolverOptions::validAlgorithm()->sublist("slow-dynamics"), "");
   out << "\n### Output\n\n";
   describeList(out, outputSection(nullptr, ""), "");
   out << "\n### Output/Probes/<name>\n\n";

@@ -836,7 +836,7 @@ void ContactProblem::commitState(const Vector& x, double t) {
   for (std::size_t i = 0; i < surfaceDofs_; ++i)
     surfaceConverged_[i] = s[i];
   tConverged_ = t;
-  solid_.commitState();
+  solid_.commitState(*displacement(x), t);
 }
 
 std::vector<ContactPointResult> ContactProblem::results() const {

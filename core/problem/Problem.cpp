@@ -5,6 +5,7 @@
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
 #include "core/problem/CollectiveError.hpp"
+#include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/SolidKernel.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
@@ -60,7 +61,11 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   for (const auto& ref : dofs_->localElements()) {
     const auto& block = mesh.blocks[ref.block];
     auto [it, inserted] = kernelOf.emplace(block.type, static_cast<int>(kernels_.size()));
-    if (inserted) kernels_.push_back(std::make_unique<SolidKernel>(block.type));
+    if (inserted) {
+      kernels_.push_back(std::make_unique<SolidKernel>(block.type));
+      if (model_.slowDynamics.enabled)
+        massKernels_.push_back(std::make_unique<MassKernel>(block.type));
+    }
     LocalElement e;
     e.block = ref.block;
     e.cell = ref.cell;
@@ -173,6 +178,15 @@ void Problem::checkModel() const {
     if (!body.block.empty() && mesh.findBlocks(body.block).empty())
       throw InputError("body force '" + body.name + "' names block '" + body.block +
                        "', which is not in " + where);
+  if (model_.slowDynamics.enabled)
+    for (const auto& [name, material] : model_.materials)
+      if (!(material->density() > 0))
+        throw InputError(
+            "the slow-dynamics regularization needs a mass, but the material of "
+            "block '" +
+            name +
+            "' has density 0: give it a density (alpha scales "
+            "the mass)");
 }
 
 void Problem::locateSurfaceLoads(const std::vector<int>& partition) {
@@ -318,7 +332,11 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   auto uo = uOverlap->getData(0);
   std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
   if (withTangent) assembler_->begin();
-  std::vector<double> x, ue, fe, ke;
+  const SlowDynamics& sd = model_.slowDynamics;
+  const double c = sd.coefficient(t - inertia_.time);
+  const bool inertiaForce = c > 0 && sd.inertiaInResidual && residual;
+  if (inertiaForce) predictInertiaReference(t);
+  std::vector<double> x, ue, fe, ke, me;
   for (auto& e : elements_) {
     const std::size_t nd = e.rows.size();
     gatherCoordinates(e.nodes, x);
@@ -332,6 +350,17 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
                    e.stateOld.empty() ? nullptr : e.stateOld.data(),
                    e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
                    withTangent ? ke.data() : nullptr);
+    if (c > 0 && (inertiaForce || withTangent)) {
+      me.assign(nd * nd, 0.0);
+      massKernels_[e.kernel]->add(x.data(), blockMaterial_[e.block]->density(), sd.lumped,
+                                  me.data());
+      for (std::size_t i = 0; i < nd; ++i)
+        for (std::size_t j = 0; j < nd; ++j) {
+          const double cm = c * me[i * nd + j];
+          if (withTangent) ke[i * nd + j] += cm;
+          if (inertiaForce) fe[i] += cm * (ue[j] - inertia_.reference[e.rows[j]]);
+        }
+    }
     if (residual)
       for (std::size_t i = 0; i < nd; ++i)
         r[e.rows[i]] += fe[i];
@@ -373,6 +402,30 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
 void Problem::commitState() {
   for (auto& e : elements_)
     e.stateOld = e.stateNew;
+}
+
+void Problem::commitState(const Vector& u, double t) {
+  commitState();
+  if (!model_.slowDynamics.enabled) return;
+  auto uo = overlapCopy(u)->getData(0);
+  std::vector<double> current(uo.begin(), uo.end());
+  if (inertia_.current.empty()) inertia_.current.assign(current.size(), 0.0);
+  inertia_.previous = std::move(inertia_.current);
+  inertia_.current = std::move(current);
+  inertia_.previousStep = t - inertia_.time;
+  inertia_.time = t;
+}
+
+void Problem::predictInertiaReference(double t) {
+  // u* = u_n + dt v_n with v_n = (u_n - u_(n-1)) / dt_n: the implicit Euler acceleration is
+  // (u - u*) / dt^2. Zero velocity before the first converged step.
+  const std::size_t n = dofs_->overlapMap()->getNodeNumElements();
+  if (inertia_.current.empty()) inertia_.current.assign(n, 0.0);
+  inertia_.reference = inertia_.current;
+  if (inertia_.previous.empty() || !(inertia_.previousStep > 0)) return;
+  const double ratio = (t - inertia_.time) / inertia_.previousStep;
+  for (std::size_t i = 0; i < n; ++i)
+    inertia_.reference[i] += ratio * (inertia_.current[i] - inertia_.previous[i]);
 }
 
 std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {

@@ -23,6 +23,7 @@
 
 namespace contactlab {
 
+class MassKernel;
 class MatrixAssembler;
 class SolidKernel;
 class SurfaceLoadKernel;
@@ -64,7 +65,8 @@ class Problem : public NonlinearSystem {
   const std::vector<Reaction>& reactions() const { return reactions_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
   void commitState();
-  void commitState(const Vector& /*u*/, double /*t*/) override { commitState(); }
+  // Same, and u at time t becomes the reference of the slow-dynamics inertia (when enabled).
+  void commitState(const Vector& u, double t) override;
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
 
@@ -97,7 +99,14 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<const Comm> comm_;
   std::unique_ptr<DofMap> dofs_;
   std::vector<LocalElement> elements_;
-  std::vector<std::unique_ptr<SolidKernel>> kernels_;  // one per element type in use
+  std::vector<std::unique_ptr<SolidKernel>> kernels_;     // one per element type in use
+  std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order; slow dynamics only
+  // Converged displacements (overlap) of the last two steps and the inertia reference u*.
+  struct InertiaState {
+    std::vector<double> current, previous, reference;
+    double time = 0, previousStep = 0;
+  } inertia_;
+  void predictInertiaReference(double t);
   std::vector<const Material*> blockMaterial_;
   // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
   std::vector<char> constrained_;

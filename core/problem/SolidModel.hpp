@@ -1,9 +1,11 @@
 #pragma once
 // Everything that defines a solid model independently of how it is solved: the mesh, one
-// material per element block, boundary conditions and loads.
+// material per element block, boundary conditions and loads (and, when asked, the inertia
+// of the slow-dynamics regularization).
 #include "core/materials/Material.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/Loads.hpp"
+#include "core/problem/SlowDynamics.hpp"
 
 #include <map>
 #include <memory>
@@ -18,6 +20,7 @@ struct SolidModel {
   std::vector<DirichletCondition> dirichlet;
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
+  SlowDynamics slowDynamics;
 };
 
 }  // namespace contactlab
