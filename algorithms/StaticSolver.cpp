@@ -1,5 +1,7 @@
 #include "algorithms/StaticSolver.hpp"
 
+#include "core/io/ParameterValidation.hpp"
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include <chrono>
@@ -53,10 +55,10 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
   p->set("Max Geometry Iterations", 10,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
-  p->sublist("NOX", false,
-             "Driver: nox. Passed through to NOX's solver parameters (e.g. 'Line Search'/"
-             "'Backtrack'/'Max Iters'); NOX checks them")
-      .disableRecursiveValidation();
+  markPassThrough(p->sublist("NOX", false,
+                             "Driver: nox. Passed through to NOX's solver parameters (e.g. "
+                             "'Line Search'/'Backtrack'/'Max Iters', 'Printing'/'Output "
+                             "Information'); NOX checks them"));
   return p;
 }
 

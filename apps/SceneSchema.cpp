@@ -242,7 +242,10 @@ void describeList(std::ostream& out, const ParameterList& list, const std::strin
     const auto& entry = list.entry(it);
     const std::string& key = list.name(it);
     if (entry.isList()) {
-      out << indent << "- `" << key << "`: a sublist (see below)\n";
+      if (isPassThrough(list.sublist(key)))
+        out << indent << "- `" << key << "`: a sublist. " << entry.docString() << "\n";
+      else
+        out << indent << "- `" << key << "`: a sublist (see below)\n";
       continue;
     }
     out << indent << "- `" << key << "` (default `" << formatValue(entry)

@@ -42,4 +42,8 @@ block = f"{start}\nMeasured {datetime.date.today()} by `bench/run.sh`:\n\n{table
 text = re.sub(re.escape(start) + ".*?" + re.escape(end), block, text, flags=re.S)
 open(doc, "w").write(text)
 PY
+# Algorithms: presets x line searches x cycling treatments on the pad and the frictional 3D
+# Hertz (about 15 minutes).
+python3 bench/algorithms.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-algorithms" \
+  --doc doc/performance.md
 echo "bench: doc/performance.md updated"

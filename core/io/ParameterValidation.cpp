@@ -142,7 +142,41 @@ std::string validChoices(const ParameterEntry& valid) {
   return s;
 }
 
+// The name a pass-through valid sublist carries (Teuchos keeps no public flag for it).
+const char* const kPassThroughName = "contactlab:pass-through";
+
+// Strings from --set that read as a bool, an int or a double become one (recursively).
+void typeStrings(ParameterList& list) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string key = list.name(it);
+    ParameterEntry& e = list.getEntry(key);
+    if (e.isList()) {
+      typeStrings(list.sublist(key));
+      continue;
+    }
+    if (!e.isType<std::string>()) continue;
+    const std::string text = e.getValue<std::string>(nullptr);
+    int i;
+    double d;
+    if (text == "true" || text == "false")
+      e.setValue(text == "true");
+    else if (text.find_first_of(".eE") == std::string::npos && parseInt(text, i))
+      e.setValue(i);
+    else if (parseDouble(text, d))
+      e.setValue(d);
+  }
+}
+
 }  // namespace
+
+ParameterList& markPassThrough(ParameterList& valid) {
+  valid.setName(kPassThroughName);
+  return valid.disableRecursiveValidation();
+}
+
+bool isPassThrough(const ParameterList& valid) {
+  return valid.name() == kPassThroughName;
+}
 
 std::string keysOf(const ParameterList& list) {
   std::string s;
@@ -165,7 +199,10 @@ void validateAndSetDefaults(ParameterList& user, const ParameterList& valid,
     if (v.isList() != u.isList())
       throw InputError(where + ": " + keyPath + " must be " + typeName(v) + ", not " + typeName(u));
     if (v.isList()) {
-      validateAndSetDefaults(user.sublist(key), valid.sublist(key), where, keyPath);
+      if (isPassThrough(valid.sublist(key)))
+        typeStrings(user.sublist(key));
+      else
+        validateAndSetDefaults(user.sublist(key), valid.sublist(key), where, keyPath);
       continue;
     }
     if (!coerce(u, v))

@@ -18,6 +18,12 @@ namespace contactlab {
 void validateAndSetDefaults(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
                             const std::string& where, const std::string& path = "");
 
+// Marks a sublist of a valid list as passed through (e.g. to NOX, which checks it itself): its
+// user contents are kept as given, only strings that read as a bool, an int or a double (from
+// --set) are converted to that type.
+Teuchos::ParameterList& markPassThrough(Teuchos::ParameterList& valid);
+bool isPassThrough(const Teuchos::ParameterList& valid);
+
 // Sets `path=value` in `list`, with path components separated by '/', e.g.
 // "Mesh/rectangle/nx=20". The value is stored as a string unless the entry exists already, in
 // which case it is parsed as that entry's type; validateAndSetDefaults converts strings later.
