@@ -93,6 +93,12 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm()
   p->set("Grazing Tolerance", 1e-6,
          "Grazing contact is a 2-3-2-3 cycle with |g^N| + |g^N+1| below this times the point's "
          "size (> 0)");
+  p->set("Geometric Terms", "pairing",
+         "With the geometry in Newton, the derivatives of the geometry in the tangent: 'full' "
+         "(the master point and the smoothed normal: the consistent tangent, quadratic near the "
+         "solution, but it diverged from deep first-iterate penetrations on curved masters), "
+         "'pairing' (the master point only, the normal held), 'none' (frozen-geometry tangent)",
+         choices({"pairing", "full", "none"}));
   p->set("Regularization", "none",
          "'slow-dynamics' adds alpha M / (Time Scale dt)^2 to the tangent, dt the load step's "
          "time increment, M the mass from each material's density (doc/algorithms.md)",
@@ -162,6 +168,10 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
     throw std::invalid_argument("Algorithm/Max Status and Max Threshold Iterations must be >= 0");
   if (!(o.thresholdTolerance > 0) || !(o.grazingTolerance > 0))
     throw std::invalid_argument("Algorithm/Threshold and Grazing Tolerance must be > 0");
+  const std::string terms = algorithm.get<std::string>("Geometric Terms");
+  o.geometricTerms = terms == "full"      ? GeometricTerms::full
+                     : terms == "pairing" ? GeometricTerms::pairing
+                                          : GeometricTerms::none;
   const Teuchos::ParameterList& sd = algorithm.sublist("slow-dynamics");
   o.slowDynamics.enabled = algorithm.get<std::string>("Regularization") == "slow-dynamics";
   o.slowDynamics.alpha = sd.get<double>("Alpha");
@@ -179,7 +189,11 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
       controls_(controls),
       newton_(newton),
       options_(std::move(options)),
-      detector_(options_.grazingTolerance) {}
+      detector_(options_.grazingTolerance) {
+  if (controls_)
+    controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
+                                                           : GeometricTerms::none);
+}
 
 void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
   for (const CyclingEvent& e : events) {

@@ -5,8 +5,8 @@
 // a Newton solve (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to
 // them, innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
 // Newton" follows the iterate instead (statuses and thresholds through the formulation's
-// generalized Jacobian; the geometry re-paired at every iterate, its tangent without the
-// geometric terms: see doc/algorithms.md). Presets:
+// generalized Jacobian; the geometry re-paired at every iterate, its derivatives in the tangent
+// as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
 //   fixed-point          geometry, thresholds, statuses all fixed points
 //   generalized-newton   all three in Newton
 //   partial-newton       geometry a fixed point, thresholds and statuses in Newton
@@ -47,6 +47,7 @@ struct StaticSolverOptions {
   double thresholdTolerance = 1e-6;
   std::string cyclingTreatment = "none";  // none | automatic | forced
   double grazingTolerance = 1e-6;
+  GeometricTerms geometricTerms = GeometricTerms::pairing;  // with the geometry in Newton
   SlowDynamics slowDynamics;  // applied by the model (SolidModel::slowDynamics), read here
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();

@@ -39,6 +39,7 @@ struct ContactProblem::Point {
   int facet = -1;
   std::vector<std::int64_t> master;  // master facet nodes
   std::vector<double> N;             // their shape values at the master point
+  double xi[2] = {0.0, 0.0};         // the master point's local coordinates
   std::array<double, 3> normal{}, t1{}, t2{}, obstaclePoint{};  // obstacle: minus translation
   // History.
   std::array<double, 3> resistanceOld{}, slipTotal{};
@@ -59,6 +60,11 @@ struct ContactProblem::Point {
   std::vector<GO> dofs;
   std::vector<LO> cols, rows;
   std::vector<int> surfacePos;
+  // Geometric linearization: the displacement dofs of the master nodes around the facet that
+  // are not already in `dofs` (the smoothed normal depends on them), as columns only.
+  std::vector<GO> geometryDofs;
+  std::vector<LO> geometryCols;
+  std::vector<int> geometrySurfacePos;
 };
 
 ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
@@ -76,6 +82,7 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     try {
       if (zone.obstacle) {
         obstacles_.push_back(std::make_unique<RigidObstacle>(*zone.obstacle, dim_));
+        nodeFacets_.emplace_back();
         masterFacetNodes_.emplace_back();
         masterFacetType_.push_back(ElementType::Point1);
       } else {
@@ -87,6 +94,10 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
           type = g->type;
         }
         if (nodes.empty()) throw std::invalid_argument("no boundary group '" + zone.master + "'");
+        const int nn = info(type).nodes;
+        nodeFacets_.emplace_back();
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+          nodeFacets_.back()[nodes[k]].push_back(static_cast<int>(k / nn));
         masterFacetNodes_.push_back(std::move(nodes));
         masterFacetType_.push_back(type);
       }
@@ -285,6 +296,11 @@ void ContactProblem::releaseTreatments() {
   }
 }
 
+void ContactProblem::setGeometricTerms(GeometricTerms terms) {
+  if (terms != geometricTerms_) layoutChanged_ = true;  // columns change at the next pairing
+  geometricTerms_ = terms;
+}
+
 void ContactProblem::markCycling(std::size_t point, int kind) {
   points_.at(point).cycling = kind;
   points_.at(point).result.cycling = kind;
@@ -481,6 +497,8 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
                            masterFacetNodes_[z].begin() + (pt.facet + 1) * nn);
           pt.N.resize(nn);
           ReferenceElement::get(type).shape(pairing.projection.xi, pt.N.data());
+          pt.xi[0] = pairing.projection.xi[0];
+          pt.xi[1] = pairing.projection.xi[1];
           // Smoothed normal (Code_Aster's LISSAGE): the nodal normals interpolated at the
           // master point, continuous across the kinks of the deformed master surface, where
           // the facet normal jumps and the geometric fixed point would flip between facets.
@@ -572,9 +590,29 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
       pt.surfacePos.push_back(
           static_cast<int>(surfaceDofs_ + (pt.multiplier + k - dofs.numGlobalDofs())));
     }
+    pt.geometryDofs.clear();
+    pt.geometrySurfacePos.clear();
+    if (geometricTerms_ != GeometricTerms::full || !pt.paired || obstacles_[pt.zone]) continue;
+    const int nn = info(masterFacetType_[pt.zone]).nodes;
+    std::vector<std::int64_t> around;
+    for (std::int64_t m : pt.master)
+      for (int f : nodeFacets_[pt.zone].at(m))
+        for (int a = 0; a < nn; ++a)
+          around.push_back(masterFacetNodes_[pt.zone][static_cast<std::size_t>(f) * nn + a]);
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    for (std::int64_t node : around) {
+      if (node == pt.node || std::find(pt.master.begin(), pt.master.end(), node) != pt.master.end())
+        continue;
+      for (int c = 0; c < dim_; ++c) {
+        pt.geometryDofs.push_back(dofs.globalNode(node) * dim_ + c);
+        pt.geometrySurfacePos.push_back(surfaceIndex_[node] * dim_ + c);
+      }
+    }
   }
   // Only a new pairing changes the couplings (and the direct solver's symbolic analysis).
-  if (repaired || matrix_.is_null()) buildGraph();
+  if (repaired || matrix_.is_null() || layoutChanged_) buildGraph();
+  layoutChanged_ = false;
   pairingSeconds_ += secondsSince(start);
   return moved;
 }
@@ -595,6 +633,7 @@ void ContactProblem::buildGraph() {
       if (row == Teuchos::OrdinalTraits<LO>::invalid()) continue;
       pt.rows[i] = row;
       rows[row].insert(rows[row].end(), pt.dofs.begin(), pt.dofs.end());
+      rows[row].insert(rows[row].end(), pt.geometryDofs.begin(), pt.geometryDofs.end());
     }
   }
   std::vector<size_t> lengths(owned);
@@ -626,6 +665,9 @@ void ContactProblem::buildGraph() {
     pt.cols.assign(pt.dofs.size(), -1);
     for (std::size_t i = 0; i < pt.dofs.size(); ++i)
       pt.cols[i] = cols->getLocalElement(pt.dofs[i]);
+    pt.geometryCols.assign(pt.geometryDofs.size(), -1);
+    for (std::size_t i = 0; i < pt.geometryDofs.size(); ++i)
+      pt.geometryCols[i] = cols->getLocalElement(pt.geometryDofs[i]);
   }
   patternChanged_ = true;
 }
@@ -704,6 +746,8 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   for (int k = 0; k < nt; ++k)
     in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
   in.frozenStatus = pt.forcedStatus >= 0 ? pt.forcedStatus : pt.frozenStatus;
+  // Without a master point there is nothing to be closed on, whatever the multiplier says.
+  if (!pt.paired) in.frozenStatus = 0;
   in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
   in.coefficientScale = pt.coefficientScale;
   LawOutput out;
@@ -766,6 +810,104 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   }
 }
 
+void ContactProblem::refreshGeometry(Point& pt, double t) const {
+  const int z = pt.zone;
+  const auto xs = surfacePosition(pt.node);
+  if (obstacles_[z]) {
+    const ObstacleProjection proj = obstacles_[z]->project(xs.data(), t);
+    pt.normal = proj.normal;
+    const auto shift = obstacles_[z]->translation(t);
+    for (int c = 0; c < 3; ++c)
+      pt.obstaclePoint[c] = proj.point[c] - shift[c];
+  } else {
+    // The same computation as updateGeometry on the point's facet: projection, shape values,
+    // nodal normals of the facets around its nodes, interpolated and normalized.
+    const ElementType type = masterFacetType_[z];
+    const int nn = info(type).nodes;
+    std::vector<double> coords;
+    for (std::int64_t m : pt.master) {
+      const auto p = surfacePosition(m);
+      coords.insert(coords.end(), p.begin(), p.end());
+    }
+    // At a 2D vertex shared with the next facet the pairing moves on to that facet, which to
+    // first order is this facet's extension: its smooth branch gives that side's derivative. At
+    // the master surface's outer end (and in 3D, on facet boundaries) the clamped projection is
+    // what the residual does.
+    const int space = dim_ == 2 ? 2 : 3;
+    bool sharedVertex = false;
+    if (dim_ == 2 && std::abs(pt.xi[0]) >= 1.0 - 1e-10) {
+      const std::int64_t vertex = pt.master[pt.xi[0] < 0 ? 0 : 1];
+      sharedVertex = nodeFacets_[z].at(vertex).size() > 1;
+    }
+    Projection proj;
+    if (sharedVertex) proj = projectOnFacetExtension(type, space, coords.data(), xs.data(), pt.xi);
+    if (!sharedVertex || !proj.converged)
+      proj = projectOnFacet(type, space, coords.data(), xs.data());
+    ReferenceElement::get(type).shape(proj.xi, pt.N.data());
+    // `pairing`: the smoothed normal (and its tangents) is held, only the master point moves.
+    if (geometricTerms_ != GeometricTerms::full) return;
+    std::vector<Facet> around;
+    std::vector<std::int64_t> aroundNodes;
+    std::vector<int> seen;
+    for (std::int64_t m : pt.master)
+      for (int f : nodeFacets_[z].at(m)) {
+        if (std::find(seen.begin(), seen.end(), f) != seen.end()) continue;
+        seen.push_back(f);
+        Facet facet;
+        facet.type = type;
+        for (int a = 0; a < nn; ++a) {
+          const std::int64_t node = masterFacetNodes_[z][static_cast<std::size_t>(f) * nn + a];
+          const auto p = surfacePosition(node);
+          facet.coords.insert(facet.coords.end(), p.begin(), p.end());
+          aroundNodes.push_back(node);
+        }
+        around.push_back(std::move(facet));
+      }
+    const auto normals = contactlab::nodalNormals(around, aroundNodes);
+    std::array<double, 3> n{};
+    for (std::size_t a = 0; a < pt.master.size(); ++a)
+      for (int c = 0; c < 3; ++c)
+        n[c] += pt.N[a] * normals.at(pt.master[a])[c];
+    const double norm = std::sqrt(dot(n, n));
+    for (int c = 0; c < 3; ++c)
+      pt.normal[c] = norm > 0 ? n[c] / norm : proj.normal[c];
+  }
+  tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+}
+
+void ContactProblem::geometricColumns(const Point& pt, double t, std::vector<double>& ke) const {
+  const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
+  const int nc = nd + ng;
+  const int nu = static_cast<int>(1 + pt.master.size()) * dim_;
+  // The multiplier columns stay the law's (exact); every displacement column is a central
+  // difference of the residual with the geometry recomputed. The status piece is kept (the
+  // generalized Jacobian of that piece, as the frozen-geometry tangent).
+  std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
+  for (int i = 0; i < nd; ++i)
+    for (int j = nu; j < nd; ++j)
+      full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
+  const double length = dim_ == 3 ? std::sqrt(pt.weight) : pt.weight;
+  const double h = 1e-7 * length;
+  auto s = surface_->getDataNonConst(0);
+  std::vector<double> plus, minus, unused;
+  for (int j = 0; j < nc; ++j) {
+    if (j >= nu && j < nd) continue;
+    const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
+    const double saved = s[pos];
+    for (int side : {1, -1}) {
+      s[pos] = saved + side * h;
+      Point copy = pt;
+      copy.forcedStatus = static_cast<int>(pt.result.status);
+      refreshGeometry(copy, t);
+      evaluatePoint(copy, t, false, side > 0 ? plus : minus, unused);
+    }
+    s[pos] = saved;
+    for (int i = 0; i < nd; ++i)
+      full[static_cast<std::size_t>(i) * nc + j] = (plus[i] - minus[i]) / (2 * h);
+  }
+  ke.swap(full);
+}
+
 void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool withTangent) {
   if (matrix_.is_null()) updateGeometry(x, t);
   auto u = displacement(x);
@@ -793,12 +935,25 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
       values[solidOffsets_[j]] += kValues(j);
   }
   std::vector<double> re, ke, row;
+  std::vector<LO> columns;
   statusChanges_ = 0;
   for (Point& pt : points_) {
     const ContactStatus before = pt.result.status;
     evaluatePoint(pt, t, withTangent, re, ke);
     if (pt.result.status != before) ++statusChanges_;
     const int nd = static_cast<int>(pt.dofs.size());
+    // Columns: the point's dofs, then (geometric linearization) the dofs around its facet.
+    const bool geometric = withTangent && geometricTerms_ != GeometricTerms::none && pt.paired;
+    if (geometric) geometricColumns(pt, t, ke);
+    const int ng = geometric ? static_cast<int>(pt.geometryDofs.size()) : 0, nc = nd + ng;
+    if (geometric) {
+      columns.assign(pt.cols.begin(), pt.cols.end());
+      columns.insert(columns.end(), pt.geometryCols.begin(), pt.geometryCols.end());
+    }
+    const auto columnConstrained = [&](int j) {
+      const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
+      return static_cast<std::size_t>(pos) < surfaceDofs_ && surfaceConstrained_[pos];
+    };
     for (int i = 0; i < nd; ++i) {
       if (pt.rows[i] < 0) continue;
       const bool rowConstrained = static_cast<std::size_t>(pt.surfacePos[i]) < surfaceDofs_ &&
@@ -806,13 +961,12 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
       if (rowConstrained) continue;
       if (residual) res[pt.rows[i]] += re[i];
       if (!withTangent) continue;
-      row.assign(ke.begin() + static_cast<std::ptrdiff_t>(i) * nd,
-                 ke.begin() + static_cast<std::ptrdiff_t>(i + 1) * nd);
-      for (int j = 0; j < nd; ++j)
-        if (static_cast<std::size_t>(pt.surfacePos[j]) < surfaceDofs_ &&
-            surfaceConstrained_[pt.surfacePos[j]])
-          row[j] = 0.0;
-      matrix_->sumIntoLocalValues(pt.rows[i], nd, row.data(), pt.cols.data());
+      row.assign(ke.begin() + static_cast<std::ptrdiff_t>(i) * nc,
+                 ke.begin() + static_cast<std::ptrdiff_t>(i + 1) * nc);
+      for (int j = 0; j < nc; ++j)
+        if (columnConstrained(j)) row[j] = 0.0;
+      matrix_->sumIntoLocalValues(pt.rows[i], nc, row.data(),
+                                  geometric ? columns.data() : pt.cols.data());
     }
   }
   if (withTangent) matrix_->fillComplete(map_, map_);

@@ -15,7 +15,11 @@
 // the pairing, the master point's shape values N_a, the normal n and the tangent basis t_k are
 // frozen, so the gap g = n . (x_s - sum_a N_a x_a) and the slip increment
 // v_k = t_k . ((u_s - u_s^conv) - sum_a N_a (u_a - u_a^conv)) are linear in u and the tangent
-// is exact for the frozen geometry (geometric terms are the next issue's "geometry in Newton").
+// is exact for the frozen geometry. With geometric terms (geometry in Newton) the tangent adds
+// the derivatives of the geometry: the point's displacement columns by central differences of
+// its residual with its master point (`pairing`), and also its smoothed normal and tangents
+// (`full`, then with the columns of the master nodes around its facet, on which the smoothed
+// normal depends), recomputed (geometricColumns).
 //
 // Parallel: contact surfaces are small. At every evaluation each rank imports the surface
 // displacements and all multipliers (a replicated vector), evaluates every contact point (the
@@ -31,6 +35,7 @@
 #include "formulations/ContactZone.hpp"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -88,6 +93,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   bool scaleCoefficients(std::size_t point, double factor) override;
   void releaseTreatments() override;
   void markCycling(std::size_t point, int kind) override;
+  void setGeometricTerms(GeometricTerms terms) override;
 
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;
@@ -118,6 +124,12 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void computeLocalStiffness();
   void evaluatePoint(Point& pt, double t, bool withTangent, std::vector<double>& re,
                      std::vector<double>& ke) const;
+  // Geometric linearization: the point's geometry recomputed on its facet (or obstacle) from
+  // the current surface positions, and the columns of its element matrix for its displacement
+  // dofs and those its normal depends on, by central differences of its residual with the
+  // geometry recomputed and its status piece kept.
+  void refreshGeometry(Point& pt, double t) const;
+  void geometricColumns(const Point& pt, double t, std::vector<double>& ke) const;
   std::array<double, 3> surfacePosition(std::int64_t node) const;
   std::array<double, 3> surfaceDisplacement(std::int64_t node, bool converged) const;
 
@@ -146,6 +158,10 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   double pairingSeconds_ = 0, contactSeconds_ = 0;
   int statusChanges_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
+  GeometricTerms geometricTerms_ = GeometricTerms::none;
+  bool layoutChanged_ = false;
+  // Per zone with a master surface: the master facets around each master node.
+  std::vector<std::map<std::int64_t, std::vector<int>>> nodeFacets_;
 };
 
 }  // namespace contactlab

@@ -402,4 +402,56 @@ Projection projectOnFacet(ElementType facetType, int spaceDim, const double* fac
   return out;
 }
 
+Projection projectOnFacetExtension(ElementType facetType, int spaceDim, const double* facetCoords,
+                                   const double* slavePoint, const double* xiStart,
+                                   int maxIterations) {
+  checkFacetType(facetType, spaceDim);
+  const FacetMap map(facetType, facetCoords);
+  const int m = map.dim();
+  Projection out;
+  double xi[2] = {xiStart[0], m > 1 ? xiStart[1] : 0.0};
+  FacetPoint p;
+  for (int it = 0; it < maxIterations; ++it) {
+    map.evaluate(xi, p);
+    const double r[3] = {p.x[0] - slavePoint[0], p.x[1] - slavePoint[1], p.x[2] - slavePoint[2]};
+    double g[2] = {0.0, 0.0}, H[2][2] = {{1.0, 0.0}, {0.0, 1.0}};
+    for (int j = 0; j < m; ++j) {
+      g[j] = dot3(r, p.a[j]);
+      for (int k = 0; k < m; ++k)
+        H[j][k] = dot3(p.a[j], p.a[k]) + dot3(r, p.b[j][k]);
+    }
+    const double det = H[0][0] * H[1][1] - H[0][1] * H[1][0];
+    if (!(std::fabs(det) > 1e-300)) break;
+    const double d[2] = {-(H[1][1] * g[0] - H[0][1] * g[1]) / det,
+                         -(H[0][0] * g[1] - H[1][0] * g[0]) / det};
+    xi[0] += d[0];
+    if (m > 1) xi[1] += d[1];
+    out.iterations = it + 1;
+    if (std::fabs(d[0]) + std::fabs(m > 1 ? d[1] : 0.0) < 1e-14) {
+      out.converged = true;
+      break;
+    }
+  }
+  map.evaluate(xi, p);
+  double n[3];
+  if (m == 1) {
+    n[0] = p.a[0][1], n[1] = -p.a[0][0], n[2] = 0.0;
+  } else {
+    n[0] = p.a[0][1] * p.a[1][2] - p.a[0][2] * p.a[1][1];
+    n[1] = p.a[0][2] * p.a[1][0] - p.a[0][0] * p.a[1][2];
+    n[2] = p.a[0][0] * p.a[1][1] - p.a[0][1] * p.a[1][0];
+  }
+  const double norm = std::sqrt(dot3(n, n));
+  const double r[3] = {slavePoint[0] - p.x[0], slavePoint[1] - p.x[1], slavePoint[2] - p.x[2]};
+  for (int i = 0; i < 3; ++i) {
+    out.point[i] = p.x[i];
+    out.normal[i] = norm > 0 ? n[i] / norm : 0.0;
+  }
+  out.xi[0] = xi[0], out.xi[1] = xi[1];
+  out.gap = dot3(r, out.normal);
+  out.distance = std::sqrt(dot3(r, r));
+  out.inside = outside(facetType, m, xi) <= kProjectionInsideTolerance;
+  return out;
+}
+
 }  // namespace contactlab

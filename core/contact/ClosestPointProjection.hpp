@@ -48,6 +48,15 @@ Projection projectOnFacet(ElementType facetType, int spaceDim, const double* fac
                           const double* slavePoint, double tolerance = 1e-12,
                           int maxIterations = 30);
 
+// Stationary point of |x(xi) - x_s|^2 / 2 on the facet's polynomial extension, by Newton (full
+// Hessian, no clamping) from xiStart: the smooth branch of the projection through a point found
+// by projectOnFacet, for derivatives of the pairing where that point sits on the facet's
+// boundary (a vertex or edge shared with a neighbour). `inside` tells whether it stays in the
+// reference facet; converged = false when Newton does not converge (far from xiStart).
+Projection projectOnFacetExtension(ElementType facetType, int spaceDim, const double* facetCoords,
+                                   const double* slavePoint, const double* xiStart,
+                                   int maxIterations = 20);
+
 // Whether reference coordinates xi lie in the reference domain of facetType (within tolerance).
 bool insideReferenceFacet(ElementType facetType, const double* xi,
                           double tolerance = kProjectionInsideTolerance);

@@ -23,6 +23,12 @@ struct ContactPointState {
   std::array<double, 3> traction{};  // tangential traction on the slave (direction of friction)
 };
 
+// Derivatives of the geometry in the tangent, for a residual whose geometry follows the iterate:
+// none (the frozen-geometry tangent), pairing (the master point's motion on its facet, and an
+// obstacle's normal), full (also the smoothed normal of a deformable master and its tangents:
+// the consistent tangent of the re-paired residual, on the point's piece of the contact law).
+enum class GeometricTerms { none, pairing, full };
+
 // A status forced by the cycling treatment: closed, the friction status following the iterate.
 constexpr int kForcedClosed = 3;
 
@@ -51,6 +57,8 @@ class ContactControls {
   virtual void releaseTreatments() = 0;
   // Records the cycling kind (CyclingKind as int, 0 none) detected at a point, for the output.
   virtual void markCycling(std::size_t point, int kind) = 0;
+  // Geometry in Newton: which derivatives of the geometry the tangent includes (GeometricTerms).
+  virtual void setGeometricTerms(GeometricTerms terms) = 0;
 };
 
 }  // namespace contactlab

@@ -449,3 +449,42 @@ TEST(ClosestPointProjection, RejectsNonFacetTypes) {
 
 }  // namespace
 }  // namespace contactlab
+
+namespace contactlab {
+namespace {
+
+// Inside a facet the extension's projection is the projection; past its boundary it continues
+// the same polynomial surface (the clamped projection stops at the boundary).
+TEST(ProjectOnFacetExtension, AgreesInsideAndContinuesOutside) {
+  // A curved line3 from (0,0) to (2,0) bulging to y = 0.2 at its middle node.
+  const double line[9] = {0, 0, 0, 2, 0, 0, 1, 0.2, 0};
+  const double inside[3] = {0.7, 0.9, 0};
+  const Projection a = projectOnFacet(ElementType::Line3, 2, line, inside);
+  const double start[2] = {0.0, 0.0};
+  const Projection b = projectOnFacetExtension(ElementType::Line3, 2, line, inside, start);
+  ASSERT_TRUE(b.converged);
+  EXPECT_NEAR(a.xi[0], b.xi[0], 1e-12);
+  EXPECT_NEAR(a.gap, b.gap, 1e-12);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(a.normal[i], b.normal[i], 1e-12);
+  const double outside[3] = {2.3, 0.5, 0};
+  const Projection c = projectOnFacetExtension(ElementType::Line3, 2, line, outside, start);
+  ASSERT_TRUE(c.converged);
+  EXPECT_GT(c.xi[0], 1.0);
+  EXPECT_FALSE(c.inside);
+  // Stationary: the distance vector is normal to the tangent there.
+  const double t[2] = {c.normal[1], -c.normal[0]};
+  EXPECT_NEAR((outside[0] - c.point[0]) * t[0] + (outside[1] - c.point[1]) * t[1], 0.0, 1e-12);
+  // A quad4 in 3D, slightly warped.
+  const double quad[12] = {0, 0, 0, 1, 0, 0.1, 1, 1, 0, 0, 1, 0.05};
+  const double p[3] = {0.3, 0.6, 0.4};
+  const Projection d = projectOnFacet(ElementType::Quad4, 3, quad, p);
+  const Projection e = projectOnFacetExtension(ElementType::Quad4, 3, quad, p, start);
+  ASSERT_TRUE(e.converged);
+  EXPECT_NEAR(d.xi[0], e.xi[0], 1e-10);
+  EXPECT_NEAR(d.xi[1], e.xi[1], 1e-10);
+  EXPECT_NEAR(d.gap, e.gap, 1e-12);
+}
+
+}  // namespace
+}  // namespace contactlab
