@@ -1,0 +1,30 @@
+#pragma once
+// Dense building blocks of the uniqueness diagnostic (DESIGN.md §6 "Critical friction
+// coefficient"). For a fixed status pattern the Jacobian of the augmented-Lagrangian operator
+// is affine in the friction coefficient, J(mu) = A + mu B; the pattern's critical mu is the
+// smallest positive real mu with det(A + mu B) = 0, a generalized eigenvalue problem
+// A v = mu (-B) v (LAPACK dggev). The sign of det J tells whether the Jacobians around a
+// solution agree (locally unique when every one has the same sign).
+//
+// Matrices are n x n, column major. For small systems only (dense); the sparse version of the
+// diagnostic (MUMPS determinants, Anasazi shift-invert) is not written yet.
+#include "linear/LinearSolver.hpp"
+
+#include <vector>
+
+namespace contactlab {
+
+struct CriticalFriction {
+  double mu = 0;      // smallest positive real root; +infinity when there is none
+  int realRoots = 0;  // finite real generalized eigenvalues (roots of det(A + mu B))
+  int infinite = 0;   // eigenvalues at infinity (B singular in those directions)
+};
+
+// Throws std::runtime_error when LAPACK fails, std::invalid_argument on sizes.
+CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B);
+
+// det A as sign, mantissa and power of two (never formed: no overflow), by LU with partial
+// pivoting (LAPACK dgetrf). A singular matrix gives mantissa 0.
+Determinant denseDeterminant(int n, std::vector<double> A);
+
+}  // namespace contactlab
