@@ -17,7 +17,8 @@ void checkSize(int n, const std::vector<double>& M, const char* name) {
 
 }  // namespace
 
-CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B) {
+CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B,
+                                  double zeroTolerance) {
   checkSize(n, A, "A");
   checkSize(n, B, "B");
   for (double& b : B)
@@ -48,6 +49,15 @@ CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<doub
     if (std::fabs(alphaI[k]) > 1e-12 * std::max(scale, std::fabs(alphaR[k]))) continue;
     ++out.realRoots;
     const double mu = alphaR[k] / beta[k];
+    if (std::fabs(mu) <= zeroTolerance) {
+      ++out.zero;
+      continue;
+    }
+    if (zeroTolerance > 0 &&
+        std::fabs(mu) >= 1 / zeroTolerance) {  // round-off of a root at infinity
+      ++out.infinite;
+      continue;
+    }
     if (mu > 0 && mu < out.mu) out.mu = mu;
   }
   return out;

@@ -18,10 +18,16 @@ struct CriticalFriction {
   double mu = 0;      // smallest positive real root; +infinity when there is none
   int realRoots = 0;  // finite real generalized eigenvalues (roots of det(A + mu B))
   int infinite = 0;   // eigenvalues at infinity (B singular in those directions)
+  int zero = 0;       // roots with |mu| <= zeroTolerance, not counted as critical
 };
 
+// Roots with |mu| <= zeroTolerance are structural, not critical: with multipliers scaled by
+// the threshold (the augmented Lagrangian's Lambda = lambda_t / (mu p)), a sticking point's
+// Jacobian is singular at mu = 0 exactly, whatever the mechanics. With zeroTolerance > 0, roots
+// with |mu| >= 1 / zeroTolerance count as at infinity (round-off of an infinite eigenvalue).
 // Throws std::runtime_error when LAPACK fails, std::invalid_argument on sizes.
-CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B);
+CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B,
+                                  double zeroTolerance = 0.0);
 
 // det A as sign, mantissa and power of two (never formed: no overflow), by LU with partial
 // pivoting (LAPACK dgetrf). A singular matrix gives mantissa 0.

@@ -1,5 +1,6 @@
 #include "apps/RunCommand.hpp"
 
+#include "algorithms/PatternCriticalFriction.hpp"
 #include "algorithms/RunStatic.hpp"
 #include "apps/DefaultScene.hpp"
 #include "apps/SceneModel.hpp"
@@ -82,6 +83,71 @@ class Progress {
 int reportInputError(const std::exception& e, bool root) {
   if (root) std::cerr << "contactlab: error: " << e.what() << "\n";
   return 2;
+}
+
+}  // namespace
+
+// The status pattern of the converged state x at time t: its critical friction factor, and the
+// critical mu of every frictional zone (printed on rank 0). Null when there is nothing to check.
+namespace {
+
+JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, LinearSolver& solver,
+                            const Vector& x, double t, int convergedSteps, bool root) {
+  std::string why;
+  double largestMu = 0;
+  for (const auto& zone : sm.contact)
+    largestMu = std::max(largestMu, zone.friction);
+  if (!contact)
+    why = "the scene has no contact";
+  else if (!(largestMu > 0))
+    why = "no contact zone has friction (mu = 0)";
+  else if (convergedSteps == 0)
+    why = "no load step converged";
+  if (!why.empty()) {
+    if (root) std::cout << "contactlab: critical-mu: not computed: " << why << "\n";
+    return JsonValue::object().set("computed", false).set("reason", why);
+  }
+  PatternCriticalFriction c;
+  try {
+    c = patternCriticalFriction(*contact, *contact, solver, x, t);
+  } catch (const LinearSolverError& e) {
+    if (root) std::cout << "contactlab: critical-mu: not computed: " << e.what() << "\n";
+    return JsonValue::object().set("computed", false).set("reason", e.what());
+  }
+  JsonValue zones = JsonValue::object();
+  for (const auto& zone : sm.contact)
+    if (zone.friction > 0)
+      zones.set(zone.name, std::isinf(c.scale) ? JsonValue() : JsonValue(zone.friction * c.scale));
+  if (root) {
+    std::cout << "contactlab: critical-mu: status pattern of the converged state at t = " << t
+              << " (" << c.frictionRows << " friction rows depend on mu): ";
+    if (std::isinf(c.scale)) {
+      std::cout << "no critical mu (det J(s mu) has no positive real root)\n";
+    } else {
+      std::cout << "critical factor " << c.scale << " on mu";
+      for (const auto& zone : sm.contact)
+        if (zone.friction > 0)
+          std::cout << "; " << zone.name << ": mu = " << zone.friction
+                    << ", mu_crit = " << zone.friction * c.scale
+                    << (c.scale <= 1.0 ? " (mu >= mu_crit: possibly non-unique)" : "");
+      std::cout << "\n";
+    }
+  }
+  JsonValue out = JsonValue::object()
+                      .set("computed", true)
+                      .set("time", t)
+                      .set("patterns_examined", 1)
+                      .set("pattern_choice",
+                           "the statuses of the converged state only (the "
+                           "ambiguous points' other patterns are not "
+                           "enumerated yet)")
+                      .set("friction_rows", c.frictionRows)
+                      .set("factor", std::isinf(c.scale) ? JsonValue() : JsonValue(c.scale))
+                      .set("zones", zones);
+  if (c.determinant)
+    out.set("determinant_sign", c.determinant->sign())
+        .set("determinant_log10", c.determinant->log10Abs());
+  return out;
 }
 
 }  // namespace
@@ -214,7 +280,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
               .set("value", value));
     }
   };
+  double lastTime = 0;
   auto onStep = [&](const StepReport& s, const Vector& state) {
+    lastTime = s.time;
     auto solution = displacementOf(state);
     if (sm.writeVtk) {
       if (!vtk) vtk = std::make_unique<VtkSeriesWriter>(outDir, "result", mpiComm);
@@ -271,6 +339,11 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "
                  "search distance)\n";
+
+  // Uniqueness: the critical friction coefficient of the last converged state's pattern.
+  JsonValue criticalMu;
+  if (options.criticalMu)
+    criticalMu = criticalMuSummary(sm, contact.get(), *solver, *x, lastTime, report.steps, root);
 
   // 3. Summary, also when the run failed (the last converged step stays written).
   const double localMemory = peakMemoryMB();
@@ -380,6 +453,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("reactions", reactions)
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
+    if (options.criticalMu) summary.set("critical_mu", criticalMu);
     summary.write(outDir + "/summary.json");
     if (report.converged) {
       std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps

@@ -13,6 +13,9 @@ struct RunOptions {
   std::string outputDirectory;         // empty: the scene's Output/Directory
   std::vector<std::string> overrides;  // --set key=value
   bool validateOnly = false;
+  // `contactlab critical-mu`: after the run, the critical friction coefficient of the last
+  // converged state's status pattern (printed and in summary.json under critical_mu).
+  bool criticalMu = false;
 };
 
 // Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says

@@ -3,6 +3,7 @@
 //
 //   contactlab run [SCENE] [--out DIR] [--set key=value ...]
 //   contactlab validate SCENE [--set key=value ...]
+//   contactlab critical-mu SCENE [--out DIR] [--set key=value ...]
 //   contactlab list
 //   contactlab --version
 #include "contactlab/Version.hpp"
@@ -27,6 +28,9 @@ const char* kUsage =
     "                      write result.pvd, steps.csv and summary.json to DIR\n"
     "  validate SCENE [--set key=value ...]\n"
     "                      check SCENE and its mesh without solving\n"
+    "  critical-mu SCENE [--out DIR] [--set key=value ...]\n"
+    "                      run SCENE, then the critical friction coefficient of the last\n"
+    "                      converged state's contact statuses (also in summary.json)\n"
     "  list                every registry with its parameters, defaults and doc strings\n"
     "  --version           print the version\n"
     "\n"
@@ -61,9 +65,10 @@ int main(int argc, char** argv) {
     if (root) std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
     return 0;
   }
-  if (command == "run" || command == "validate") {
+  if (command == "run" || command == "validate" || command == "critical-mu") {
     contactlab::RunOptions options;
     options.validateOnly = command == "validate";
+    options.criticalMu = command == "critical-mu";
     for (std::size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       if ((a == "--out" || a == "--set") && i + 1 >= args.size())
@@ -79,8 +84,8 @@ int main(int argc, char** argv) {
       else
         return root ? usageError("more than one scene given ('" + a + "')") : 2;
     }
-    if (options.validateOnly && options.scenePath.empty())
-      return root ? usageError("validate needs a scene file") : 2;
+    if ((options.validateOnly || options.criticalMu) && options.scenePath.empty())
+      return root ? usageError(command + " needs a scene file") : 2;
     return contactlab::runCommand(options, comm);
   }
   return root ? usageError("unknown command '" + command + "'") : 2;

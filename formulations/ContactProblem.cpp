@@ -693,7 +693,7 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   const std::array<double, 3>* dirs[3] = {&pt.normal, &pt.t1, &pt.t2};
   LawInput in;
   in.weight = pt.weight;
-  in.mu = zone.friction;
+  in.mu = zone.friction * frictionScale_;
   in.nt = nt;
   const auto xs = surfacePosition(pt.node);
   std::array<double, 3> rel{}, slip{};  // x_s - x_m, and the slip increment

@@ -94,6 +94,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void releaseTreatments() override;
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
+  void setFrictionScale(double scale) override { frictionScale_ = scale; }
 
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;
@@ -159,6 +160,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   int statusChanges_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
   GeometricTerms geometricTerms_ = GeometricTerms::none;
+  double frictionScale_ = 1.0;
   bool layoutChanged_ = false;
   // Per zone with a master surface: the master facets around each master node.
   std::vector<std::map<std::int64_t, std::vector<int>>> nodeFacets_;

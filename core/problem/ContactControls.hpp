@@ -57,6 +57,9 @@ class ContactControls {
   virtual void releaseTreatments() = 0;
   // Records the cycling kind (CyclingKind as int, 0 none) detected at a point, for the output.
   virtual void markCycling(std::size_t point, int kind) = 0;
+  // Multiplies every zone's friction coefficient (1: the model's): the uniqueness diagnostic
+  // assembles the Jacobian at two values to split it as A + mu B.
+  virtual void setFrictionScale(double scale) = 0;
   // Geometry in Newton: which derivatives of the geometry the tangent includes (GeometricTerms).
   virtual void setGeometricTerms(GeometricTerms terms) = 0;
 };

@@ -2,6 +2,8 @@
 // states with a known answer: a block pressed on a rigid plane (uniform pressure, with and
 // without friction) and two stacked blocks with matching meshes, for every formulation, on 1
 // and 2 ranks.
+#include "algorithms/CriticalFriction.hpp"
+#include "algorithms/PatternCriticalFriction.hpp"
 #include "algorithms/RunStatic.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
@@ -39,20 +41,32 @@ struct Solved {
   double pushReaction = 0;
 };
 
+// A model with contact run through its load steps (MUMPS, default options), kept for checks.
+struct ContactRun {
+  ContactRun(const SolidModel& model, std::vector<ContactZone> zones, int steps)
+      : comm(Tpetra::getDefaultComm()), solid(model, comm), contact(solid, std::move(zones)) {
+    registerLinearSolvers();
+    solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
+    StaticSolverOptions options;
+    options.steps = steps;
+    x = contact.createVector();
+    report = runStatic(contact, &contact, *solver, options, *x);
+  }
+  Teuchos::RCP<const Comm> comm;
+  Problem solid;
+  ContactProblem contact;
+  std::unique_ptr<LinearSolver> solver;
+  Teuchos::RCP<Vector> x;
+  RunReport report;
+};
+
 Solved solve(SolidModel model, std::vector<ContactZone> zones, int steps = 2) {
-  auto comm = Tpetra::getDefaultComm();
-  Problem solid(model, comm);
-  ContactProblem contact(solid, std::move(zones));
-  registerLinearSolvers();
-  auto solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
-  StaticSolverOptions options;
-  options.steps = steps;
-  auto x = contact.createVector();
+  ContactRun run(model, std::move(zones), steps);
   Solved s;
-  s.report = runStatic(contact, &contact, *solver, options, *x);
-  s.resultants = contact.resultants();
-  s.points = contact.results();
-  for (const auto& r : solid.reactions())
+  s.report = run.report;
+  s.resultants = run.contact.resultants();
+  s.points = run.contact.results();
+  for (const auto& r : run.solid.reactions())
     if (r.name == "top")
       s.topReaction = r.force[1];
     else if (r.name == "push")
@@ -88,20 +102,103 @@ SolidModel squeezedBlock(std::shared_ptr<Mesh> mesh, const std::string& bottomBl
   return model;
 }
 
-class ContactProblemTest : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(ContactProblemTest, BlockOnRigidPlaneCarriesTheUniformPressure) {
+// The squeezed unit block (4 x 4 quad4) with its top pushed sideways by `push`, on a rigid
+// floor with friction mu.
+SolidModel pushedBlock(double push) {
   RectangleParams r;
   r.divisions = {4, 4};
-  auto mesh = std::make_shared<Mesh>(generateRectangle(r));
+  SolidModel model = squeezedBlock(std::make_shared<Mesh>(generateRectangle(r)), "");
+  model.dirichlet[0].components = {1};
+  DirichletCondition side;
+  side.name = "push";
+  side.group = "top";
+  side.components = {0};
+  side.value = push;
+  model.dirichlet[1] = side;
+  return model;
+}
+
+ContactZone floorZone(double mu, const std::string& formulation) {
   ContactZone zone;
   zone.name = "floor";
   zone.slave = "bottom";
   RigidObstacleSpec plane;
   plane.direction = {0, 1, 0};
   zone.obstacle = plane;
-  zone.law = law(GetParam());
-  const Solved s = solve(squeezedBlock(mesh, ""), {zone});
+  zone.friction = mu;
+  zone.law = law(formulation);
+  return zone;
+}
+
+// The low-rank critical friction factor of a slipping state's pattern equals the one of the
+// dense pencil det(A + s B) (1 rank), and the problem is left as it was.
+std::vector<double> denseMatrix(const Matrix& M) {
+  const auto n = static_cast<std::size_t>(M.getGlobalNumRows());
+  std::vector<double> D(n * n, 0.0);
+  const auto local = M.getLocalMatrixHost();
+  for (LO r = 0; r < static_cast<LO>(M.getNodeNumRows()); ++r)
+    for (auto e = local.graph.row_map(r); e < local.graph.row_map(r + 1); ++e) {
+      const GO c = M.getColMap()->getGlobalElement(local.graph.entries(e));
+      D[static_cast<std::size_t>(c) * n + M.getRowMap()->getGlobalElement(r)] = local.values(e);
+    }
+  return D;
+}
+
+TEST(PatternCriticalFriction, LowRankMatchesTheDensePencil) {
+  SolidModel model = pushedBlock(0.004);
+  model.materials["body"] = std::make_shared<LinearElastic>(kE, 0.3);
+  const ContactZone zone = floorZone(0.1, "augmented-lagrangian");
+  ContactRun run(model, {zone}, 2);
+  ASSERT_TRUE(run.report.converged);
+  ContactProblem& contact = run.contact;
+  auto& solver = run.solver;
+  auto& x = run.x;
+  auto& comm = run.comm;
+  ASSERT_GT(contact.resultants().slip, 0);
+  auto r0 = contact.createVector();
+  contact.assemble(*x, 1.0, r0.get(), false);
+
+  const PatternCriticalFriction c = patternCriticalFriction(contact, contact, *solver, *x, 1.0);
+  EXPECT_GT(c.frictionRows, 0);
+  auto r1 = contact.createVector();
+  contact.assemble(*x, 1.0, r1.get(), false);
+  r1->update(-1.0, *r0, 1.0);
+  EXPECT_EQ(r1->normInf(), 0.0) << "the diagnostic changed the problem";
+  if (comm->getSize() > 1) return;
+
+  const auto states = contact.pointStates();
+  for (std::size_t i = 0; i < states.size(); ++i)
+    contact.forceStatus(i, states[i].status);
+  contact.assemble(*x, 1.0, nullptr, true);
+  const auto J1 = denseMatrix(*contact.tangent());
+  contact.setFrictionScale(2.0);
+  contact.assemble(*x, 1.0, nullptr, true);
+  auto B = denseMatrix(*contact.tangent());
+  contact.setFrictionScale(1.0);
+  contact.releaseTreatments();
+  std::vector<double> A(B.size());
+  for (std::size_t e = 0; e < B.size(); ++e) {
+    B[e] -= J1[e];
+    A[e] = J1[e] - B[e];
+  }
+  const int n = static_cast<int>(std::sqrt(static_cast<double>(B.size())) + 0.5);
+  const CriticalFriction dense = criticalFriction(n, A, B, 1e-8);
+  std::printf("critical factor %.15g (low rank, k = %d), %.15g (dense, n = %d)\n", c.scale,
+              c.frictionRows, dense.mu, n);
+  if (std::isinf(dense.mu)) {
+    EXPECT_TRUE(std::isinf(c.scale));
+  } else {
+    EXPECT_NEAR(c.scale, dense.mu, 1e-8 * dense.mu);
+  }
+}
+
+class ContactProblemTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ContactProblemTest, BlockOnRigidPlaneCarriesTheUniformPressure) {
+  RectangleParams r;
+  r.divisions = {4, 4};
+  auto mesh = std::make_shared<Mesh>(generateRectangle(r));
+  const Solved s = solve(squeezedBlock(mesh, ""), {floorZone(0.0, GetParam())});
   ASSERT_TRUE(s.report.converged) << s.report.message;
   // Uniaxial strain kSqueeze over height 1: pressure E * kSqueeze on the whole bottom.
   const double p = kE * kSqueeze;
@@ -138,27 +235,8 @@ TEST_P(ContactProblemTest, StackedBlocksTransmitThePressure) {
 TEST_P(ContactProblemTest, FrictionHoldsBelowTheThresholdAndSlidesAbove) {
   // The block is squeezed and its top pushed sideways in proportion (T/N about 0.065 on this
   // mesh, the free sides make the shear non-uniform): mu = 0.3 holds it, mu = 0.05 cannot.
-  RectangleParams r;
-  r.divisions = {4, 4};
-  auto mesh = std::make_shared<Mesh>(generateRectangle(r));
   for (double mu : {0.3, 0.05}) {
-    SolidModel model = squeezedBlock(mesh, "");
-    model.dirichlet[0].components = {1};
-    DirichletCondition push;
-    push.name = "push";
-    push.group = "top";
-    push.components = {0};
-    push.value = 0.002;
-    model.dirichlet[1] = push;
-    ContactZone zone;
-    zone.name = "floor";
-    zone.slave = "bottom";
-    RigidObstacleSpec plane;
-    plane.direction = {0, 1, 0};
-    zone.obstacle = plane;
-    zone.friction = mu;
-    zone.law = law(GetParam());
-    const Solved s = solve(model, {zone}, 4);
+    const Solved s = solve(pushedBlock(0.002), {floorZone(mu, GetParam())}, 4);
     ASSERT_TRUE(s.report.converged) << s.report.message;
     const double N = s.resultants.normalForceMagnitude;
     const double T = std::abs(s.resultants.tangentialForce[0]);
@@ -217,15 +295,11 @@ void checkTangent(const std::string& formulation, bool geometryInNewton) {
     zone.master = "lower-top";
     zone.friction = 0.2;
     zone.law = law(formulation);
-    auto comm = Tpetra::getDefaultComm();
-    Problem solid(model, comm);
-    ContactProblem contact(solid, {zone});
-    registerLinearSolvers();
-    auto solver = linearSolverRegistry().get("mumps").build(Teuchos::ParameterList(), comm);
-    StaticSolverOptions options;
-    options.steps = 2;
-    auto x = contact.createVector();
-    const RunReport report = runStatic(contact, &contact, *solver, options, *x);
+    ContactRun run(model, {zone}, 2);
+    ContactProblem& contact = run.contact;
+    const Problem& solid = run.solid;
+    auto& x = run.x;
+    const RunReport& report = run.report;
     ASSERT_TRUE(report.converged) << dim << "D: " << report.message;
     const ContactResultants r = contact.resultants();
     ASSERT_GT(r.contact, 0);

@@ -1,0 +1,38 @@
+#!/usr/bin/env python3
+"""`contactlab critical-mu`: the critical friction coefficient of the converged state's status
+pattern, in the output and summary.json, the same on 1 and 2 ranks; a frictionless scene says
+why it is not computed.
+
+usage: check_critical_mu.py CONTACTLAB SCENES_DIR WORKDIR"""
+import json, os, shutil, subprocess, sys
+
+exe, scenes, work = sys.argv[1:4]
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def run(scene, ranks):
+    out = os.path.join(work, f"{scene}-np{ranks}")
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [exe, "critical-mu", os.path.join(scenes, scene + ".yaml"), "--out", out]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+    r = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "critical-mu" in r.stdout, r.stdout
+    return json.load(open(os.path.join(out, "summary.json")))["critical_mu"]
+
+
+one, two = run("pad-2d", 1), run("pad-2d", 2)
+print("pad-2d:", one)
+assert one["computed"] and two["computed"]
+assert one["friction_rows"] > 0 and one["patterns_examined"] == 1
+mu = 0.45
+crit = one["zones"]["floor"]
+assert crit is not None and abs(crit - mu * one["factor"]) <= 1e-12 * crit
+assert crit > mu, "the pad at mu = 0.45 is below its critical mu"
+assert abs(two["zones"]["floor"] - crit) <= 1e-8 * crit, (crit, two["zones"]["floor"])
+
+frictionless = run("hertz-2d", 1)
+print("hertz-2d:", frictionless)
+assert frictionless["computed"] is False and "friction" in frictionless["reason"]
+print("ok")
