@@ -11,12 +11,15 @@
 namespace contactlab {
 
 PatternCriticalFriction patternCriticalFriction(NonlinearSystem& system, ContactControls& controls,
-                                                LinearSolver& solver, const Vector& x, double t) {
-  // The pattern of x: statuses of an evaluation at x, then held.
-  system.assemble(x, t, nullptr, false);
-  const auto states = controls.pointStates();
-  for (std::size_t i = 0; i < states.size(); ++i)
-    controls.forceStatus(i, states[i].status);
+                                                LinearSolver& solver, const Vector& x, double t,
+                                                std::vector<int> statuses) {
+  if (statuses.empty()) {  // the pattern of x: statuses of an evaluation at x
+    system.assemble(x, t, nullptr, false);
+    for (const auto& s : controls.pointStates())
+      statuses.push_back(s.status);
+  }
+  for (std::size_t i = 0; i < statuses.size(); ++i)
+    controls.forceStatus(i, statuses[i]);
 
   auto assembleAt = [&](double scale) {
     controls.setFrictionScale(scale);
@@ -61,6 +64,18 @@ PatternCriticalFriction patternCriticalFriction(NonlinearSystem& system, Contact
 
   PatternCriticalFriction out;
   out.frictionRows = k;
+  // Restores the system whatever happens next (a singular J(1) throws from the solver).
+  struct Restore {
+    NonlinearSystem& system;
+    ContactControls& controls;
+    const Vector& x;
+    double t;
+    ~Restore() {
+      controls.setFrictionScale(1.0);
+      controls.releaseTreatments();
+      system.assemble(x, t, nullptr, true);
+    }
+  } restore{system, controls, x, t};
   solver.setMatrix(J1, true);
   out.determinant = solver.determinant();
   if (k == 0) {
@@ -97,10 +112,101 @@ PatternCriticalFriction patternCriticalFriction(NonlinearSystem& system, Contact
     out.scale = c.mu;
     out.realRoots = c.realRoots;
   }
+  return out;
+}
 
-  controls.setFrictionScale(1.0);
-  controls.releaseTreatments();
-  system.assemble(x, t, nullptr, true);
+UniquenessCheck checkUniqueness(NonlinearSystem& system, ContactControls& controls,
+                                LinearSolver& solver, const Vector& x, double t, double tolerance,
+                                int maxPatterns) {
+  system.assemble(x, t, nullptr, false);
+  const auto states = controls.pointStates();
+  std::vector<int> base;
+  double largest = 0;
+  for (const auto& s : states) {
+    base.push_back(s.status);
+    if (s.zone != 0) largest = std::max(largest, std::abs(s.contactIndicator));
+  }
+  // Adjacent statuses of each ambiguous point (its own first).
+  std::vector<std::size_t> points;
+  std::vector<std::vector<int>> choices;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto& s = states[i];
+    if (s.zone == 0) continue;
+    std::vector<int> alt{s.status};
+    auto add = [&](int status) {
+      if (std::find(alt.begin(), alt.end(), status) == alt.end()) alt.push_back(status);
+    };
+    const bool friction = s.frictionIndicator != 0.0;
+    if (std::abs(s.contactIndicator) <= tolerance * largest) {
+      add(0);
+      add(friction && s.frictionIndicator > 0 ? 2 : 1);
+    }
+    if (s.status != 0 && friction && std::abs(s.frictionIndicator) <= tolerance) {
+      add(1);
+      add(2);
+    }
+    if (alt.size() > 1) {
+      points.push_back(i);
+      choices.push_back(alt);
+    }
+  }
+  UniquenessCheck out;
+  out.ambiguousPoints = static_cast<int>(points.size());
+  std::vector<std::vector<int>> patterns{base};
+  double combinations = 1;
+  for (const auto& c : choices)
+    combinations *= static_cast<double>(c.size());
+  if (combinations <= maxPatterns) {
+    out.choice = "every combination of the ambiguous points' statuses";
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      std::vector<std::vector<int>> next;
+      for (const auto& pattern : patterns)
+        for (int status : choices[p]) {
+          auto q = pattern;
+          q[points[p]] = status;
+          next.push_back(q);
+        }
+      patterns.swap(next);
+    }
+  } else {
+    out.choice = "the converged pattern and single changes of one ambiguous point (" +
+                 std::to_string(static_cast<long long>(combinations)) +
+                 " combinations are too many), at most " + std::to_string(maxPatterns);
+    for (std::size_t p = 0; p < points.size(); ++p)
+      for (std::size_t a = 1; a < choices[p].size(); ++a)
+        if (static_cast<int>(patterns.size()) < maxPatterns) {
+          auto q = base;
+          q[points[p]] = choices[p][a];
+          patterns.push_back(q);
+        }
+  }
+  out.scale = std::numeric_limits<double>::infinity();
+  int firstSign = 0;
+  out.signsKnown = true;
+  for (const auto& pattern : patterns) {
+    ++out.patterns;
+    PatternCriticalFriction c;
+    try {
+      c = patternCriticalFriction(system, controls, solver, x, t, pattern);
+    } catch (const LinearSolverError&) {
+      ++out.singularPatterns;
+      out.sameSign = false;
+      continue;
+    }
+    out.scale = std::min(out.scale, c.scale);
+    if (!c.determinant) {
+      out.signsKnown = false;
+      continue;
+    }
+    const int sign = c.determinant->sign();
+    if (firstSign == 0) firstSign = sign;
+    if (sign != firstSign && out.sameSign) {
+      out.sameSign = false;
+      for (std::size_t p = 0; p < points.size(); ++p)
+        out.breakingPattern += (p ? ", " : "") + std::string("point ") + std::to_string(points[p]) +
+                               ": " + std::to_string(pattern[points[p]]);
+    }
+  }
   return out;
 }
 

@@ -14,6 +14,8 @@
 #include "linear/LinearSolver.hpp"
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -24,10 +26,33 @@ struct PatternCriticalFriction {
   std::optional<Determinant> determinant;  // det J(1), when the solver computes it
 };
 
-// Collective. Evaluates the system at x, t, holds its statuses, assembles J at two friction
-// factors, factorizes J(1) with `solver`, and restores the system (statuses released, factor
-// 1, tangent reassembled at x). Throws LinearSolverError when J(1) is singular.
+// Collective. Holds `statuses` (per contact point 0 no contact, 1 stick, 2 slip; empty: those of
+// an evaluation at x, t), assembles J at two friction factors, factorizes J(1) with `solver`,
+// and restores the system (statuses released, factor 1, tangent reassembled at x). Throws
+// LinearSolverError when J(1) is singular.
 PatternCriticalFriction patternCriticalFriction(NonlinearSystem& system, ContactControls& controls,
-                                                LinearSolver& solver, const Vector& x, double t);
+                                                LinearSolver& solver, const Vector& x, double t,
+                                                std::vector<int> statuses = {});
+
+// The base of the generalized Jacobian around a converged state x: the points within
+// `tolerance` of a status switch (|contact indicator| <= tolerance times its largest value;
+// for closed points with friction, |friction indicator| <= tolerance) are ambiguous and take
+// each adjacent status. Every combination is examined when there are at most `maxPatterns`;
+// beyond, the converged pattern and each single change of one ambiguous point (the first
+// maxPatterns of them), as `choice` says. Locally unique when every determinant has the same
+// sign (known only with a solver that computes determinants).
+struct UniquenessCheck {
+  int ambiguousPoints = 0;
+  int patterns = 0;  // examined
+  std::string choice;
+  bool signsKnown = false;
+  bool sameSign = true;
+  std::string breakingPattern;  // the first pattern whose sign differs (point: status, ...)
+  int singularPatterns = 0;     // J(1) singular there (counted as breaking the sign)
+  double scale = 0;             // smallest critical factor over the patterns examined
+};
+UniquenessCheck checkUniqueness(NonlinearSystem& system, ContactControls& controls,
+                                LinearSolver& solver, const Vector& x, double t,
+                                double tolerance = 1e-6, int maxPatterns = 64);
 
 }  // namespace contactlab

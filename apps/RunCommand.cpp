@@ -10,6 +10,7 @@
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
+#include "linear/MumpsSolver.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -91,8 +92,9 @@ int reportInputError(const std::exception& e, bool root) {
 // critical mu of every frictional zone (printed on rank 0). Null when there is nothing to check.
 namespace {
 
-JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, LinearSolver& solver,
-                            const Vector& x, double t, int convergedSteps, bool root) {
+JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const Vector& x,
+                            double t, int convergedSteps, const Teuchos::RCP<const Comm>& comm) {
+  const bool root = comm->getRank() == 0;
   std::string why;
   double largestMu = 0;
   for (const auto& zone : sm.contact)
@@ -107,24 +109,30 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, Linea
     if (root) std::cout << "contactlab: critical-mu: not computed: " << why << "\n";
     return JsonValue::object().set("computed", false).set("reason", why);
   }
-  PatternCriticalFriction c;
-  try {
-    c = patternCriticalFriction(*contact, *contact, solver, x, t);
-  } catch (const LinearSolverError& e) {
-    if (root) std::cout << "contactlab: critical-mu: not computed: " << e.what() << "\n";
-    return JsonValue::object().set("computed", false).set("reason", e.what());
-  }
+  // A MUMPS of its own, with determinants (their signs decide local uniqueness).
+  MumpsSolver::Options mumps;
+  mumps.determinant = true;
+  MumpsSolver solver(mumps, comm);
+  const UniquenessCheck c = checkUniqueness(*contact, *contact, solver, x, t);
   JsonValue zones = JsonValue::object();
   for (const auto& zone : sm.contact)
     if (zone.friction > 0)
       zones.set(zone.name, std::isinf(c.scale) ? JsonValue() : JsonValue(zone.friction * c.scale));
+  const std::string verdict = c.singularPatterns > 0 ? "possibly non-unique (a singular Jacobian)"
+                              : !c.sameSign          ? "possibly non-unique"
+                                                     : "locally unique";
   if (root) {
-    std::cout << "contactlab: critical-mu: status pattern of the converged state at t = " << t
-              << " (" << c.frictionRows << " friction rows depend on mu): ";
+    std::cout << "contactlab: critical-mu: converged state at t = " << t << ": "
+              << c.ambiguousPoints << " ambiguous point(s), " << c.patterns
+              << " status pattern(s) examined (" << c.choice << "): " << verdict;
+    if (!c.sameSign && !c.breakingPattern.empty())
+      std::cout << "; the sign changes at " << c.breakingPattern;
+    std::cout << "\n";
     if (std::isinf(c.scale)) {
-      std::cout << "no critical mu (det J(s mu) has no positive real root)\n";
+      std::cout << "contactlab: critical-mu: no critical mu (det J(s mu) has no positive real "
+                   "root on these patterns)\n";
     } else {
-      std::cout << "critical factor " << c.scale << " on mu";
+      std::cout << "contactlab: critical-mu: critical factor " << c.scale << " on mu";
       for (const auto& zone : sm.contact)
         if (zone.friction > 0)
           std::cout << "; " << zone.name << ": mu = " << zone.friction
@@ -136,17 +144,15 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, Linea
   JsonValue out = JsonValue::object()
                       .set("computed", true)
                       .set("time", t)
-                      .set("patterns_examined", 1)
-                      .set("pattern_choice",
-                           "the statuses of the converged state only (the "
-                           "ambiguous points' other patterns are not "
-                           "enumerated yet)")
-                      .set("friction_rows", c.frictionRows)
+                      .set("ambiguous_points", c.ambiguousPoints)
+                      .set("patterns_examined", c.patterns)
+                      .set("pattern_choice", c.choice)
+                      .set("verdict", verdict)
+                      .set("singular_patterns", c.singularPatterns)
+                      .set("breaking_pattern",
+                           c.breakingPattern.empty() ? JsonValue() : JsonValue(c.breakingPattern))
                       .set("factor", std::isinf(c.scale) ? JsonValue() : JsonValue(c.scale))
                       .set("zones", zones);
-  if (c.determinant)
-    out.set("determinant_sign", c.determinant->sign())
-        .set("determinant_log10", c.determinant->log10Abs());
   return out;
 }
 
@@ -343,7 +349,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // Uniqueness: the critical friction coefficient of the last converged state's pattern.
   JsonValue criticalMu;
   if (options.criticalMu)
-    criticalMu = criticalMuSummary(sm, contact.get(), *solver, *x, lastTime, report.steps, root);
+    criticalMu = criticalMuSummary(sm, contact.get(), *x, lastTime, report.steps, comm);
 
   // 3. Summary, also when the run failed (the last converged step stays written).
   const double localMemory = peakMemoryMB();

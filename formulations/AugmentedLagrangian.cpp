@@ -38,6 +38,7 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
   for (int k = 0; k < nt; ++k)
     LamHat[k] = in.Lambda[k] + rt * in.slip[k];
   const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
+  out.frictionIndicator = b.excess;
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   const double tau = thresholdFrozen ? in.frozenThreshold : in.mu * pHat;
   const double dTauDp = thresholdFrozen ? 0.0 : in.mu;

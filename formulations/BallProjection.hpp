@@ -13,6 +13,7 @@ struct BallProjection {
   std::array<double, 4> D{};  // row major nt x nt
   std::array<double, 2> e{};  // unit direction of x (zero when x = 0)
   bool inside = true;
+  double excess = 0;  // (|x| - rho) / rho: < 0 inside, 0 on the sphere (the stick-slip switch)
 };
 
 // `status` 1 (stick) or 2 (slip) forces that branch (a status frozen by an algorithm); any
@@ -28,6 +29,7 @@ inline BallProjection projectOnBall(const std::array<double, 2>& x, int nt, doub
     for (int k = 0; k < nt; ++k)
       b.e[k] = x[k] / norm;
   b.inside = status == 1 || (status != 2 && (norm < rho || norm == 0.0));
+  b.excess = rho > 0 ? (norm - rho) / rho : (norm > 0 ? 1e300 : -1.0);
   const double scale = rho / std::max(norm, 1e-300);
   for (int k = 0; k < nt; ++k) {
     b.P[k] = b.inside ? x[k] : rho * b.e[k];

@@ -60,6 +60,9 @@ struct LawOutput {
   // The quantity whose sign decides the natural contact status, whatever is frozen: closed
   // when >= 0 (augmented pressure p^ = p - c g; penalty: -eps_n g).
   double indicator = 0.0;
+  // Where the friction status switches, for a closed point: slip when > 0 ((|x| - rho) / rho of
+  // the law's projection on its friction ball); 0 without friction.
+  double frictionIndicator = 0.0;
 };
 
 class ContactLaw {

