@@ -239,6 +239,16 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   for (const char* c :
        {"condition_estimate", "assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
     stepColumns.push_back(c);
+  // Output/Critical Mu Check: the uniqueness check after each converged step (its own MUMPS,
+  // with determinants); the smallest mu_crit over the zones goes to steps.csv.
+  std::unique_ptr<MumpsSolver> checkSolver;
+  if (sm.criticalMuCheck && contact) {
+    MumpsSolver::Options o;
+    o.determinant = true;
+    checkSolver = std::make_unique<MumpsSolver>(o, comm);
+    stepColumns.push_back("critical_mu");
+  }
+  int possiblyNonUnique = 0;
   // The linear solver's condition estimate of the last solve of each step, when it computes one
   // (mumps with Condition Estimate: true); its largest value goes to the summary.
   double maxCondition = -1;
@@ -331,6 +341,35 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     for (double v :
          {s.seconds.assembly - contactTerms, pairing, contactTerms, s.seconds.linearSolve})
       row.push_back(F::format(v));
+    if (checkSolver) {
+      std::string cell;
+      try {
+        const UniquenessCheck c = checkUniqueness(*contact, *contact, *checkSolver, state, s.time);
+        double muCrit = std::numeric_limits<double>::infinity(), ratio = 0;
+        for (const auto& zone : sm.contact)
+          if (zone.friction > 0) {
+            muCrit = std::min(muCrit, zone.friction * c.scale);
+            ratio = std::max(ratio, 1.0 / c.scale);
+          }
+        cell = std::isinf(muCrit) ? "inf" : F::format(muCrit);
+        if (ratio >= 1.0 || !c.sameSign) {
+          ++possiblyNonUnique;
+          if (root)
+            std::cerr << "contactlab: warning: step " << s.step << " (t = " << s.time
+                      << "): possibly non-unique: "
+                      << (!c.sameSign ? "the Jacobians around the state differ in sign"
+                                      : "mu >= mu_crit = " + F::format(muCrit))
+                      << "\n";
+        }
+      } catch (const LinearSolverError& e) {
+        cell = "singular";
+        ++possiblyNonUnique;
+        if (root)
+          std::cerr << "contactlab: warning: step " << s.step << ": critical-mu check: " << e.what()
+                    << "\n";
+      }
+      row.push_back(cell);
+    }
     stepsCsv.addFormattedRow(std::move(row));
     if (root) stepsCsv.write(outDir + "/steps.csv");
     recordProbes(*solution);
@@ -460,6 +499,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
     if (options.criticalMu) summary.set("critical_mu", criticalMu);
+    if (checkSolver)
+      summary.set("critical_mu_check", JsonValue::object()
+                                           .set("steps_checked", report.steps)
+                                           .set("possibly_non_unique", possiblyNonUnique));
     summary.write(outDir + "/summary.json");
     if (report.converged) {
       std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps

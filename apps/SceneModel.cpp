@@ -248,6 +248,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   sm.outputDirectory = output.get<std::string>("Directory");
   if (sm.outputDirectory.empty()) sm.outputDirectory = "results/" + scene.name;
   sm.writeVtk = output.get<bool>("VTK");
+  sm.criticalMuCheck = output.get<bool>("Critical Mu Check");
   const ParameterList& probes = output.sublist("Probes");
   for (auto it = probes.begin(); it != probes.end(); ++it) {
     const ParameterList& pr = probes.sublist(probes.name(it));

@@ -32,6 +32,7 @@ struct SceneModel {
   std::vector<Probe> probes;
   std::string outputDirectory;
   bool writeVtk = true;
+  bool criticalMuCheck = false;  // Output/Critical Mu Check
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

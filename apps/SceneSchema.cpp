@@ -158,6 +158,10 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
   p.set("Directory", "",
         "Results folder; empty means results/<scene name> (the --out option overrides it)");
   p.set("VTK", true, "Write result.pvd and one .vtu (.pvtu on several ranks) per step");
+  p.set("Critical Mu Check", false,
+        "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
+        "patterns around the state, determinant signs, critical mu): a warning when mu >= "
+        "mu_crit or the signs differ, and a critical_mu column in steps.csv");
   p.set("Probes",
         namedSection(userSublist(user, "Probes"), "Output/Probes", where,
                      [](const ParameterList&, const std::string&) { return probeItem(); }));

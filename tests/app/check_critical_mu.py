@@ -32,6 +32,20 @@ assert crit is not None and abs(crit - mu * one["factor"]) <= 1e-12 * crit
 assert crit > mu, "the pad at mu = 0.45 is below its critical mu"
 assert abs(two["zones"]["floor"] - crit) <= 1e-8 * crit, (crit, two["zones"]["floor"])
 
+# Output/Critical Mu Check: the same check after every step of `run`, in steps.csv.
+out = os.path.join(work, "pad-2d-check")
+shutil.rmtree(out, ignore_errors=True)
+r = subprocess.run([exe, "run", os.path.join(scenes, "pad-2d.yaml"), "--out", out, "--set",
+                    "Output/Critical Mu Check=true"], capture_output=True, text=True, timeout=300)
+assert r.returncode == 0, r.stdout + r.stderr
+import csv
+rows = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
+last = float(rows[-1]["critical_mu"])
+print("pad-2d per step:", [row["critical_mu"] for row in rows])
+assert abs(last - crit) <= 1e-8 * crit, (last, crit)
+check = json.load(open(os.path.join(out, "summary.json")))["critical_mu_check"]
+assert check == {"steps_checked": len(rows), "possibly_non_unique": 0}, check
+
 frictionless = run("hertz-2d", 1)
 print("hertz-2d:", frictionless)
 assert frictionless["computed"] is False and "friction" in frictionless["reason"]
