@@ -448,16 +448,9 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
     const ElementType type = masterFacetType_[z];
     const int nn = obstacles_[z] ? 0 : info(type).nodes;
     if (!obstacles_[z]) {
-      const auto& nodes = masterFacetNodes_[z];
-      std::vector<Facet> facets(nodes.size() / nn);
-      for (std::size_t f = 0; f < facets.size(); ++f) {
-        facets[f].type = type;
-        facets[f].tag = static_cast<std::int64_t>(f);
-        for (int a = 0; a < nn; ++a) {
-          const auto p = surfacePosition(nodes[f * nn + a]);
-          facets[f].coords.insert(facets[f].coords.end(), p.begin(), p.end());
-        }
-      }
+      std::vector<Facet> facets(masterFacetNodes_[z].size() / nn);
+      for (std::size_t f = 0; f < facets.size(); ++f)
+        facets[f] = currentFacet(static_cast<int>(z), static_cast<int>(f));
       search = std::make_unique<ContactSearch>(std::move(facets), searchDistance_[z]);
       nodalNormals = contactlab::nodalNormals(search->facets(), masterFacetNodes_[z]);
     }
@@ -468,13 +461,8 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
       const Point old = pt;
       double gap = 0, size = searchDistance_[z] / 2;
       if (obstacles_[z]) {
-        const ObstacleProjection proj = obstacles_[z]->project(xs.data(), t);
-        pt.paired = proj.gap < searchDistance_[z];
-        pt.normal = proj.normal;
-        const auto shift = obstacles_[z]->translation(t);
-        for (int c = 0; c < 3; ++c)
-          pt.obstaclePoint[c] = proj.point[c] - shift[c];
-        gap = proj.gap;
+        gap = placeOnObstacle(pt, xs, t);
+        pt.paired = gap < searchDistance_[z];
         signature_[i] = pt.paired ? -2 : -1;
       } else {
         Pairing pairing = search->findClosest(xs.data());
@@ -502,16 +490,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
           ReferenceElement::get(type).shape(pairing.projection.xi, pt.N.data());
           pt.xi[0] = pairing.projection.xi[0];
           pt.xi[1] = pairing.projection.xi[1];
-          // Smoothed normal (Code_Aster's LISSAGE): the nodal normals interpolated at the
-          // master point, continuous across the kinks of the deformed master surface, where
-          // the facet normal jumps and the geometric fixed point would flip between facets.
-          std::array<double, 3> n{};
-          for (int a = 0; a < nn; ++a)
-            for (int c = 0; c < 3; ++c)
-              n[c] += pt.N[a] * nodalNormals[pt.master[a]][c];
-          const double norm = std::sqrt(dot(n, n));
-          for (int c = 0; c < 3; ++c)
-            pt.normal[c] = norm > 0 ? n[c] / norm : pairing.projection.normal[c];
+          setSmoothedNormal(pt, nodalNormals, pairing.projection.normal);
           gap = 0;
           for (int c = 0; c < 3; ++c)
             gap += pt.normal[c] * (xs[c] - pairing.projection.point[c]);
@@ -598,10 +577,9 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
     if (geometricTerms_ != GeometricTerms::full || !pt.paired || obstacles_[pt.zone]) continue;
     const int nn = info(masterFacetType_[pt.zone]).nodes;
     std::vector<std::int64_t> around;
-    for (std::int64_t m : pt.master)
-      for (int f : nodeFacets_[pt.zone].at(m))
-        for (int a = 0; a < nn; ++a)
-          around.push_back(masterFacetNodes_[pt.zone][static_cast<std::size_t>(f) * nn + a]);
+    for (int f : facetsAround(pt))
+      for (int a = 0; a < nn; ++a)
+        around.push_back(masterFacetNodes_[pt.zone][static_cast<std::size_t>(f) * nn + a]);
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     for (std::int64_t node : around) {
@@ -814,25 +792,63 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   }
 }
 
+double ContactProblem::placeOnObstacle(Point& pt, const std::array<double, 3>& xs, double t) const {
+  const ObstacleProjection proj = obstacles_[pt.zone]->project(xs.data(), t);
+  pt.normal = proj.normal;
+  const auto shift = obstacles_[pt.zone]->translation(t);
+  for (int c = 0; c < 3; ++c)
+    pt.obstaclePoint[c] = proj.point[c] - shift[c];
+  return proj.gap;
+}
+
+void ContactProblem::setSmoothedNormal(Point& pt,
+                                       const std::map<std::int64_t, std::array<double, 3>>& nodal,
+                                       const double* facetNormal) const {
+  // Smoothed normal (Code_Aster's LISSAGE): the nodal normals interpolated at the master point,
+  // continuous across the kinks of the deformed master surface, where the facet normal jumps
+  // and the geometric fixed point would flip between facets.
+  std::array<double, 3> n{};
+  for (std::size_t a = 0; a < pt.master.size(); ++a)
+    for (int c = 0; c < 3; ++c)
+      n[c] += pt.N[a] * nodal.at(pt.master[a])[c];
+  const double norm = std::sqrt(dot(n, n));
+  for (int c = 0; c < 3; ++c)
+    pt.normal[c] = norm > 0 ? n[c] / norm : facetNormal[c];
+}
+
+Facet ContactProblem::currentFacet(int zone, int facet) const {
+  Facet f;
+  f.type = masterFacetType_[zone];
+  f.tag = facet;
+  const int nn = info(f.type).nodes;
+  for (int a = 0; a < nn; ++a) {
+    const auto p =
+        surfacePosition(masterFacetNodes_[zone][static_cast<std::size_t>(facet) * nn + a]);
+    f.coords.insert(f.coords.end(), p.begin(), p.end());
+  }
+  return f;
+}
+
+std::vector<int> ContactProblem::facetsAround(const Point& pt) const {
+  std::vector<int> facets;
+  for (std::int64_t m : pt.master)
+    for (int f : nodeFacets_[pt.zone].at(m))
+      facets.push_back(f);
+  std::sort(facets.begin(), facets.end());
+  facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
+  return facets;
+}
+
 void ContactProblem::refreshGeometry(Point& pt, double t) const {
   const int z = pt.zone;
   const auto xs = surfacePosition(pt.node);
   if (obstacles_[z]) {
-    const ObstacleProjection proj = obstacles_[z]->project(xs.data(), t);
-    pt.normal = proj.normal;
-    const auto shift = obstacles_[z]->translation(t);
-    for (int c = 0; c < 3; ++c)
-      pt.obstaclePoint[c] = proj.point[c] - shift[c];
+    placeOnObstacle(pt, xs, t);
   } else {
     // The same computation as updateGeometry on the point's facet: projection, shape values,
     // nodal normals of the facets around its nodes, interpolated and normalized.
     const ElementType type = masterFacetType_[z];
-    const int nn = info(type).nodes;
-    std::vector<double> coords;
-    for (std::int64_t m : pt.master) {
-      const auto p = surfacePosition(m);
-      coords.insert(coords.end(), p.begin(), p.end());
-    }
+    const Facet own = currentFacet(z, pt.facet);
     // At a 2D vertex shared with the next facet the pairing moves on to that facet, which to
     // first order is this facet's extension: its smooth branch gives that side's derivative. At
     // the master surface's outer end (and in 3D, on facet boundaries) the clamped projection is
@@ -844,37 +860,23 @@ void ContactProblem::refreshGeometry(Point& pt, double t) const {
       sharedVertex = nodeFacets_[z].at(vertex).size() > 1;
     }
     Projection proj;
-    if (sharedVertex) proj = projectOnFacetExtension(type, space, coords.data(), xs.data(), pt.xi);
+    if (sharedVertex)
+      proj = projectOnFacetExtension(type, space, own.coords.data(), xs.data(), pt.xi);
     if (!sharedVertex || !proj.converged)
-      proj = projectOnFacet(type, space, coords.data(), xs.data());
+      proj = projectOnFacet(type, space, own.coords.data(), xs.data());
     ReferenceElement::get(type).shape(proj.xi, pt.N.data());
     // `pairing`: the smoothed normal (and its tangents) is held, only the master point moves.
     if (geometricTerms_ != GeometricTerms::full) return;
+    const int nn = info(type).nodes;
     std::vector<Facet> around;
     std::vector<std::int64_t> aroundNodes;
-    std::vector<int> seen;
-    for (std::int64_t m : pt.master)
-      for (int f : nodeFacets_[z].at(m)) {
-        if (std::find(seen.begin(), seen.end(), f) != seen.end()) continue;
-        seen.push_back(f);
-        Facet facet;
-        facet.type = type;
-        for (int a = 0; a < nn; ++a) {
-          const std::int64_t node = masterFacetNodes_[z][static_cast<std::size_t>(f) * nn + a];
-          const auto p = surfacePosition(node);
-          facet.coords.insert(facet.coords.end(), p.begin(), p.end());
-          aroundNodes.push_back(node);
-        }
-        around.push_back(std::move(facet));
-      }
-    const auto normals = contactlab::nodalNormals(around, aroundNodes);
-    std::array<double, 3> n{};
-    for (std::size_t a = 0; a < pt.master.size(); ++a)
-      for (int c = 0; c < 3; ++c)
-        n[c] += pt.N[a] * normals.at(pt.master[a])[c];
-    const double norm = std::sqrt(dot(n, n));
-    for (int c = 0; c < 3; ++c)
-      pt.normal[c] = norm > 0 ? n[c] / norm : proj.normal[c];
+    for (int f : facetsAround(pt)) {
+      around.push_back(currentFacet(z, f));
+      aroundNodes.insert(aroundNodes.end(),
+                         masterFacetNodes_[z].begin() + static_cast<std::ptrdiff_t>(f) * nn,
+                         masterFacetNodes_[z].begin() + static_cast<std::ptrdiff_t>(f + 1) * nn);
+    }
+    setSmoothedNormal(pt, contactlab::nodalNormals(around, aroundNodes), proj.normal);
   }
   tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
 }

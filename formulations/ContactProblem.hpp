@@ -130,6 +130,14 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // dofs and those its normal depends on, by central differences of its residual with the
   // geometry recomputed and its status piece kept.
   void refreshGeometry(Point& pt, double t) const;
+  // Shared by updateGeometry and refreshGeometry: the obstacle's normal and point for a slave
+  // at xs (returns its gap), the smoothed normal at the point's master point (fallback: the
+  // facet's own), a master facet at the current positions, and the facets around the point's.
+  double placeOnObstacle(Point& pt, const std::array<double, 3>& xs, double t) const;
+  void setSmoothedNormal(Point& pt, const std::map<std::int64_t, std::array<double, 3>>& nodal,
+                         const double* facetNormal) const;
+  Facet currentFacet(int zone, int facet) const;
+  std::vector<int> facetsAround(const Point& pt) const;
   void geometricColumns(const Point& pt, double t, std::vector<double>& ke) const;
   std::array<double, 3> surfacePosition(std::int64_t node) const;
   std::array<double, 3> surfaceDisplacement(std::int64_t node, bool converged) const;
