@@ -63,6 +63,45 @@ CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<doub
   return out;
 }
 
+CriticalFriction criticalFactorOfUpdate(int k, std::vector<double> M, double zeroTolerance) {
+  checkSize(k, M, "M");
+  std::vector<double> lambdaR(k), lambdaI(k), work(1);
+  double unused = 0;
+  int info = 0;
+  Teuchos::LAPACK<int, double> lapack;
+  lapack.GEEV('N', 'N', k, M.data(), k, lambdaR.data(), lambdaI.data(), &unused, 1, &unused, 1,
+              work.data(), -1, &info);
+  work.resize(static_cast<std::size_t>(std::max(work[0], 4.0 * k)));
+  lapack.GEEV('N', 'N', k, M.data(), k, lambdaR.data(), lambdaI.data(), &unused, 1, &unused, 1,
+              work.data(), static_cast<int>(work.size()), &info);
+  if (info != 0) throw std::runtime_error("LAPACK dgeev failed, info = " + std::to_string(info));
+  CriticalFriction out;
+  out.mu = std::numeric_limits<double>::infinity();
+  double scale = 0;
+  for (int i = 0; i < k; ++i)
+    scale = std::max(scale, std::hypot(lambdaR[i], lambdaI[i]));
+  for (int i = 0; i < k; ++i) {
+    const double size = std::hypot(lambdaR[i], lambdaI[i]);
+    if (size <= 1e-14 * std::max(scale, 1.0)) {  // lambda = 0: s at infinity
+      ++out.infinite;
+      continue;
+    }
+    if (std::fabs(lambdaI[i]) > 1e-12 * std::max(scale, std::fabs(lambdaR[i]))) continue;
+    ++out.realRoots;
+    const double s = 1.0 - 1.0 / lambdaR[i];
+    if (std::fabs(s) <= zeroTolerance) {
+      ++out.zero;
+      continue;
+    }
+    if (zeroTolerance > 0 && std::fabs(s) >= 1 / zeroTolerance) {
+      ++out.infinite;
+      continue;
+    }
+    if (s > 0 && s < out.mu) out.mu = s;
+  }
+  return out;
+}
+
 Determinant denseDeterminant(int n, std::vector<double> A) {
   checkSize(n, A, "A");
   std::vector<int> pivots(n);

@@ -29,6 +29,11 @@ struct CriticalFriction {
 CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B,
                                   double zeroTolerance = 0.0);
 
+// The same for the pencil (I - M) + s M of a rank-k update, det(I + (s - 1) M) = 0: its roots
+// are s = 1 - 1 / lambda for the eigenvalues lambda of M (LAPACK dgeev, a few times cheaper
+// than the QZ of dggev); lambda = 0 is a root at infinity. Same tolerances as above.
+CriticalFriction criticalFactorOfUpdate(int k, std::vector<double> M, double zeroTolerance = 0.0);
+
 // det A as sign, mantissa and power of two (never formed: no overflow), by LU with partial
 // pivoting (LAPACK dgetrf). A singular matrix gives mantissa 0.
 Determinant denseDeterminant(int n, std::vector<double> A);

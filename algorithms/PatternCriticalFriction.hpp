@@ -41,6 +41,15 @@ PatternCriticalFriction patternCriticalFriction(NonlinearSystem& system, Contact
 // beyond, the converged pattern and each single change of one ambiguous point (the first
 // maxPatterns of them), as `choice` says. Locally unique when every determinant has the same
 // sign (known only with a solver that computes determinants).
+// The critical mu also looks beyond the adjacent patterns at one more: every closed point
+// slipping (in the direction of its traction). A sticking contact set is locally unique
+// whatever mu, yet above that pattern's critical mu a slipping state of the same contact set may
+// coexist with it, and separated states too (Hassani, Hild, Ionescu & Sakki 2003 set the
+// critical friction on the slipping contact set). `scale` is the smaller of the two.
+// Cost: the converged pattern is factorized once (k solves for its k rows that depend on mu);
+// a pattern whose J(1) differs from it in q <= maxUpdateRows rows costs q solves with that
+// factorization (Sherman-Morrison-Woodbury) and dense algebra of size k, in place of its own
+// factorization and k solves (maxUpdateRows = 0: every pattern factorized).
 struct UniquenessCheck {
   int ambiguousPoints = 0;
   int patterns = 0;  // examined
@@ -49,10 +58,15 @@ struct UniquenessCheck {
   bool sameSign = true;
   std::string breakingPattern;  // the first pattern whose sign differs (point: status, ...)
   int singularPatterns = 0;     // J(1) singular there (counted as breaking the sign)
-  double scale = 0;             // smallest critical factor over the patterns examined
+  double localScale = 0;        // smallest critical factor over the adjacent patterns
+  double slipScale = 0;         // of the contact set slipping (+infinity: no closed point)
+  double scale = 0;             // min(localScale, slipScale)
+  int frictionRows = 0;         // the largest k (rows that depend on mu) over the patterns
+  int updatedPatterns = 0;      // examined by updates of the converged pattern's factorization
 };
 UniquenessCheck checkUniqueness(NonlinearSystem& system, ContactControls& controls,
                                 LinearSolver& solver, const Vector& x, double t,
-                                double tolerance = 1e-6, int maxPatterns = 64);
+                                double tolerance = 1e-6, int maxPatterns = 64,
+                                int maxUpdateRows = 256);
 
 }  // namespace contactlab

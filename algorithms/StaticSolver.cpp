@@ -297,6 +297,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                             const IterationCallback& onIteration) {
   RunReport report;
+  if (controls_) controls_->seedInitialStatuses(u, 0.0);
   auto x = problem_.createVector();
   const double nominal = options_.endTime / options_.steps;
   double t = 0, dt = nominal;

@@ -113,7 +113,9 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
   MumpsSolver::Options mumps;
   mumps.determinant = true;
   MumpsSolver solver(mumps, comm);
-  const UniquenessCheck c = checkUniqueness(*contact, *contact, solver, x, t);
+  const auto start = std::chrono::steady_clock::now();
+  const UniquenessCheck c = checkUniqueness(*contact, *contact, solver, x, t,
+                                            sm.criticalMuTolerance, sm.criticalMuMaxPatterns);
   JsonValue zones = JsonValue::object();
   for (const auto& zone : sm.contact)
     if (zone.friction > 0)
@@ -124,10 +126,17 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
   if (root) {
     std::cout << "contactlab: critical-mu: converged state at t = " << t << ": "
               << c.ambiguousPoints << " ambiguous point(s), " << c.patterns
-              << " status pattern(s) examined (" << c.choice << "): " << verdict;
+              << " status pattern(s) examined (" << c.choice << "; " << c.updatedPatterns
+              << " by updates of the converged pattern's factorization): " << verdict;
     if (!c.sameSign && !c.breakingPattern.empty())
       std::cout << "; the sign changes at " << c.breakingPattern;
     std::cout << "\n";
+    const auto factor = [](double s) {
+      return std::isinf(s) ? std::string("none") : std::to_string(s);
+    };
+    std::cout << "contactlab: critical-mu: critical factor of the adjacent patterns "
+              << factor(c.localScale) << ", of the contact set slipping " << factor(c.slipScale)
+              << "\n";
     if (std::isinf(c.scale)) {
       std::cout << "contactlab: critical-mu: no critical mu (det J(s mu) has no positive real "
                    "root on these patterns)\n";
@@ -141,18 +150,25 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
       std::cout << "\n";
     }
   }
-  JsonValue out = JsonValue::object()
-                      .set("computed", true)
-                      .set("time", t)
-                      .set("ambiguous_points", c.ambiguousPoints)
-                      .set("patterns_examined", c.patterns)
-                      .set("pattern_choice", c.choice)
-                      .set("verdict", verdict)
-                      .set("singular_patterns", c.singularPatterns)
-                      .set("breaking_pattern",
-                           c.breakingPattern.empty() ? JsonValue() : JsonValue(c.breakingPattern))
-                      .set("factor", std::isinf(c.scale) ? JsonValue() : JsonValue(c.scale))
-                      .set("zones", zones);
+  JsonValue out =
+      JsonValue::object()
+          .set("computed", true)
+          .set("time", t)
+          .set("seconds",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+          .set("friction_rows", c.frictionRows)
+          .set("ambiguous_points", c.ambiguousPoints)
+          .set("patterns_examined", c.patterns)
+          .set("patterns_updated", c.updatedPatterns)
+          .set("pattern_choice", c.choice)
+          .set("verdict", verdict)
+          .set("singular_patterns", c.singularPatterns)
+          .set("breaking_pattern",
+               c.breakingPattern.empty() ? JsonValue() : JsonValue(c.breakingPattern))
+          .set("factor", std::isinf(c.scale) ? JsonValue() : JsonValue(c.scale))
+          .set("adjacent_factor", std::isinf(c.localScale) ? JsonValue() : JsonValue(c.localScale))
+          .set("slipping_factor", std::isinf(c.slipScale) ? JsonValue() : JsonValue(c.slipScale))
+          .set("zones", zones);
   return out;
 }
 
@@ -344,7 +360,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (checkSolver) {
       std::string cell;
       try {
-        const UniquenessCheck c = checkUniqueness(*contact, *contact, *checkSolver, state, s.time);
+        const UniquenessCheck c = checkUniqueness(*contact, *contact, *checkSolver, state, s.time,
+                                                  sm.criticalMuTolerance, sm.criticalMuMaxPatterns);
         double muCrit = std::numeric_limits<double>::infinity(), ratio = 0;
         for (const auto& zone : sm.contact)
           if (zone.friction > 0) {

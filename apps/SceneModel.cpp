@@ -97,6 +97,10 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   zone.searchDistance = z.get<double>("Search Distance");
   if (!(zone.searchDistance >= 0))
     throw InputError(path + "/Search Distance must be >= 0 (0 = automatic)");
+  const std::string initial = z.get<std::string>("Initial Contact");
+  zone.initialContact = initial == "all"    ? InitialContact::all
+                        : initial == "none" ? InitialContact::none
+                                            : InitialContact::interpenetrated;
   if (obstacle) {
     const ParameterList& o = z.sublist("Obstacle");
     RigidObstacleSpec spec;
@@ -128,6 +132,11 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   } catch (const std::invalid_argument& e) {
     throw InputError(path + "/Formulation/" + zone.formulation + ": " + e.what());
   }
+  if (zone.initialContact != InitialContact::interpenetrated && !zone.law->hasMultipliers())
+    throw InputError(path + "/Initial Contact: '" + initial + "' sets the starting statuses " +
+                     "through the contact multipliers, and " + zone.formulation +
+                     " has none; use 'interpenetrated' or a formulation with multipliers " +
+                     "(lagrange, augmented-lagrangian)");
   // With friction the tangential coefficient is used: it must be given.
   for (const char* key : {"Tangential Penalty", "Tangential Augmentation"})
     if (zone.friction > 0 && params.isParameter(key) && !(params.get<double>(key) > 0))
@@ -249,6 +258,12 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   if (sm.outputDirectory.empty()) sm.outputDirectory = "results/" + scene.name;
   sm.writeVtk = output.get<bool>("VTK");
   sm.criticalMuCheck = output.get<bool>("Critical Mu Check");
+  sm.criticalMuTolerance = output.get<double>("Critical Mu Tolerance");
+  sm.criticalMuMaxPatterns = output.get<int>("Critical Mu Max Patterns");
+  if (!(sm.criticalMuTolerance >= 0) || !(sm.criticalMuTolerance < 1))
+    throw InputError(where + ": Output/Critical Mu Tolerance must be in [0, 1)");
+  if (sm.criticalMuMaxPatterns < 1)
+    throw InputError(where + ": Output/Critical Mu Max Patterns must be >= 1");
   const ParameterList& probes = output.sublist("Probes");
   for (auto it = probes.begin(); it != probes.end(); ++it) {
     const ParameterList& pr = probes.sublist(probes.name(it));

@@ -33,6 +33,9 @@ struct SceneModel {
   std::string outputDirectory;
   bool writeVtk = true;
   bool criticalMuCheck = false;  // Output/Critical Mu Check
+  // Output/Critical Mu Tolerance and Max Patterns (checkUniqueness).
+  double criticalMuTolerance = 1e-6;
+  int criticalMuMaxPatterns = 64;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

@@ -148,6 +148,13 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   p.set("Search Distance", 0.0,
         "Master points farther than this from a slave point are ignored; 0 = twice the largest "
         "slave facet");
+  p.set("Initial Contact", "interpenetrated",
+        "Statuses the first load step starts from (Code_Aster's CONTACT_INIT): "
+        "'interpenetrated' (those the predictor gives: closed where the gap is <= 0), 'all' "
+        "(every paired point closed), 'none' (every point open), by the initial multipliers "
+        "(formulations with multipliers only): a starting point, which changes the answer only "
+        "where it is not unique (doc/algorithms.md)",
+        choices({"interpenetrated", "all", "none"}));
   p.set("Formulation", typedSection(formulationRegistry(), userSublist(user, "Formulation"),
                                     "augmented-lagrangian", where, path + "/Formulation"));
   return p;
@@ -162,6 +169,15 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
         "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
         "patterns around the state, determinant signs, critical mu): a warning when mu >= "
         "mu_crit or the signs differ, and a critical_mu column in steps.csv");
+  p.set("Critical Mu Tolerance", 1e-6,
+        "Uniqueness check (critical-mu and Critical Mu Check): a contact point is ambiguous, "
+        "and takes each adjacent status, when its contact indicator is within this fraction of "
+        "the largest one, or its friction indicator within this of the friction ball's edge "
+        "([0, 1))");
+  p.set("Critical Mu Max Patterns", 64,
+        "Uniqueness check: every combination of the ambiguous points' statuses is examined when "
+        "there are at most this many; beyond, the converged pattern and single changes of one "
+        "ambiguous point, up to this many (>= 1)");
   p.set("Probes",
         namedSection(userSublist(user, "Probes"), "Output/Probes", where,
                      [](const ParameterList&, const std::string&) { return probeItem(); }));

@@ -46,4 +46,7 @@ PY
 # Hertz (about 15 minutes).
 python3 bench/algorithms.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-algorithms" \
   --doc doc/performance.md
+# Uniqueness diagnostic on the frictional 3D Hertz up to ~1 000 contact points (~3 minutes).
+python3 bench/critical_mu.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-critical-mu" \
+  --doc doc/performance.md
 echo "bench: doc/performance.md updated"

@@ -51,7 +51,8 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
       out.r[lam + k] = w * in.Lambda[k];
       J(lam + k, lam + k) = w;
     }
-    if (closed && in.frozenStatus == 2) out.status = ContactStatus::Slip;  // as frozen
+    if (closed && (in.frozenStatus == 2 || in.frozenStatus == kSlipOnset))
+      out.status = ContactStatus::Slip;  // as frozen
     return;
   }
   for (int k = 0; k < nt; ++k) {

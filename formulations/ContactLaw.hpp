@@ -40,7 +40,8 @@ struct LawInput {
   std::array<double, 2> tangentialOld{};
   // The seam for the algorithms: a status or friction threshold frozen by a fixed-point loop.
   // frozenStatus < 0 lets the status follow the iterate (Newton); 0 free, 1 stick, 2 slip, 3
-  // closed with the friction status following the iterate. frozenThreshold < 0 lets the
+  // closed with the friction status following the iterate, 4 slip at its onset (kSlipOnset,
+  // BallProjection.hpp). frozenThreshold < 0 lets the
   // friction threshold mu * pressure follow it.
   int frozenStatus = -1;
   double frozenThreshold = -1.0;

@@ -289,6 +289,29 @@ bool ContactProblem::scaleCoefficients(std::size_t point, double factor) {
   return true;
 }
 
+void ContactProblem::seedInitialStatuses(Vector& x, double t) {
+  const bool any = std::any_of(zones_.begin(), zones_.end(), [](const ContactZone& z) {
+    return z.initialContact != InitialContact::interpenetrated;
+  });
+  if (!any) return;
+  if (!frozenOnce_) updateGeometry(x, t);
+  evaluateAll(x, t);  // the gaps at x
+  auto values = x.getDataNonConst(0);
+  for (const Point& pt : points_) {
+    const InitialContact initial = zones_[pt.zone].initialContact;
+    if (initial == InitialContact::interpenetrated || pt.multiplier < 0 || !pt.paired) continue;
+    const LO lid = map_->getLocalElement(pt.multiplier);
+    if (lid == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+    // The laws with multipliers close a point when p - c g >= 0: put p just inside the asked
+    // status. The margin only picks the cone Newton starts in; the first iterate's pressure
+    // comes from equilibrium.
+    const double c = zones_[pt.zone].law->normalCoefficient() * pt.coefficientScale;
+    const double length = dim_ == 3 ? std::sqrt(pt.weight) : pt.weight;
+    const double margin = 1e-9 * c * length;
+    values[lid] = c * pt.result.gap + (initial == InitialContact::all ? margin : -margin);
+  }
+}
+
 void ContactProblem::releaseTreatments() {
   for (Point& pt : points_) {
     pt.forcedStatus = -1;

@@ -92,6 +92,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void forceStatus(std::size_t point, int status) override;
   bool scaleCoefficients(std::size_t point, double factor) override;
   void releaseTreatments() override;
+  void seedInitialStatuses(Vector& x, double t) override;
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
   void setFrictionScale(double scale) override { frictionScale_ = scale; }

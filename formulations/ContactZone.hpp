@@ -11,6 +11,12 @@
 
 namespace contactlab {
 
+// The contact statuses the first load step starts from (Code_Aster's CONTACT_INIT): the
+// statuses the predictor gives (closed where the gap is <= 0), every paired point closed, or
+// every point open. A starting point, not a constraint: the initial multipliers are set so that
+// the first iterate has these statuses (formulations with multipliers only).
+enum class InitialContact { interpenetrated, all, none };
+
 struct ContactZone {
   std::string name;
   std::string slave;   // boundary physical group (its nodes are the contact points)
@@ -20,6 +26,7 @@ struct ContactZone {
   // Master facets farther than this from a slave point are not candidates; 0 = automatic
   // (twice the largest slave facet size).
   double searchDistance = 0.0;
+  InitialContact initialContact = InitialContact::interpenetrated;
   std::string formulation;  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
 };

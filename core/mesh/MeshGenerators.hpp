@@ -14,11 +14,13 @@ namespace contactlab {
 
 // [x0, x0+Lx] x [y0, y0+Ly], nx*ny quads (tri: each quad split in two, 2*nx*ny cells).
 // Types: tri3 tri6 quad4 quad8 quad9. Block "body"; boundaries "bottom", "right", "top",
-// "left" (lines); points "corner-bl", "corner-br", "corner-tr", "corner-tl".
+// "left" (lines); points "corner-bl", "corner-br", "corner-tr", "corner-tl". A non-zero
+// topShift shears it into a parallelogram: x += topShift * (y - y0) / Ly (an inclined strut).
 struct RectangleParams {
   std::array<double, 2> origin{0.0, 0.0};
   std::array<double, 2> lengths{1.0, 1.0};
   std::array<int, 2> divisions{1, 1};
+  double topShift = 0.0;
   std::string elementType = "quad4";
 };
 Mesh generateRectangle(const RectangleParams& p);

@@ -65,6 +65,9 @@ RCP<const ParameterList> rectangleParameters() {
   p->set("nx", 4, "Divisions along x");
   p->set("ny", 4, "Divisions along y");
   p->set("Element", "quad4", "Element type (tri3 splits each quad in two)", oneOf(k2D));
+  p->set("Top Shift", 0.0,
+         "Shears the rectangle into a parallelogram: the top edge moves this much along x, "
+         "every node by Top Shift * (y - y0) / Ly");
   return p;
 }
 
@@ -172,6 +175,7 @@ void registerMeshSources() {
            g.lengths = {p.get<double>("Lx"), p.get<double>("Ly")};
            g.divisions = {p.get<int>("nx"), p.get<int>("ny")};
            g.elementType = p.get<std::string>("Element");
+           g.topShift = p.get<double>("Top Shift");
            return std::make_unique<Mesh>(generateRectangle(g));
          }});
   r.add({"box",

@@ -60,6 +60,9 @@ class ContactControls {
   virtual void forceStatus(std::size_t point, int status) = 0;
   virtual bool scaleCoefficients(std::size_t point, double factor) = 0;
   virtual void releaseTreatments() = 0;
+  // The starting point of the first load step (the zones' Initial Contact): sets the contact
+  // multipliers of the state x at time t so that the statuses x gives are those asked for.
+  virtual void seedInitialStatuses(Vector& x, double t) = 0;
   // Records the cycling kind (CyclingKind as int, 0 none) detected at a point, for the output.
   virtual void markCycling(std::size_t point, int kind) = 0;
   // Multiplies every zone's friction coefficient (1: the model's): the uniqueness diagnostic

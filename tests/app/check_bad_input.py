@@ -127,6 +127,13 @@ cases = [
      contact_with("{Type: plane, Point: [0.0, 0.0], Normal: [0.0, 1.0]}",
                   "{Type: sphere, Point: [0.0, -1.0], Radius: 0.0}"), [],
      ["Contact/floor/Obstacle", "Radius must be > 0"]),
+    ("contact: initial statuses without multipliers",
+     contact_with("Slave: bottom", "Slave: bottom\n      Initial Contact: all").replace(
+         "Type: augmented-lagrangian\n        augmented-lagrangian: {Normal Augmentation: 100.0}",
+         "Type: penalty\n        penalty: {Normal Penalty: 100.0}"), [],
+     ["Contact/floor/Initial Contact", "penalty", "multipliers"]),
+    ("critical mu tolerance out of range", GOOD + "  Output: {Critical Mu Tolerance: 2.0}\n", [],
+     ["Output/Critical Mu Tolerance", "[0, 1)"]),
     ("line search without the NOX driver", GOOD + "  Newton: {Line Search: Backtrack}\n", [],
      ["Newton/Line Search 'Backtrack'", "Driver: nox"]),
     ("contact: initial penetration deeper than an element",

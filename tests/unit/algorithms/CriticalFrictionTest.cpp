@@ -39,6 +39,30 @@ TEST(CriticalFriction, ComplexOrInfiniteRootsAreNotCritical) {
   EXPECT_EQ(infinite.infinite, 1);
 }
 
+// The rank-k route (eigenvalues of M) and the pencil (I - M) + s M by QZ give the same roots.
+TEST(CriticalFriction, UpdateEigenvaluesMatchThePencil) {
+  const int k = 6;
+  std::vector<double> M(static_cast<std::size_t>(k) * k);
+  for (std::size_t e = 0; e < M.size(); ++e)
+    M[e] = std::sin(1.7 * static_cast<double>(e) + 0.3);  // deterministic, non-symmetric
+  M[0] = 0.0;
+  std::vector<double> A(M.size());
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i)
+      A[static_cast<std::size_t>(j) * k + i] =
+          (i == j ? 1.0 : 0.0) - M[static_cast<std::size_t>(j) * k + i];
+  const CriticalFriction pencil = criticalFriction(k, A, M, 1e-8);
+  const CriticalFriction update = criticalFactorOfUpdate(k, M, 1e-8);
+  ASSERT_TRUE(std::isfinite(pencil.mu));
+  EXPECT_NEAR(update.mu, pencil.mu, 1e-10 * pencil.mu);
+  EXPECT_EQ(update.realRoots + update.infinite, pencil.realRoots + pencil.infinite);
+  // M = diag(2, -1, 0): s = 1/2, 2 and one root at infinity.
+  const CriticalFriction d = criticalFactorOfUpdate(3, diag({2, -1, 0}));
+  EXPECT_NEAR(d.mu, 0.5, 1e-15);
+  EXPECT_EQ(d.realRoots, 2);
+  EXPECT_EQ(d.infinite, 1);
+}
+
 TEST(DenseDeterminant, SignAndScaleWithoutOverflow) {
   // 300 x 300 identity times 1e-200: det = 1e-60000, far below the smallest double.
   const int n = 300;

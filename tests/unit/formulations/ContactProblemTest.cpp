@@ -216,7 +216,8 @@ TEST(PatternCriticalFriction, UniquenessCheckEnumeratesTheAmbiguousPatterns) {
   EXPECT_EQ(strict.patterns, 1);
   EXPECT_TRUE(strict.signsKnown);
   EXPECT_TRUE(strict.sameSign);
-  EXPECT_DOUBLE_EQ(strict.scale, one.scale);
+  EXPECT_DOUBLE_EQ(strict.localScale, one.scale);
+  EXPECT_LE(strict.scale, strict.localScale);  // and the contact set slipping
 
   const UniquenessCheck loose =
       checkUniqueness(run.contact, run.contact, solver, *run.x, 1.0, 2.0, 8);
@@ -225,6 +226,16 @@ TEST(PatternCriticalFriction, UniquenessCheckEnumeratesTheAmbiguousPatterns) {
   EXPECT_NE(loose.choice.find("single changes"), std::string::npos) << loose.choice;
   EXPECT_TRUE(loose.signsKnown);
   EXPECT_LE(loose.scale, strict.scale);
+  // The 7 other patterns by updates of the converged one's factorization; each factorized on
+  // its own, the same factors and signs.
+  EXPECT_EQ(loose.updatedPatterns, 7);
+  const UniquenessCheck factorized =
+      checkUniqueness(run.contact, run.contact, solver, *run.x, 1.0, 2.0, 8, 0);
+  EXPECT_EQ(factorized.updatedPatterns, 0);
+  EXPECT_EQ(factorized.sameSign, loose.sameSign);
+  EXPECT_EQ(factorized.frictionRows, loose.frictionRows);
+  ASSERT_TRUE(std::isfinite(factorized.localScale));
+  EXPECT_NEAR(loose.localScale, factorized.localScale, 1e-8 * factorized.localScale);
 
   auto r1 = run.contact.createVector();
   run.contact.assemble(*run.x, 1.0, r1.get(), false);

@@ -76,6 +76,27 @@ INSTANTIATE_TEST_SUITE_P(
                       RectangleCase{"quad9", ElementType::Quad9, ElementType::Line3, 6, 35}),
     [](const auto& info) { return info.param.type; });
 
+// Top Shift: a parallelogram of the same area, corners moved, mid-side nodes still halfway.
+TEST(RectangleGenerator, TopShiftShearsIntoAParallelogram) {
+  RectangleParams p;
+  p.origin = {1.0, -0.5};
+  p.lengths = {3.0, 2.0};
+  p.divisions = {3, 2};
+  p.elementType = "quad8";
+  p.topShift = 1.5;
+  const Mesh mesh = generateRectangle(p);
+  EXPECT_NEAR(test::blockMeasure(mesh, "body"), 6.0, 1e-12);
+  EXPECT_GT(test::minJacobian(mesh), 0.0);
+  const auto tr = mesh.boundaryNodes("corner-tr");
+  EXPECT_NEAR(test::node(mesh, tr[0])[0], 5.5, 1e-12);
+  const auto bl = mesh.boundaryNodes("corner-bl");
+  EXPECT_NEAR(test::node(mesh, bl[0])[0], 1.0, 1e-12);
+  for (auto k : mesh.boundaryNodes("left")) {
+    const auto x = test::node(mesh, k);
+    EXPECT_NEAR(x[0], 1.0 + 1.5 * (x[1] + 0.5) / 2.0, 1e-12);
+  }
+}
+
 TEST(RectangleGeneratorErrors, NameTheParameter) {
   RectangleParams p;
   p.elementType = "hex8";
