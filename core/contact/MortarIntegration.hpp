@@ -1,0 +1,78 @@
+#pragma once
+// The geometric kernel of mortar contact for one slave facet S and its candidate master facets:
+//
+//   D_jk = int_S Phi_j N_k^S dA,   M_jl^(m) = int_S Phi_j N_l^(m) dA
+//
+// both over the part of S that the masters' projections cover (so D is the full-facet matrix
+// only where S is fully covered). N are the facets' shape functions (ReferenceElement), Phi_j
+// the multiplier basis on S. The caller forms weighted gaps n_j . (sum_k D_jk x_k -
+// sum_l M_jl x_l) and assembles; nothing here knows a mesh or a map.
+//
+// Segmentation (where each master covers S) and integration:
+//  - 2D (line2, line3; Yang, Laursen & Meng 2005): projection along the slave's continuous normal
+//    field n(xi) = normalized sum_j N_j(xi) n_j of the given nodal normals. A master's end nodes
+//    are projected onto S, the interval clipped to [-1, 1], Gauss-Legendre in xi over it; at each
+//    point the master coordinate is where the line x_S(xi) + s n(xi) meets the master.
+//  - 3D (tri3, tri6, quad4, quad8, quad9; Puso & Laursen 2004, Popp, Gee & Wall 2010): an
+//    auxiliary plane through the slave's centre x0, normal n0 = the interpolated nodal normal
+//    there. Slave and master polygons (quadratic facets split into 4 linear sub-facets through
+//    their mid-nodes) are projected on it along n0 and clipped; the (convex) clip polygons are
+//    fanned into triangles from a vertex and integrated by a triangle Gauss rule. At each point p
+//    the facets' coordinates solve x(xi) = p + alpha n0 (Newton on the full facet map, so curved
+//    quadratic facets are integrated on their true surface); the plane's area element becomes
+//    the slave's by dA_S = dA_plane / |n_S(xi) . n0|.
+// Rules: 2D Gauss-Legendre exact to degree 2 (p_S + p_M) + 2 (p: facet order); 3D the triangle
+// rule of total degree max(q_S + q_M, 2 p_S + 2), with q the total degree of a facet's shape
+// functions (p for triangles, 2p for quads): exact for D and M between flat facets whose
+// projections are affine (triangles, parallelograms).
+//
+// Multiplier bases: standard (Phi_j = N_j^S) or dual (Phi_j = sum_k A_jk N_k^S, biorthogonal:
+// int_S Phi_j N_k dA = delta_jk int_S N_k dA over the whole facet, so D is diagonal where S is
+// fully covered). The dual basis exists only where every int_S N_j dA > 0: line2, line3, tri3,
+// quad4, quad9, not tri6 and quad8 (zero or negative corner integrals).
+#include "core/contact/ContactSearch.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace contactlab {
+
+enum class MultiplierBasis { Standard, Dual };
+
+struct MortarMaster {
+  std::size_t facet = 0;  // index in the `masters` argument of integrateMortar
+  std::vector<double> M;  // row major ns x nm (slave nodes x this master's nodes)
+};
+
+struct MortarIntegrals {
+  std::vector<double> D;              // row major ns x ns
+  std::vector<MortarMaster> masters;  // the masters that overlap S, in the order given
+  double coveredArea = 0.0;           // area of S covered by the masters' projections
+  double area = 0.0;                  // area (length in 2D) of S
+};
+
+// Mortar integrals of `slave` against `masters` (same dimension as the slave; pass only
+// candidates: a master that does not overlap costs its projection and is not listed).
+// `slaveNormals`: the unit nodal normals at the slave's nodes (averaged over the facets around
+// each node, as nodalNormals gives them); 2D projects along their interpolation, 3D takes the
+// auxiliary plane's normal from them. Overlaps among the masters are counted twice: the caller
+// passes a non-overlapping master surface.
+// Throws std::invalid_argument for a facet that is not line2/line3/tri3/tri6/quad4/quad8/quad9,
+// masters of another dimension than the slave, wrong coordinate or normal counts, a degenerate
+// facet (zero length or area), slave normals tangent to the slave (or cancelling), the dual
+// basis on tri6/quad8, a facet whose projection on the auxiliary plane self-intersects. Throws
+// std::runtime_error when an integration point's projection along the normal onto a facet does
+// not converge (a facet nearly parallel to the projection direction). In 2D a master whose end
+// nodes cannot be projected onto the slave (Newton diverges: far beyond a curved slave's ends)
+// counts as not overlapping. Thread-safe: no shared mutable state.
+MortarIntegrals integrateMortar(const Facet& slave,
+                                const std::vector<std::array<double, 3>>& slaveNormals,
+                                const std::vector<const Facet*>& masters, MultiplierBasis basis);
+
+// Coefficients A (row major ns x ns) of the dual basis on `slave`: A = D_e M_e^-1 with
+// D_e = diag(int_S N_j dA), (M_e)_jk = int_S N_j N_k dA over the whole facet. Throws
+// std::invalid_argument for tri6/quad8, or when some int_S N_j dA <= 0 (a distorted facet).
+std::vector<double> dualBasisCoefficients(const Facet& slave);
+
+}  // namespace contactlab
