@@ -4,6 +4,7 @@
 //   contactlab run [SCENE] [--out DIR] [--set key=value ...]
 //   contactlab validate SCENE [--set key=value ...]
 //   contactlab critical-mu SCENE [--out DIR] [--set key=value ...]
+//   contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]
 //   contactlab list
 //   contactlab --version
 #include "contactlab/Version.hpp"
@@ -13,8 +14,11 @@
 
 #include <Tpetra_Core.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -31,6 +35,10 @@ const char* kUsage =
     "  critical-mu SCENE [--out DIR] [--set key=value ...]\n"
     "                      run SCENE, then the critical friction coefficient of the last\n"
     "                      converged state's contact statuses (also in summary.json)\n"
+    "  study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
+    "                      run a scene over the product of a study's axes (each run its own\n"
+    "                      process, with a time limit; resumable), then study.csv, study.md\n"
+    "                      and plots (doc/studies.md)\n"
     "  list                every registry with its parameters, defaults and doc strings\n"
     "  --version           print the version\n"
     "\n"
@@ -42,9 +50,32 @@ int usageError(const std::string& message) {
   return 2;
 }
 
+// `contactlab study`: the study scripts run each case as a `contactlab run` of its own, so
+// this process hands over before MPI starts (a forking MPI process is not portable).
+int study(int argc, char** argv) {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) return usageError("cannot find the contactlab executable's path");
+  self[n] = '\0';
+  const std::string exe(self), bin = exe.substr(0, exe.rfind('/'));
+  std::string script = bin + "/../" CONTACTLAB_STUDY_INSTALL_SUBDIR "/study.py";
+  if (access(script.c_str(), R_OK) != 0) script = CONTACTLAB_STUDY_BUILD_DIR "/study.py";
+  std::vector<std::string> words{"/usr/bin/python3", script, "--contactlab", exe};
+  words.insert(words.end(), argv + 2, argv + argc);
+  std::vector<char*> cargs;
+  for (auto& w : words)
+    cargs.push_back(w.data());
+  cargs.push_back(nullptr);
+  execv(cargs[0], cargs.data());
+  std::cerr << "contactlab: error: cannot start " << words[0] << " " << script << ": "
+            << std::strerror(errno) << "\n";
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "study") return study(argc, argv);
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

@@ -1,0 +1,161 @@
+#!/usr/bin/python3
+"""contactlab study STUDY.yaml [--out DIR] [--retry-failed] [--no-plots]
+
+Runs one scene over the product of the study's axes (and its explicit cases), each run a
+separate `contactlab run` process with a time limit, then writes study.csv, study.md and PNG
+plots (doc/studies.md). A failure, a timeout or a crash of one run is recorded with its reason
+and the study goes on. Studies resume: a run whose folder already holds the same case's result
+is not run again (--retry-failed runs the failed ones again). Started by `contactlab study`,
+which passes its own path with --contactlab."""
+import argparse
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+sys.dont_write_bytecode = True  # the scripts may run from the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import study_file  # noqa: E402
+import study_metrics as metrics  # noqa: E402
+import study_report as report  # noqa: E402
+
+
+def run_case(exe, scene, folder, sets, timeout, retry_failed):
+    """Runs one case in `folder` unless it is already there; returns its record."""
+    os.makedirs(folder, exist_ok=True)
+    case_file, record_file = (os.path.join(folder, f) for f in ("case.json", "record.json"))
+    try:
+        done = json.load(open(case_file)) == {"scene": scene, "sets": sets} and \
+            json.load(open(record_file))
+    except (OSError, ValueError):
+        done = None
+    if done and not (retry_failed and done["status"] != "converged"):
+        done["resumed"] = True
+        return done
+    for f in ("summary.json", "record.json"):
+        if os.path.exists(os.path.join(folder, f)):
+            os.remove(os.path.join(folder, f))
+    json.dump({"scene": scene, "sets": sets}, open(case_file, "w"))
+    cmd = [exe, "run", scene, "--out", folder]
+    for s in sets:
+        cmd += ["--set", s]
+    start = time.time()
+    with open(os.path.join(folder, "run.log"), "w") as log:
+        # A session of its own, so that a timeout stops the run and anything it started.
+        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
+                                start_new_session=True)
+        try:
+            code = proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+            code = None
+    record = {"wall_s": time.time() - start, "returncode": code}
+    summary = metrics.load_summary(folder)
+    if code is None:
+        record.update(status="timeout", reason=f"timeout ({timeout:g} s)")
+    elif code < 0:
+        record.update(status="crash", reason=f"crash ({signal.Signals(-code).name})")
+    elif summary is None:
+        errors = [l.strip() for l in open(os.path.join(folder, "run.log"), errors="replace")
+                  if l.startswith("contactlab: error:")]
+        if code == 2 and errors:  # the scene (with this case's settings) was refused
+            record.update(status="invalid", reason=errors[-1][len("contactlab: error:"):].strip())
+        else:
+            record.update(status="crash", reason=f"no summary.json (exit code {code})")
+    elif summary.get("converged"):
+        record.update(status="converged", reason="")
+    else:
+        record.update(status="failed", reason=summary.get("failure") or "failed")
+    json.dump(record, open(record_file, "w"))
+    return record
+
+
+def metrics_row(study, name, point, sets, folder, record, reference):
+    row = {"case": name, "axes": point, "sets": ";".join(sets), "folder": folder, **record}
+    summary = metrics.load_summary(folder)
+    if summary is None:
+        return row
+    row.update(metrics.cost_metrics(summary))
+    c = summary.get("contact") or {}
+    row["max_penetration"] = c.get("max_penetration")
+    row["force_balance"] = metrics.force_balance(summary)
+    if record["status"] != "converged":
+        return row
+    points = metrics.read_contact(folder, study.get("Zone"))
+    fn = metrics.reference_function(study["Reference"], folder, summary, reference["points"])
+    if fn:
+        row["pressure_error_l2"], row["pressure_error_max"] = metrics.pressure_errors(points, fn)
+    row["probe_error"] = metrics.probe_error(summary, reference["summary"])
+    return row
+
+
+def main():
+    ap = argparse.ArgumentParser(prog="contactlab study", description=__doc__.split("\n")[2])
+    ap.add_argument("study")
+    ap.add_argument("--contactlab", required=True, help=argparse.SUPPRESS)
+    ap.add_argument("--out", help="output folder (default: study-<Name>)")
+    ap.add_argument("--retry-failed", action="store_true", help="run failed cases again")
+    ap.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    args = ap.parse_args()
+    try:
+        study = study_file.read_study(args.study)
+    except study_file.StudyError as e:
+        print(f"contactlab: error: {e}", file=sys.stderr)
+        return 2
+    out = os.path.abspath(args.out or f"study-{study['Name']}")
+    os.makedirs(os.path.join(out, "runs"), exist_ok=True)
+    todo = study_file.cases(study)
+    axes = list(study["Axes"])
+    print(f"contactlab study {study['Name']}: {len(todo)} run(s) of {study['Scene']} "
+          f"-> {out}", flush=True)
+
+    reference = {"points": None, "summary": None}
+    if study["Reference"]["Type"] == "run":
+        folder = os.path.join(out, "reference")
+        rec = run_case(args.contactlab, study["Scene"], folder,
+                       study["Sets"] + [str(s) for s in study["Reference"]["Sets"]],
+                       study["Timeout"], args.retry_failed)
+        print(f"[reference] {rec['status']} {rec['reason']} ({rec['wall_s']:.1f} s)", flush=True)
+        if rec["status"] != "converged":
+            print("contactlab: warning: the reference run did not converge: no accuracy "
+                  "columns", file=sys.stderr)
+        else:
+            reference = {"points": metrics.read_contact(folder, study.get("Zone")),
+                         "summary": metrics.load_summary(folder)}
+
+    rows, spent, ran = [], 0.0, 0
+    for i, (name, point, sets) in enumerate(todo):
+        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
+        print(f"[{i + 1}/{len(todo)}] {name} ...", end=" ", flush=True)
+        rec = run_case(args.contactlab, study["Scene"], folder, study["Sets"] + sets,
+                       study["Timeout"], args.retry_failed)
+        if not rec.get("resumed"):
+            spent, ran = spent + rec["wall_s"], ran + 1
+        left = len(todo) - i - 1
+        eta = f", ETA {spent / ran * left:.0f} s" if ran and left else ""
+        print(f"{rec['status']}{' ' + rec['reason'] if rec['reason'] else ''} "
+              f"({rec['wall_s']:.1f} s{', done earlier' if rec.get('resumed') else ''}{eta})",
+              flush=True)
+        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, rec, reference))
+
+    report.write_csv(os.path.join(out, "study.csv"), rows, axes)
+    plots = []
+    if not args.no_plots:
+        plot = subprocess.run([sys.executable, os.path.join(os.path.dirname(
+            os.path.abspath(__file__)), "plot_study.py"), out], capture_output=True, text=True)
+        if plot.returncode != 0:
+            print("contactlab: warning: no plots: " + plot.stderr.strip().splitlines()[-1]
+                  if plot.stderr.strip() else "contactlab: warning: no plots", file=sys.stderr)
+        plots = [p for p in plot.stdout.split() if p.endswith(".png")]
+    report.write_md(os.path.join(out, "study.md"), study, rows, axes, plots)
+    converged = sum(r["status"] == "converged" for r in rows)
+    print(f"contactlab study {study['Name']}: {converged} of {len(rows)} converged; "
+          f"{os.path.join(out, 'study.md')}", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

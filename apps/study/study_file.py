@@ -1,0 +1,114 @@
+"""The study file (doc/studies.md): read, validated with a sentence for every mistake, and
+expanded into its cases."""
+import itertools
+import os
+import re
+
+import yaml
+
+from study_metrics import ANALYTIC
+
+KEYS = {
+    "Name": "the study's name (the default output folder is study-<Name>)",
+    "Description": "free text, copied to study.md",
+    "Scene": "the base scene, a path relative to the study file",
+    "Timeout": "seconds allowed to each run before it is stopped and recorded as `timeout` "
+               "(default 600)",
+    "Sets": "--set arguments applied to every run, e.g. [\"Output/VTK=false\"]",
+    "Axes": "mapping of a scene key path to its list of values; the study runs their product",
+    "Cases": "explicit cases, each {Name: ..., Sets: [...]}, run after the product",
+    "Reference": "accuracy reference: {Type: analytic, Name: hertz-2d, ...parameters}, "
+                 "{Type: run, Sets: [...]} (a run of the base scene, usually the finest and "
+                 "tightest settings) or {Type: none}",
+    "Accuracy Target": "relative L2 pressure error the recommendation asks for (default 0.05)",
+    "Zone": "contact zone whose pressure is compared (default: every zone)",
+}
+
+
+class StudyError(Exception):
+    pass
+
+
+def _value(v):
+    """A YAML scalar as the --set text."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, float):
+        return repr(v)
+    return str(v)
+
+
+def _slug(text):
+    return re.sub(r"[^A-Za-z0-9.+-]+", "_", text).strip("_")[:80]
+
+
+def read_study(path):
+    try:
+        doc = yaml.safe_load(open(path))
+    except OSError as e:
+        raise StudyError(f"cannot read {path}: {e.strerror}")
+    except yaml.YAMLError as e:
+        raise StudyError(f"{path}: not valid YAML: {e}")
+    if not isinstance(doc, dict) or "contactlab-study" not in doc:
+        raise StudyError(f"{path}: the top-level key must be 'contactlab-study'")
+    s = doc["contactlab-study"]
+    if not isinstance(s, dict):
+        raise StudyError(f"{path}: 'contactlab-study' must be a mapping")
+    unknown = [k for k in s if k not in KEYS]
+    if unknown:
+        raise StudyError(f"{path}: unknown key(s) {', '.join(map(str, unknown))}; valid keys: "
+                         + ", ".join(KEYS))
+    if "Name" not in s or "Scene" not in s:
+        raise StudyError(f"{path}: 'Name' and 'Scene' are required")
+    s["Scene"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)),
+                                               str(s["Scene"])))
+    if not os.path.exists(s["Scene"]):
+        raise StudyError(f"{path}: Scene {s['Scene']} does not exist")
+    s.setdefault("Timeout", 600)
+    if not isinstance(s["Timeout"], (int, float)) or s["Timeout"] <= 0:
+        raise StudyError(f"{path}: Timeout must be a positive number of seconds")
+    s.setdefault("Accuracy Target", 0.05)
+    s.setdefault("Sets", [])
+    s.setdefault("Axes", {})
+    s.setdefault("Cases", [])
+    if not isinstance(s["Sets"], list):
+        raise StudyError(f"{path}: Sets must be a list of 'key=value' strings")
+    if not isinstance(s["Axes"], dict) or any(not isinstance(v, list) or not v
+                                              for v in s["Axes"].values()):
+        raise StudyError(f"{path}: Axes must map each scene key path to a non-empty list")
+    for c in s["Cases"]:
+        if not isinstance(c, dict) or "Name" not in c or not isinstance(c.get("Sets", []), list):
+            raise StudyError(f"{path}: each of Cases must be {{Name: ..., Sets: [...]}}")
+    if not s["Axes"] and not s["Cases"]:
+        raise StudyError(f"{path}: no Axes and no Cases: nothing to run")
+    ref = s.setdefault("Reference", {"Type": "none"})
+    kind = ref.get("Type")
+    if kind == "analytic":
+        if ref.get("Name") not in ANALYTIC:
+            raise StudyError(f"{path}: Reference/Name must be one of {', '.join(ANALYTIC)}")
+        missing = [p for p in ANALYTIC[ref["Name"]][1] if p not in ref]
+        if missing:
+            raise StudyError(f"{path}: the {ref['Name']} reference needs {', '.join(missing)}")
+    elif kind == "run":
+        ref.setdefault("Sets", [])
+    elif kind != "none":
+        raise StudyError(f"{path}: Reference/Type must be analytic, run or none")
+    return s
+
+
+def cases(study):
+    """[(name, {axis: value}, [--set ...])]: the product of the axes, then the explicit cases."""
+    out = []
+    axes = list(study["Axes"].items())
+    if axes:
+        for values in itertools.product(*[v for _, v in axes]):
+            point = {k: _value(v) for (k, _), v in zip(axes, values)}
+            name = ",".join(f"{k.split('/')[-1]}={v}" for k, v in point.items())
+            out.append((name, point, [f"{k}={v}" for k, v in point.items()]))
+    for c in study["Cases"]:
+        out.append((str(c["Name"]), {}, [str(x) for x in c.get("Sets", [])]))
+    return out
+
+
+def run_folder(index, name):
+    return f"{index:03d}-{_slug(name)}"

@@ -1,0 +1,137 @@
+"""study.csv and study.md from the runs' metrics: the table sorted by cost at equal accuracy,
+the Pareto front of (wall time, pressure error), and a recommendation computed from the data."""
+import csv
+import math
+
+METRICS = ["status", "reason", "sets", "wall_s", "solver_total_s", "assembly_s", "contact_s",
+           "linear_solve_s", "newton", "status_its", "threshold_its", "geometry_its",
+           "linear_solves", "cycling_events", "steps", "cuts", "peak_memory_mb",
+           "unknowns_displacement", "unknowns_contact", "unknowns_friction",
+           "pressure_error_l2", "pressure_error_max", "max_penetration", "force_balance",
+           "probe_error", "folder"]
+
+
+def _num(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def write_csv(path, rows, axes):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case"] + axes + METRICS)
+        for r in rows:
+            w.writerow([r["case"]] + [r["axes"].get(a, "") for a in axes]
+                       + ["" if r.get(m) is None else r[m] for m in METRICS])
+
+
+def cost(r):
+    """The solver's own time (summary.json seconds.total): the process start-up, the same for
+    every run, left out. The wall time when the run wrote no summary."""
+    return r["solver_total_s"] if _num(r.get("solver_total_s")) else r["wall_s"]
+
+
+def pareto(rows):
+    """Converged runs not dominated in (cost, L2 pressure error): none both cheaper and at
+    least as accurate (or as cheap and more accurate)."""
+    pts = [r for r in rows if r["status"] == "converged" and _num(r.get("pressure_error_l2"))]
+    front = []
+    for r in pts:
+        dominated = any(o is not r and cost(o) <= cost(r)
+                        and o["pressure_error_l2"] <= r["pressure_error_l2"]
+                        and (cost(o) < cost(r)
+                             or o["pressure_error_l2"] < r["pressure_error_l2"]) for o in pts)
+        if not dominated:
+            front.append(r)
+    return front
+
+
+def _accuracy_class(r):
+    """Runs within the same decade of pressure error count as equally accurate."""
+    e = r.get("pressure_error_l2")
+    return math.floor(math.log10(e)) if _num(e) and e > 0 else -99
+
+
+def _fmt(v, digits=3):
+    if v is None or v == "":
+        return "–"
+    if isinstance(v, float):
+        return f"{v:.{digits}g}"
+    return str(v)
+
+
+def recommendation(study, rows, axes):
+    target = study["Accuracy Target"]
+    lines = []
+    good = [r for r in rows if r["status"] == "converged"]
+    accurate = [r for r in good if _num(r.get("pressure_error_l2"))
+                and r["pressure_error_l2"] <= target]
+    if accurate:
+        best = min(accurate, key=cost)
+        lines.append(f"- **Fastest within a pressure error of {target:g}**: {best['case']} "
+                     f"({cost(best):.3g} s, L2 error {best['pressure_error_l2']:.3g}).")
+    elif good and any(_num(r.get("pressure_error_l2")) for r in good):
+        best = min((r for r in good if _num(r.get("pressure_error_l2"))),
+                   key=lambda r: r["pressure_error_l2"])
+        lines.append(f"- **No run reaches a pressure error of {target:g}**; the most accurate is "
+                     f"{best['case']} (L2 error {best['pressure_error_l2']:.3g}, "
+                     f"{cost(best):.3g} s).")
+    elif good:
+        best = min(good, key=cost)
+        lines.append(f"- **Fastest converged run** (no accuracy reference): {best['case']} "
+                     f"({cost(best):.3g} s).")
+    for axis in axes:
+        values = sorted({r["axes"][axis] for r in rows if axis in r["axes"]})
+        if len(values) < 2:
+            continue
+        rate = {v: (sum(1 for r in rows if r["axes"].get(axis) == v and r["status"] == "converged"),
+                    sum(1 for r in rows if r["axes"].get(axis) == v)) for v in values}
+        text = ", ".join(f"{v} {rate[v][0]}/{rate[v][1]}" for v in values)
+        if len({rate[v][0] / rate[v][1] for v in values}) == 1:
+            lines.append(f"- **{axis}**: no value more robust than another (converged runs: "
+                         f"{text}).")
+            continue
+        most = max(values, key=lambda v: rate[v][0] / rate[v][1])
+        lines.append(f"- **Most robust {axis}**: {most} (converged runs: {text}).")
+    failed = [r for r in rows if r["status"] != "converged"]
+    if failed:
+        reasons = {}
+        for r in failed:
+            reasons.setdefault(r["reason"] or r["status"], []).append(r["case"])
+        lines.append("- **Where methods break**: " + "; ".join(
+            f"{why}: {len(names)} run(s) ({', '.join(names[:4])}{', …' if len(names) > 4 else ''})"
+            for why, names in sorted(reasons.items())) + ".")
+    return "\n".join(lines)
+
+
+def write_md(path, study, rows, axes, plots):
+    front = {id(r) for r in pareto(rows)}
+    order = sorted(rows, key=lambda r: (r["status"] != "converged", _accuracy_class(r),
+                                        cost(r) if _num(cost(r)) else 1e300))
+    out = [f"# Study {study['Name']}", ""]
+    if study.get("Description"):
+        out += [str(study["Description"]), ""]
+    ref = study["Reference"]
+    out += [f"Scene `{study['Scene']}`, {len(rows)} runs; reference: "
+            + {"analytic": f"analytic field `{ref.get('Name')}`",
+               "run": "the reference run (`reference/`)",
+               "none": "none (no accuracy columns)"}[ref["Type"]] + ".", "",
+            "Sorted by accuracy class (decade of the L2 pressure error), then by cost (solver s: "
+            "summary.json seconds.total; wall s adds the process start-up); ★ marks the Pareto "
+            "front of (solver s, L2 pressure error).", ""]
+    head = ["", "case", "result", "wall s", "solver s", "Newton its", "linear solves", "cycling",
+            "p error L2", "p error max", "max penetration", "unknowns (u + λn + λt)"]
+    out += ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in order:
+        unknowns = "+".join(_fmt(r.get(k)) for k in
+                            ("unknowns_displacement", "unknowns_contact", "unknowns_friction"))
+        result = "converged" if r["status"] == "converged" else f"**{r['reason'] or r['status']}**"
+        out.append("| " + " | ".join([
+            "★" if id(r) in front else "", r["case"], result, _fmt(r["wall_s"]),
+            _fmt(r.get("solver_total_s")),
+            _fmt(r.get("newton")), _fmt(r.get("linear_solves")), _fmt(r.get("cycling_events")),
+            _fmt(r.get("pressure_error_l2")), _fmt(r.get("pressure_error_max")),
+            _fmt(r.get("max_penetration")), unknowns]) + " |")
+    out += ["", "## Recommendation", "", recommendation(study, rows, axes), ""]
+    if plots:
+        out += ["## Plots", ""] + [f"![{p}]({p})" for p in plots] + [""]
+    open(path, "w").write("\n".join(out))

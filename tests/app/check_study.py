@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""`contactlab study` end to end (issue 5) on the fast patch-test scene: a product of two axes
+(one value of which the scene refuses), an explicit case that runs past the time limit, and a
+reference run. Checks that every run is recorded with its reason and the study goes on, that
+study.csv / study.md / the plots are written with the accuracy against the reference, that a
+second invocation resumes (runs nothing again), and that a bad study file is refused with a
+sentence.
+
+usage: check_study.py CONTACTLAB SCENES_DIR WORKDIR"""
+import csv, os, shutil, subprocess, sys, time
+
+exe, scenes, work = sys.argv[1:4]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+failures = []
+
+
+def check(what, ok):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+study = os.path.join(work, "study.yaml")
+open(study, "w").write(f"""contactlab-study:
+  Name: patch
+  Scene: {os.path.join(os.path.abspath(scenes), 'patch-test-2d.yaml')}
+  Timeout: 8
+  Sets: ["Output/VTK=false"]
+  Axes:
+    Contact/interface/Formulation/Type: [lagrange, augmented-lagrangian, no-such-formulation]
+    Load Steps/Steps: [1, 2]
+  Cases:
+    - {{Name: too slow, Sets: ["Mesh/stacked-blocks-2d/Lower Divisions=[400, 400]", "Mesh/stacked-blocks-2d/Upper Divisions=[399, 399]"]}}
+  Reference: {{Type: run, Sets: ["Load Steps/Steps=4"]}}
+""")
+out = os.path.join(work, "out")
+start = time.time()
+r = subprocess.run([exe, "study", study, "--out", out], capture_output=True, text=True,
+                   timeout=600)
+first = time.time() - start
+print(r.stdout[-3000:], r.stderr[-2000:])
+check("the study exits 0 although runs failed", r.returncode == 0)
+check("progress shows run i of N", "[7/7] too slow" in r.stdout and "ETA" in r.stdout)
+rows = list(csv.DictReader(open(os.path.join(out, "study.csv"))))
+check(f"study.csv has one row per run ({len(rows)})", len(rows) == 7)
+by = {row["case"]: row for row in rows}
+ok = [row for row in rows if row["status"] == "converged"]
+check(f"the 4 valid product runs converge ({len(ok)})", len(ok) == 4)
+invalid = [row for row in rows if "no-such-formulation" in row["case"]]
+check("the refused value is recorded as invalid, with the scene's sentence",
+      len(invalid) == 2 and all(row["status"] == "invalid" and "no-such-formulation" in
+                                row["reason"] for row in invalid))
+slow = by.get("too slow", {})
+check(f"the slow case is stopped at the time limit ({slow.get('status')}, {slow.get('wall_s')} s)",
+      slow.get("status") == "timeout" and float(slow["wall_s"]) < 30)
+errors = [float(row["pressure_error_l2"]) for row in ok if row["pressure_error_l2"]]
+check(f"pressure errors against the reference run (the patch test: uniform, {errors})",
+      len(errors) == 4 and max(errors) < 1e-6)
+check("unknowns built: multipliers, no friction unknowns at mu = 0",
+      all(int(row["unknowns_contact"]) > 0 and int(row["unknowns_friction"]) == 0 for row in ok))
+md = open(os.path.join(out, "study.md")).read()
+check("study.md has the table, the Pareto front and a recommendation",
+      "| ★ |" in md and "## Recommendation" in md and "Where methods break" in md)
+check("the accuracy plot is written",
+      os.path.getsize(os.path.join(out, "accuracy_vs_time.png")) > 1000)
+check("each run keeps its own results folder",
+      all(os.path.exists(os.path.join(row["folder"], "summary.json")) for row in ok))
+
+start = time.time()
+again = subprocess.run([exe, "study", study, "--out", out, "--no-plots"], capture_output=True,
+                       text=True, timeout=600)
+check(f"a second invocation resumes: nothing run again ({time.time() - start:.1f} s, first "
+      f"{first:.1f} s)", again.returncode == 0 and again.stdout.count("done earlier") == 7)
+
+bad = os.path.join(work, "bad.yaml")
+open(bad, "w").write("contactlab-study:\n  Name: x\n  Scene: nowhere.yaml\n  Axes: {}\n")
+r = subprocess.run([exe, "study", bad], capture_output=True, text=True, timeout=60)
+check(f"a bad study file is refused with a sentence ({r.stderr.strip()})",
+      r.returncode == 2 and "does not exist" in r.stderr)
+open(bad, "w").write(f"contactlab-study:\n  Name: x\n  Scene: {study}\n  Axis: {{}}\n")
+r = subprocess.run([exe, "study", bad], capture_output=True, text=True, timeout=60)
+check(f"an unknown key is named ({r.stderr.strip()})", r.returncode == 2 and "Axis" in r.stderr)
+sys.exit(1 if failures else 0)
