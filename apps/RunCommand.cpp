@@ -426,7 +426,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     const auto& section = params.sublist("Contact");
     for (const auto& zone : sm.contact)
       zones.set(zone.name, typedSection(section.sublist(zone.name).sublist("Formulation"))
-                               .set("friction", zone.friction));
+                               .set("friction", zone.friction)
+                               .set("master", zone.obstacle ? "obstacle" : "surface"));
     return zones;
   };
   auto contactSummary = [&] {

@@ -65,6 +65,9 @@ def run_case(exe, scene, folder, sets, timeout, retry_failed):
             record.update(status="invalid", reason=errors[-1][len("contactlab: error:"):].strip())
         else:
             record.update(status="crash", reason=f"no summary.json (exit code {code})")
+    elif metrics.non_finite_outputs(folder):
+        record.update(status="nan-in-output",
+                      reason="NaN or infinity in " + ", ".join(metrics.non_finite_outputs(folder)))
     elif summary.get("converged"):
         record.update(status="converged", reason="")
     else:
@@ -79,15 +82,18 @@ def metrics_row(study, name, point, sets, folder, record, reference):
     if summary is None:
         return row
     row.update(metrics.cost_metrics(summary))
-    c = summary.get("contact") or {}
-    row["max_penetration"] = c.get("max_penetration")
-    row["force_balance"] = metrics.force_balance(summary)
-    if record["status"] != "converged":
+    if record["status"] != "converged":  # a failed run's contact state is not a solution
         return row
+    row["max_penetration"] = (summary.get("contact") or {}).get("max_penetration")
+    row["force_balance"] = metrics.force_balance(summary)
     points = metrics.read_contact(folder, study.get("Zone"))
-    fn = metrics.reference_function(study["Reference"], folder, summary, reference["points"])
-    if fn:
-        row["pressure_error_l2"], row["pressure_error_max"] = metrics.pressure_errors(points, fn)
+    pressure, shear = metrics.references(study["Reference"], summary, reference["points"])
+    if pressure:
+        row["pressure_error_l2"], row["pressure_error_max"] = metrics.field_errors(
+            points, lambda q: q.pressure, pressure)
+    if shear:
+        row["shear_error_l2"], row["shear_error_max"] = metrics.field_errors(
+            points, lambda q: q.shear, shear)
     row["probe_error"] = metrics.probe_error(summary, reference["summary"])
     return row
 
@@ -127,11 +133,11 @@ def main():
                          "summary": metrics.load_summary(folder)}
 
     rows, spent, ran = [], 0.0, 0
-    for i, (name, point, sets) in enumerate(todo):
+    for i, (name, point, sets, scene) in enumerate(todo):
         folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
         print(f"[{i + 1}/{len(todo)}] {name} ...", end=" ", flush=True)
-        rec = run_case(args.contactlab, study["Scene"], folder, study["Sets"] + sets,
-                       study["Timeout"], args.retry_failed)
+        rec = run_case(args.contactlab, scene, folder, study["Sets"] + sets, study["Timeout"],
+                       args.retry_failed)
         if not rec.get("resumed"):
             spent, ran = spent + rec["wall_s"], ran + 1
         left = len(todo) - i - 1

@@ -16,7 +16,10 @@ KEYS = {
                "(default 600)",
     "Sets": "--set arguments applied to every run, e.g. [\"Output/VTK=false\"]",
     "Axes": "mapping of a scene key path to its list of values; the study runs their product",
-    "Cases": "explicit cases, each {Name: ..., Sets: [...]}, run after the product",
+    "Cases": "explicit cases, each {Name: ..., Sets: [...]} and optionally Scene: (another "
+             "scene, relative to the study file), run after the product",
+    "Cross": "true: every case is run at every point of the axes' product (a case x axes "
+             "table, e.g. each extreme with each algorithm); default false",
     "Reference": "accuracy reference: {Type: analytic, Name: hertz-2d, ...parameters}, "
                  "{Type: run, Sets: [...]} (a run of the base scene, usually the finest and "
                  "tightest settings) or {Type: none}",
@@ -76,9 +79,19 @@ def read_study(path):
     if not isinstance(s["Axes"], dict) or any(not isinstance(v, list) or not v
                                               for v in s["Axes"].values()):
         raise StudyError(f"{path}: Axes must map each scene key path to a non-empty list")
+    s.setdefault("Cross", False)
     for c in s["Cases"]:
         if not isinstance(c, dict) or "Name" not in c or not isinstance(c.get("Sets", []), list):
             raise StudyError(f"{path}: each of Cases must be {{Name: ..., Sets: [...]}}")
+        unknown = [k for k in c if k not in ("Name", "Sets", "Scene")]
+        if unknown:
+            raise StudyError(f"{path}: case {c['Name']}: unknown key(s) {', '.join(unknown)}; "
+                             "valid keys: Name, Sets, Scene")
+        if "Scene" in c:
+            c["Scene"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)),
+                                                       str(c["Scene"])))
+            if not os.path.exists(c["Scene"]):
+                raise StudyError(f"{path}: case {c['Name']}: Scene {c['Scene']} does not exist")
     if not s["Axes"] and not s["Cases"]:
         raise StudyError(f"{path}: no Axes and no Cases: nothing to run")
     ref = s.setdefault("Reference", {"Type": "none"})
@@ -87,6 +100,8 @@ def read_study(path):
         if ref.get("Name") not in ANALYTIC:
             raise StudyError(f"{path}: Reference/Name must be one of {', '.join(ANALYTIC)}")
         missing = [p for p in ANALYTIC[ref["Name"]][1] if p not in ref]
+        if ref["Name"] != "coulomb" and "E Star" not in ref and ("E" not in ref or "nu" not in ref):
+            missing.append("E Star (or E and nu)")
         if missing:
             raise StudyError(f"{path}: the {ref['Name']} reference needs {', '.join(missing)}")
     elif kind == "run":
@@ -97,17 +112,26 @@ def read_study(path):
 
 
 def cases(study):
-    """[(name, {axis: value}, [--set ...])]: the product of the axes, then the explicit cases."""
-    out = []
+    """[(name, {axis: value}, [--set ...], scene)]: the product of the axes, then the explicit
+    cases; with Cross, every case at every point of the product."""
+    points = [({}, [])]
     axes = list(study["Axes"].items())
     if axes:
+        points = []
         for values in itertools.product(*[v for _, v in axes]):
             point = {k: _value(v) for (k, _), v in zip(axes, values)}
-            name = ",".join(f"{k.split('/')[-1]}={v}" for k, v in point.items())
-            out.append((name, point, [f"{k}={v}" for k, v in point.items()]))
-    for c in study["Cases"]:
-        out.append((str(c["Name"]), {}, [str(x) for x in c.get("Sets", [])]))
-    return out
+            points.append((point, [f"{k}={v}" for k, v in point.items()]))
+
+    def label(point):
+        return ",".join(f"{k.split('/')[-1]}={v}" for k, v in point.items())
+
+    explicit = [(str(c["Name"]), [str(x) for x in c.get("Sets", [])],
+                 c.get("Scene", study["Scene"])) for c in study["Cases"]]
+    if study["Cross"] and explicit:
+        return [(f"{name},{label(point)}" if point else name, point, sets + psets, scene)
+                for name, sets, scene in explicit for point, psets in points]
+    out = [(label(point), point, psets, study["Scene"]) for point, psets in points if point]
+    return out + [(name, {}, sets, scene) for name, sets, scene in explicit]
 
 
 def run_folder(index, name):

@@ -6,87 +6,146 @@ import json
 import math
 import os
 
-# Contact pressure references: name -> function(point, parameters, normal_force) -> pressure.
-# `point` is (x, y, z) of a contact node; normal_force the run's own resultant (the analytic
-# fields are scaled to the load the run actually carried, as in the verification scripts).
+# Analytic references: name -> (builder, required parameters, what it is). A builder takes the
+# reference's parameters and the run's summary and returns (pressure, shear): functions of a
+# contact point (a ContactPoint), or None for a field it does not give. The Hertz-type fields
+# are scaled to the loads the run actually carried (P, Q), as in the verification scripts.
 
 
-def _hertz_2d(point, prm, force):
+class ContactPoint:
+    __slots__ = ("x", "pressure", "gap", "shear", "status")
+
+    def __init__(self, x, pressure, gap, shear, status):
+        self.x, self.pressure, self.gap, self.shear, self.status = x, pressure, gap, shear, status
+
+
+def _e_star(prm):
+    return prm["E Star"] if "E Star" in prm else prm["E"] / (1 - prm["nu"] ** 2)
+
+
+def _loads(summary):
+    c = summary.get("contact") or {}
+    return abs(c.get("normal_force") or 0.0), abs((c.get("tangential_force_vector") or [0])[0])
+
+
+def _hertz_2d_profile(prm, force):
+    a = math.sqrt(4 * force * prm["Radius"] / (math.pi * _e_star(prm)))
+    p0 = 2 * force / (math.pi * a) if a > 0 else 0.0
+    centre = prm.get("Centre", [0.0])[0]
+    return a, p0, lambda q: p0 * math.sqrt(max(0.0, 1 - ((q.x[0] - centre) / a) ** 2))
+
+
+def _hertz_2d(prm, summary):
     """Plane-strain cylinder (per unit thickness): a = sqrt(4 P R / (pi E*)),
     p = 2 P / (pi a) sqrt(1 - (x / a)^2)."""
-    e_star = prm["E"] / (1 - prm["nu"] ** 2)
-    a = math.sqrt(4 * force * prm["Radius"] / (math.pi * e_star))
-    x = point[0] - prm.get("Centre", [0.0])[0]
-    return 2 * force / (math.pi * a) * math.sqrt(max(0.0, 1 - (x / a) ** 2))
+    return _hertz_2d_profile(prm, _loads(summary)[0])[2], None
 
 
-def _hertz_3d(point, prm, force):
+def _hertz_3d(prm, summary):
     """Sphere on a rigid plane: a = (3 P R / (4 E*))^(1/3), p = 3 P / (2 pi a^2) sqrt(1 - r^2/a^2)."""
-    e_star = prm["E"] / (1 - prm["nu"] ** 2)
-    a = (3 * force * prm["Radius"] / (4 * e_star)) ** (1 / 3)
+    force = _loads(summary)[0]
+    a = (3 * force * prm["Radius"] / (4 * _e_star(prm))) ** (1 / 3)
     c = prm.get("Centre", [0.0, 0.0])
-    r2 = (point[0] - c[0]) ** 2 + (point[1] - c[1]) ** 2
-    return 3 * force / (2 * math.pi * a * a) * math.sqrt(max(0.0, 1 - r2 / (a * a)))
+    p0 = 3 * force / (2 * math.pi * a * a) if a > 0 else 0.0
+    return (lambda q: p0 * math.sqrt(max(0.0, 1 - ((q.x[0] - c[0]) ** 2 + (q.x[1] - c[1]) ** 2)
+                                         / (a * a)))), None
+
+
+def _cattaneo_mindlin_2d(prm, summary):
+    """Hertz 2D pressure, and the Cattaneo-Mindlin shear traction for the run's P and Q:
+    c/a = sqrt(1 - Q/(mu P)), q = mu p0 (sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)) in the
+    stick zone |x| < c, mu p in the slip zone."""
+    force, shear = _loads(summary)
+    a, p0, pressure = _hertz_2d_profile(prm, force)
+    mu = prm["mu"]
+    c = a * math.sqrt(max(0.0, 1 - shear / (mu * force))) if force > 0 else 0.0
+    centre = prm.get("Centre", [0.0])[0]
+
+    def q(point):
+        x = point.x[0] - centre
+        value = mu * pressure(point)
+        if abs(x) < c:
+            value -= mu * p0 * (c / a) * math.sqrt(1 - (x / c) ** 2)
+        return value
+
+    return pressure, q
+
+
+def _coulomb(prm, summary):
+    """The Coulomb threshold at the run's own pressure: |t| = mu p where a point slips, and
+    |t| <= mu p where it sticks (its own |t|, or mu p when it exceeds it)."""
+    mu = prm["mu"]
+    return None, lambda q: mu * q.pressure if q.status == 2 else min(q.shear, mu * q.pressure)
 
 
 ANALYTIC = {
-    "hertz-2d": (_hertz_2d, ["Radius", "E", "nu"], "plane-strain Hertz pressure"),
-    "hertz-3d": (_hertz_3d, ["Radius", "E", "nu"], "3D Hertz pressure (sphere on a plane)"),
+    "hertz-2d": (_hertz_2d, ["Radius"], "plane-strain Hertz pressure (E Star, or E and nu)"),
+    "hertz-3d": (_hertz_3d, ["Radius"], "3D Hertz pressure, sphere on a plane (E Star, or E, nu)"),
+    "cattaneo-mindlin-2d": (_cattaneo_mindlin_2d, ["Radius", "mu"],
+                            "Hertz 2D pressure and Cattaneo-Mindlin shear traction"),
+    "coulomb": (_coulomb, ["mu"], "the Coulomb threshold on the shear traction"),
 }
 
 
 def read_contact(run_dir, zone=None):
-    """Contact points of the run's last state with a finite gap: [(x, y, z, pressure, gap)]."""
+    """Paired contact points of the run's last state, as ContactPoint."""
     path = os.path.join(run_dir, "contact.csv")
     if not os.path.exists(path):
         return []
     points = []
     for row in csv.DictReader(open(path)):
-        if zone and row["zone"] != zone:
+        if (zone and row["zone"] != zone) or not row["gap"]:  # empty gap: not paired
             continue
         gap, p = float(row["gap"]), float(row["pressure"])
+        t = [float(row[f"traction_{c}"]) for c in "xyz"]
         if math.isfinite(gap) and math.isfinite(p):
-            points.append((float(row["x"]), float(row["y"]), float(row["z"]), p, gap))
+            points.append(ContactPoint((float(row["x"]), float(row["y"]), float(row["z"])), p,
+                                       gap, math.sqrt(sum(v * v for v in t)),
+                                       int(row["status"])))
     return points
 
 
 def _nearest(points, x):
-    return min(points, key=lambda q: (q[0] - x[0]) ** 2 + (q[1] - x[1]) ** 2 + (q[2] - x[2]) ** 2)
+    return min(points, key=lambda q: sum((q.x[i] - x[i]) ** 2 for i in range(3)))
 
 
-def pressure_errors(points, reference):
-    """Relative L2 (nodal) and max errors of the contact pressure against `reference`, a
-    function of a point. None when no point carries pressure in the reference."""
-    ref = [reference(q[:3]) for q in points]
+def field_errors(points, value, reference):
+    """Relative L2 (nodal) and max errors of a field (`value` of a point) against `reference`
+    (a function of a point). (None, None) when the reference is zero everywhere."""
+    ref = [reference(q) for q in points]
     scale_l2 = math.sqrt(sum(r * r for r in ref))
-    scale_max = max(ref, default=0.0)
+    scale_max = max((abs(r) for r in ref), default=0.0)
     if not points or scale_max <= 0:
         return None, None
-    l2 = math.sqrt(sum((q[3] - r) ** 2 for q, r in zip(points, ref))) / scale_l2
-    mx = max(abs(q[3] - r) for q, r in zip(points, ref)) / scale_max
+    l2 = math.sqrt(sum((value(q) - r) ** 2 for q, r in zip(points, ref))) / scale_l2
+    mx = max(abs(value(q) - r) for q, r in zip(points, ref)) / scale_max
     return l2, mx
 
 
-def reference_function(spec, run_dir, summary, reference_points):
-    """The pressure reference for one run: analytic (scaled to the run's normal force) or the
-    reference run's pressure at the nearest of its contact points."""
+def references(spec, summary, reference_points):
+    """(pressure, shear) reference functions for one run: analytic, or the reference run's
+    values at the nearest of its contact points."""
     if spec["Type"] == "analytic":
-        fn = ANALYTIC[spec["Name"]][0]
-        force = abs((summary.get("contact") or {}).get("normal_force") or 0.0)
-        return lambda x: fn(x, spec, force)
+        return ANALYTIC[spec["Name"]][0](spec, summary)
     if spec["Type"] == "run" and reference_points:
-        return lambda x: _nearest(reference_points, x)[3]
-    return None
+        return (lambda q: _nearest(reference_points, q.x).pressure,
+                lambda q: _nearest(reference_points, q.x).shear)
+    return None, None
 
 
 def force_balance(summary):
-    """|contact resultant + support reactions| relative to the largest reaction."""
+    """|sum of the external forces| relative to the largest reaction: the support reactions,
+    plus the contact resultant when a zone presses on a rigid obstacle (between two bodies
+    the contact forces are internal and cancel)."""
     c = summary.get("contact")
     reactions = list((summary.get("reactions") or {}).values())
     if not c or not reactions:
         return None
-    total = [c["normal_force_vector"][i] + c["tangential_force_vector"][i]
-             for i in range(len(c["normal_force_vector"]))]
+    total = [0.0] * len(reactions[0])
+    zones = (summary.get("formulation") or {}).values()
+    if any(z.get("master") == "obstacle" for z in zones):
+        total = [c["normal_force_vector"][i] + c["tangential_force_vector"][i]
+                 for i in range(len(total))]
     for r in reactions:
         total = [total[i] + r[i] for i in range(len(total))]
     scale = max(abs(v) for r in reactions for v in r)
@@ -130,6 +189,28 @@ def cost_metrics(summary):
         "unknowns_contact": unknowns.get("contact_multipliers"),
         "unknowns_friction": unknowns.get("friction_multipliers"),
     }
+
+
+def non_finite_outputs(run_dir):
+    """The run's CSV and JSON outputs holding a NaN or an infinity (an empty CSV cell is a
+    value that is not defined, e.g. the gap of an unpaired point, not a NaN)."""
+    bad = []
+    for name in sorted(os.listdir(run_dir)):
+        path = os.path.join(run_dir, name)
+        if name.endswith(".csv"):
+            for row in csv.reader(open(path)):
+                if any(cell.strip().lower() in ("nan", "-nan", "inf", "-inf") for cell in row):
+                    bad.append(name)
+                    break
+        elif name.endswith(".json") and name not in ("case.json", "record.json"):
+            found = []
+            try:
+                json.load(open(path), parse_constant=found.append)
+            except ValueError:
+                found.append("unreadable")
+            if found:
+                bad.append(name)
+    return bad
 
 
 def load_summary(run_dir):

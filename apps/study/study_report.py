@@ -7,7 +7,8 @@ METRICS = ["status", "reason", "sets", "wall_s", "solver_total_s", "assembly_s",
            "linear_solve_s", "newton", "status_its", "threshold_its", "geometry_its",
            "linear_solves", "cycling_events", "steps", "cuts", "peak_memory_mb",
            "unknowns_displacement", "unknowns_contact", "unknowns_friction",
-           "pressure_error_l2", "pressure_error_max", "max_penetration", "force_balance",
+           "pressure_error_l2", "pressure_error_max", "shear_error_l2", "shear_error_max",
+           "max_penetration", "force_balance",
            "probe_error", "folder"]
 
 
@@ -30,16 +31,24 @@ def cost(r):
     return r["solver_total_s"] if _num(r.get("solver_total_s")) else r["wall_s"]
 
 
+def accuracy(r):
+    """The run's error: the L2 pressure error, else (a shear-only reference) the shear's."""
+    for key in ("pressure_error_l2", "shear_error_l2"):
+        if _num(r.get(key)):
+            return r[key]
+    return None
+
+
 def pareto(rows):
     """Converged runs not dominated in (cost, L2 pressure error): none both cheaper and at
     least as accurate (or as cheap and more accurate)."""
-    pts = [r for r in rows if r["status"] == "converged" and _num(r.get("pressure_error_l2"))]
+    pts = [r for r in rows if r["status"] == "converged" and _num(accuracy(r))]
     front = []
     for r in pts:
         dominated = any(o is not r and cost(o) <= cost(r)
-                        and o["pressure_error_l2"] <= r["pressure_error_l2"]
+                        and accuracy(o) <= accuracy(r)
                         and (cost(o) < cost(r)
-                             or o["pressure_error_l2"] < r["pressure_error_l2"]) for o in pts)
+                             or accuracy(o) < accuracy(r)) for o in pts)
         if not dominated:
             front.append(r)
     return front
@@ -47,7 +56,7 @@ def pareto(rows):
 
 def _accuracy_class(r):
     """Runs within the same decade of pressure error count as equally accurate."""
-    e = r.get("pressure_error_l2")
+    e = accuracy(r)
     return math.floor(math.log10(e)) if _num(e) and e > 0 else -99
 
 
@@ -63,17 +72,17 @@ def recommendation(study, rows, axes):
     target = study["Accuracy Target"]
     lines = []
     good = [r for r in rows if r["status"] == "converged"]
-    accurate = [r for r in good if _num(r.get("pressure_error_l2"))
-                and r["pressure_error_l2"] <= target]
+    accurate = [r for r in good if _num(accuracy(r))
+                and accuracy(r) <= target]
     if accurate:
         best = min(accurate, key=cost)
-        lines.append(f"- **Fastest within a pressure error of {target:g}**: {best['case']} "
-                     f"({cost(best):.3g} s, L2 error {best['pressure_error_l2']:.3g}).")
-    elif good and any(_num(r.get("pressure_error_l2")) for r in good):
-        best = min((r for r in good if _num(r.get("pressure_error_l2"))),
-                   key=lambda r: r["pressure_error_l2"])
-        lines.append(f"- **No run reaches a pressure error of {target:g}**; the most accurate is "
-                     f"{best['case']} (L2 error {best['pressure_error_l2']:.3g}, "
+        lines.append(f"- **Fastest within an error of {target:g}**: {best['case']} "
+                     f"({cost(best):.3g} s, error {accuracy(best):.3g}).")
+    elif good and any(_num(accuracy(r)) for r in good):
+        best = min((r for r in good if _num(accuracy(r))),
+                   key=lambda r: accuracy(r))
+        lines.append(f"- **No run reaches an error of {target:g}**; the most accurate is "
+                     f"{best['case']} (error {accuracy(best):.3g}, "
                      f"{cost(best):.3g} s).")
     elif good:
         best = min(good, key=cost)
@@ -90,7 +99,8 @@ def recommendation(study, rows, axes):
             lines.append(f"- **{axis}**: no value more robust than another (converged runs: "
                          f"{text}).")
             continue
-        most = max(values, key=lambda v: rate[v][0] / rate[v][1])
+        top = max(rate[v][0] / rate[v][1] for v in values)
+        most = ", ".join(v for v in values if rate[v][0] / rate[v][1] == top)
         lines.append(f"- **Most robust {axis}**: {most} (converged runs: {text}).")
     failed = [r for r in rows if r["status"] != "converged"]
     if failed:
@@ -119,7 +129,8 @@ def write_md(path, study, rows, axes, plots):
             "summary.json seconds.total; wall s adds the process start-up); ★ marks the Pareto "
             "front of (solver s, L2 pressure error).", ""]
     head = ["", "case", "result", "wall s", "solver s", "Newton its", "linear solves", "cycling",
-            "p error L2", "p error max", "max penetration", "unknowns (u + λn + λt)"]
+            "p error L2", "p error max", "shear error L2", "max penetration",
+            "unknowns (u + λn + λt)"]
     out += ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in order:
         unknowns = "+".join(_fmt(r.get(k)) for k in
@@ -130,7 +141,7 @@ def write_md(path, study, rows, axes, plots):
             _fmt(r.get("solver_total_s")),
             _fmt(r.get("newton")), _fmt(r.get("linear_solves")), _fmt(r.get("cycling_events")),
             _fmt(r.get("pressure_error_l2")), _fmt(r.get("pressure_error_max")),
-            _fmt(r.get("max_penetration")), unknowns]) + " |")
+            _fmt(r.get("shear_error_l2")), _fmt(r.get("max_penetration")), unknowns]) + " |")
     out += ["", "## Recommendation", "", recommendation(study, rows, axes), ""]
     if plots:
         out += ["## Plots", ""] + [f"![{p}]({p})" for p in plots] + [""]

@@ -33,7 +33,7 @@ CsvWriter::CsvWriter(std::vector<std::string> columns) : columns_(std::move(colu
 }
 
 std::string CsvWriter::format(double value) {
-  if (std::isnan(value)) return "nan";  // printf could give "-nan"
+  if (std::isnan(value)) return "";  // not defined (e.g. an unpaired point's gap): an empty cell
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", value);

@@ -1,7 +1,8 @@
 #pragma once
 // A small CSV table (steps.csv, contact.csv): a header, rows kept in memory, the whole file
 // rewritten atomically by write(). Numbers keep full double precision so that scripts can
-// compare results bit for bit; NaN is written as "nan" and infinities as "inf"/"-inf".
+// compare results bit for bit; NaN (a value not defined, e.g. an unpaired point's gap) is
+// written as an empty cell, infinities as "inf"/"-inf".
 #include <cstddef>
 #include <string>
 #include <type_traits>

@@ -59,6 +59,8 @@ check(f"pressure errors against the reference run (the patch test: uniform, {err
       len(errors) == 4 and max(errors) < 1e-6)
 check("unknowns built: multipliers, no friction unknowns at mu = 0",
       all(int(row["unknowns_contact"]) > 0 and int(row["unknowns_friction"]) == 0 for row in ok))
+check("force balance of the two-body runs (reactions only) to round-off",
+      all(float(row["force_balance"]) < 1e-8 for row in ok))
 md = open(os.path.join(out, "study.md")).read()
 check("study.md has the table, the Pareto front and a recommendation",
       "| ★ |" in md and "## Recommendation" in md and "Where methods break" in md)

@@ -53,6 +53,8 @@ def satisfies_equations(label, mu, s, rows):
     pmax = max([float(r["pressure"]) for r in rows] + [0.0])
     bad = []
     for r in rows:
+        if not r["gap"]:  # not paired (beyond the search distance): open
+            continue
         p, gap = float(r["pressure"]), float(r["gap"])
         t = (float(r["traction_x"]) ** 2 + float(r["traction_y"]) ** 2) ** 0.5
         if p < 0 or gap < -1e-9 * TOP or (gap > 1e-9 * TOP and p > 1e-9 * pmax) or \
