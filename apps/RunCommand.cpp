@@ -470,16 +470,23 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("mesh", typedSection(params.sublist("Mesh")))
         .set("formulation", contactFormulations())
         .set("discretization", contact ? JsonValue("node-to-segment") : JsonValue())
-        .set("algorithm", JsonValue::object()
-                              .set("method", sm.solverOptions.method)
-                              .set("geometry", loop(sm.solverOptions.geometryInNewton))
-                              .set("friction_threshold", loop(sm.solverOptions.thresholdsInNewton))
-                              .set("contact_statuses", loop(sm.solverOptions.statusesInNewton))
-                              .set("cycling_treatment", sm.solverOptions.cyclingTreatment)
-                              .set("regularization",
-                                   sm.solverOptions.slowDynamics.enabled ? "slow-dynamics" : "none")
-                              .set("parameters", toJson(params.sublist("Algorithm")))
-                              .set("newton", toJson(params.sublist("Newton"))))
+        .set("algorithm",
+             JsonValue::object()
+                 .set("method", sm.solverOptions.method)
+                 .set("geometry", loop(sm.solverOptions.geometryInNewton))
+                 // Assembled only with the geometry in Newton (and contact).
+                 .set("geometric_terms",
+                      !contact || !sm.solverOptions.geometryInNewton               ? "none"
+                      : sm.solverOptions.geometricTerms == GeometricTerms::full    ? "full"
+                      : sm.solverOptions.geometricTerms == GeometricTerms::pairing ? "pairing"
+                                                                                   : "none")
+                 .set("friction_threshold", loop(sm.solverOptions.thresholdsInNewton))
+                 .set("contact_statuses", loop(sm.solverOptions.statusesInNewton))
+                 .set("cycling_treatment", sm.solverOptions.cyclingTreatment)
+                 .set("regularization",
+                      sm.solverOptions.slowDynamics.enabled ? "slow-dynamics" : "none")
+                 .set("parameters", toJson(params.sublist("Algorithm")))
+                 .set("newton", toJson(params.sublist("Newton"))))
         .set("linear_solver", typedSection(params.sublist("Linear Solver")))
         .set("dofs", static_cast<long long>(problem->dofs().numGlobalDofs()))
         .set("unknowns",

@@ -188,6 +188,7 @@ def cost_metrics(summary):
         "unknowns_displacement": unknowns.get("displacement"),
         "unknowns_contact": unknowns.get("contact_multipliers"),
         "unknowns_friction": unknowns.get("friction_multipliers"),
+        "geometric_terms": (summary.get("algorithm") or {}).get("geometric_terms"),
     }
 
 

@@ -7,6 +7,7 @@ METRICS = ["status", "reason", "sets", "wall_s", "solver_total_s", "assembly_s",
            "linear_solve_s", "newton", "status_its", "threshold_its", "geometry_its",
            "linear_solves", "cycling_events", "steps", "cuts", "peak_memory_mb",
            "unknowns_displacement", "unknowns_contact", "unknowns_friction",
+           "geometric_terms",
            "pressure_error_l2", "pressure_error_max", "shear_error_l2", "shear_error_max",
            "max_penetration", "force_balance",
            "probe_error", "folder"]
