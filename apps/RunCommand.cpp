@@ -430,6 +430,18 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                .set("master", zone.obstacle ? "obstacle" : "surface"));
     return zones;
   };
+  // Per zone: node-to-segment, or mortar with its multiplier basis.
+  auto contactDiscretizations = [&] {
+    if (!contact) return JsonValue();
+    JsonValue zones = JsonValue::object();
+    for (const auto& zone : sm.contact)
+      zones.set(zone.name, zone.discretization == Discretization::nodeToSegment
+                               ? std::string("node-to-segment")
+                           : zone.multiplierBasis == MultiplierBasis::Dual
+                               ? std::string("mortar (dual)")
+                               : std::string("mortar (standard)"));
+    return zones;
+  };
   auto contactSummary = [&] {
     if (!contact) return JsonValue();
     const ContactResultants r = contact->resultants();
@@ -469,7 +481,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("dimension", problem->dim())
         .set("mesh", typedSection(params.sublist("Mesh")))
         .set("formulation", contactFormulations())
-        .set("discretization", contact ? JsonValue("node-to-segment") : JsonValue())
+        .set("discretization", contactDiscretizations())
         .set("algorithm",
              JsonValue::object()
                  .set("method", sm.solverOptions.method)

@@ -101,6 +101,16 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   zone.initialContact = initial == "all"    ? InitialContact::all
                         : initial == "none" ? InitialContact::none
                                             : InitialContact::interpenetrated;
+  zone.discretization = z.get<std::string>("Discretization") == "mortar"
+                            ? Discretization::mortar
+                            : Discretization::nodeToSegment;
+  zone.multiplierBasis = z.get<std::string>("Multiplier Basis") == "standard"
+                             ? MultiplierBasis::Standard
+                             : MultiplierBasis::Dual;
+  if (zone.discretization == Discretization::mortar && obstacle)
+    throw InputError(path +
+                     "/Discretization: mortar integrates over a master surface; with an "
+                     "Obstacle use 'node-to-segment'");
   if (obstacle) {
     const ParameterList& o = z.sublist("Obstacle");
     RigidObstacleSpec spec;

@@ -155,6 +155,17 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "(formulations with multipliers only): a starting point, which changes the answer only "
         "where it is not unique (doc/algorithms.md)",
         choices({"interpenetrated", "all", "none"}));
+  p.set("Discretization", "node-to-segment",
+        "Where the contact conditions hold: 'node-to-segment' (at each slave node against the "
+        "closest master point) or 'mortar' (weighted over the slave surface by the mortar "
+        "integrals D and M; two bodies only; its geometry is a fixed point, doc/formulations)",
+        choices({"node-to-segment", "mortar"}));
+  p.set("Multiplier Basis", "standard",
+        "mortar: the multiplier basis, 'standard' (the slave's shape functions) or 'dual' "
+        "(biorthogonal to them; line2, line3, tri3, quad4, quad9 facets; not modified on the "
+        "facets the master covers only in part, so its geometric fixed point may not settle "
+        "where the contact zone ends inside a quadratic facet)",
+        choices({"standard", "dual"}));
   p.set("Formulation", typedSection(formulationRegistry(), userSublist(user, "Formulation"),
                                     "augmented-lagrangian", where, path + "/Formulation"));
   return p;

@@ -31,10 +31,14 @@ double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
 struct ContactProblem::Point {
   int zone = 0;
   std::int64_t node = -1;
-  double weight = 0;
-  GO multiplier = -1;  // first multiplier GID (-1: none)
+  double weight = 0;           // of the contact conditions (mortar: sum_k D_jk, current)
+  double referenceWeight = 0;  // tributary area in the reference configuration
+  GO multiplier = -1;          // first multiplier GID (-1: none)
   int nt = 0;
-  // Frozen geometry.
+  // Frozen geometry. The gap is n . (self x_s - sum_a N_a x_a): node-to-segment has self = 1 and
+  // `master` the master facet's nodes; mortar has self = D_jj / w_j and `master` the other slave
+  // nodes (N = -D_jk / w_j) then the master nodes (N = M_jl / w_j).
+  double self = 1.0;
   bool paired = false;
   int facet = -1;
   std::vector<std::int64_t> master;  // master facet nodes
@@ -409,7 +413,69 @@ void ContactProblem::computeWeights() {
     }
   }
   for (Point& pt : points_)
-    pt.weight = weights[pt.zone][pt.node];
+    pt.weight = pt.referenceWeight = weights[pt.zone][pt.node];
+}
+
+std::map<std::int64_t, ContactProblem::MortarRow> ContactProblem::mortarRows(
+    std::size_t z, const ContactSearch& search) const {
+  const Mesh& mesh = *solid_.model().mesh;
+  std::vector<Facet> facets;
+  std::vector<std::int64_t> facetNodes;
+  for (const CellGroup* g : mesh.findBoundaries(zones_[z].slave)) {
+    const int n = g->nodesPerCell();
+    for (std::size_t c = 0; c < g->size(); ++c) {
+      Facet f;
+      f.type = g->type;
+      for (int a = 0; a < n; ++a) {
+        const std::int64_t node = g->nodes[c * n + a];
+        facetNodes.push_back(node);
+        const auto x = surfacePosition(node);
+        f.coords.insert(f.coords.end(), x.begin(), x.end());
+      }
+      facets.push_back(std::move(f));
+    }
+  }
+  const auto normals = nodalNormals(facets, facetNodes);
+  const int nm = info(masterFacetType_[z]).nodes;
+  std::map<std::int64_t, MortarRow> rows;
+  std::vector<std::size_t> candidates;
+  std::size_t offset = 0;
+  for (const Facet& f : facets) {
+    const std::size_t n = f.coords.size() / 3;
+    double box[6] = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+    for (std::size_t a = 0; a < n; ++a)
+      for (int c = 0; c < 3; ++c) {
+        box[c] = std::min(box[c], f.coords[3 * a + c] - searchDistance_[z]);
+        box[3 + c] = std::max(box[3 + c], f.coords[3 * a + c] + searchDistance_[z]);
+      }
+    search.tree().intersecting(box, candidates);
+    std::sort(candidates.begin(), candidates.end());  // the same sums on every rank
+    std::vector<const Facet*> masters;
+    for (std::size_t c : candidates)
+      masters.push_back(&search.facets()[c]);
+    std::vector<std::array<double, 3>> slaveNormals(n);
+    for (std::size_t a = 0; a < n; ++a)
+      slaveNormals[a] = normals.at(facetNodes[offset + a]);
+    MortarIntegrals in;
+    try {
+      in = integrateMortar(f, slaveNormals, masters, zones_[z].multiplierBasis);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("Contact/" + zones_[z].name + ": mortar: " + e.what());
+    }
+    const double tiny = 1e-14 * in.area;
+    for (std::size_t j = 0; j < n; ++j) {
+      MortarRow& row = rows[facetNodes[offset + j]];
+      row.normal = normals.at(facetNodes[offset + j]);
+      for (std::size_t k = 0; k < n; ++k)
+        if (std::abs(in.D[j * n + k]) > tiny) row.slave[facetNodes[offset + k]] += in.D[j * n + k];
+      for (const MortarMaster& m : in.masters)
+        for (int l = 0; l < nm; ++l)
+          if (std::abs(m.M[j * nm + l]) > tiny)
+            row.master[masterFacetNodes_[z][candidates[m.facet] * nm + l]] += m.M[j * nm + l];
+    }
+    offset += n;
+  }
+  return rows;
 }
 
 Teuchos::RCP<Vector> ContactProblem::createVector() const {
@@ -477,6 +543,8 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
       search = std::make_unique<ContactSearch>(std::move(facets), searchDistance_[z]);
       nodalNormals = contactlab::nodalNormals(search->facets(), masterFacetNodes_[z]);
     }
+    const bool mortar = zones_[z].discretization == Discretization::mortar;
+    const auto rows = mortar ? mortarRows(z, *search) : std::map<std::int64_t, MortarRow>{};
     for (std::size_t i = 0; i < points_.size(); ++i) {
       Point& pt = points_[i];
       if (pt.zone != static_cast<int>(z)) continue;
@@ -487,6 +555,49 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
         gap = placeOnObstacle(pt, xs, t);
         pt.paired = gap < searchDistance_[z];
         signature_[i] = pt.paired ? -2 : -1;
+      } else if (mortar) {
+        const auto it = rows.find(pt.node);
+        double w = 0;
+        if (it != rows.end())
+          for (const auto& entry : it->second.slave)
+            w += entry.second;
+        // Covered by the master surface's projection (a sliver of coverage is none).
+        pt.paired = w > 1e-8 * pt.referenceWeight;
+        pt.self = 1.0;
+        pt.weight = pt.referenceWeight;
+        if (pt.paired) {
+          const MortarRow& row = it->second;
+          const auto own = row.slave.find(pt.node);
+          pt.self = own == row.slave.end() ? 0.0 : own->second / w;
+          pt.master.clear();
+          pt.N.clear();
+          for (const auto& [k, d] : row.slave)
+            if (k != pt.node) {
+              pt.master.push_back(k);
+              pt.N.push_back(-d / w);
+            }
+          for (const auto& [l, m] : row.master) {
+            pt.master.push_back(l);
+            pt.N.push_back(m / w);
+          }
+          pt.weight = w;
+          std::uint32_t hash = 2166136261u;  // FNV-1a of the coupled nodes: the graph's signature
+          for (std::int64_t node : pt.master)
+            hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
+          pt.facet = static_cast<int>(hash & 0x3fffffffu);
+          for (int c = 0; c < 3; ++c)
+            pt.normal[c] = -row.normal[c];  // from the master towards the slave
+          std::array<double, 3> rel{};
+          for (int c = 0; c < 3; ++c)
+            rel[c] = pt.self * xs[c];
+          for (std::size_t a = 0; a < pt.master.size(); ++a) {
+            const auto x = surfacePosition(pt.master[a]);
+            for (int c = 0; c < 3; ++c)
+              rel[c] -= pt.N[a] * x[c];
+          }
+          gap = dot(pt.normal, rel);
+        }
+        signature_[i] = pt.paired ? pt.facet : -1;
       } else {
         Pairing pairing = search->findClosest(xs.data());
         // Hysteresis: at a vertex shared by two facets (equal distances) keep the previous
@@ -551,6 +662,10 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
           before = old.obstaclePoint;
           after = pt.obstaclePoint;
         } else {
+          for (int c = 0; c < 3; ++c) {  // mortar: the slave's own coefficient moves too
+            before[c] = (1.0 - old.self) * xs[c];
+            after[c] = (1.0 - pt.self) * xs[c];
+          }
           for (std::size_t a = 0; a < old.master.size(); ++a) {
             const auto x = surfacePosition(old.master[a]);
             for (int c = 0; c < 3; ++c)
@@ -597,7 +712,9 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
     }
     pt.geometryDofs.clear();
     pt.geometrySurfacePos.clear();
-    if (geometricTerms_ != GeometricTerms::full || !pt.paired || obstacles_[pt.zone]) continue;
+    if (geometricTerms_ != GeometricTerms::full || !pt.paired || obstacles_[pt.zone] ||
+        zones_[pt.zone].discretization == Discretization::mortar)
+      continue;
     const int nn = info(masterFacetType_[pt.zone]).nodes;
     std::vector<std::int64_t> around;
     for (int f : facetsAround(pt))
@@ -705,8 +822,8 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
     const auto us = surfaceDisplacement(pt.node, false);
     const auto usc = surfaceDisplacement(pt.node, true);
     for (int c = 0; c < 3; ++c) {
-      rel[c] = xs[c];
-      slip[c] = us[c] - usc[c];
+      rel[c] = pt.self * xs[c];
+      slip[c] = pt.self * (us[c] - usc[c]);
     }
     if (obstacles_[pt.zone]) {
       const auto now = obstacles_[pt.zone]->translation(t);
@@ -729,7 +846,7 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
     for (int i = 0; i < nk; ++i) {
       const auto& d = *dirs[i];
       for (int c = 0; c < dim_; ++c) {
-        B[i * nu + c] = d[c];
+        B[i * nu + c] = pt.self * d[c];
         for (std::size_t a = 0; a < pt.master.size(); ++a)
           B[i * nu + (1 + a) * dim_ + c] = -pt.N[a] * d[c];
       }
@@ -972,7 +1089,8 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
     if (pt.result.status != before) ++statusChanges_;
     const int nd = static_cast<int>(pt.dofs.size());
     // Columns: the point's dofs, then (geometric linearization) the dofs around its facet.
-    const bool geometric = withTangent && geometricTerms_ != GeometricTerms::none && pt.paired;
+    const bool geometric = withTangent && geometricTerms_ != GeometricTerms::none && pt.paired &&
+                           zones_[pt.zone].discretization == Discretization::nodeToSegment;
     if (geometric) geometricColumns(pt, t, ke);
     const int ng = geometric ? static_cast<int>(pt.geometryDofs.size()) : 0, nc = nd + ng;
     if (geometric) {

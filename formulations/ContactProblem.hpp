@@ -21,6 +21,13 @@
 // (`full`, then with the columns of the master nodes around its facet, on which the smoothed
 // normal depends), recomputed (geometricColumns).
 //
+// Mortar (a zone's Discretization): each slave node j is a point with weight w_j = sum_k D_jk
+// and gap n_j . (sum_k D_jk x_k - sum_l M_jl x_l) / w_j, n_j the slave's nodal normal (turned
+// towards the slave), D and M integrated over the slave facets around j (integrateMortar) at
+// each updateGeometry; the slip likewise with the increments. The laws are unchanged. Its
+// geometry is a fixed point: no geometric terms (the segmentation's derivatives are not
+// linearized), whatever Algorithm/Geometric Terms says.
+//
 // Parallel: contact surfaces are small. At every evaluation each rank imports the surface
 // displacements and all multipliers (a replicated vector), evaluates every contact point (the
 // same numbers on every rank, so pairings and statuses agree everywhere) and adds the rows it
@@ -118,6 +125,15 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
 
  private:
   struct Point;
+  // A mortar contact point's row: sum_k D_jk x_k - sum_l M_jl x_l over the slave facets around
+  // slave node j, and the slave's nodal normal there.
+  struct MortarRow {
+    std::map<std::int64_t, double> slave, master;
+    std::array<double, 3> normal{};
+  };
+  // The mortar rows of zone z's slave nodes at the current positions (the slave facets against
+  // the master facets `search` finds within the search distance).
+  std::map<std::int64_t, MortarRow> mortarRows(std::size_t z, const ContactSearch& search) const;
   void buildSurfaceMaps();
   void computeWeights();
   void buildGraph();

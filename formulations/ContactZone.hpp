@@ -1,6 +1,7 @@
 #pragma once
 // One contact zone of a scene: a slave surface against a master surface or a rigid obstacle,
 // with a friction coefficient and a formulation (the contact law at each slave point).
+#include "core/contact/MortarIntegration.hpp"
 #include "core/contact/RigidObstacle.hpp"
 #include "formulations/ContactLaw.hpp"
 
@@ -17,6 +18,11 @@ namespace contactlab {
 // the first iterate has these statuses (formulations with multipliers only).
 enum class InitialContact { interpenetrated, all, none };
 
+// Where the contact conditions are collocated: at the slave nodes against the closest master
+// point (node-to-segment), or weighted over the slave surface with the mortar matrices D and M
+// (a point per slave node, its gap n_j . (sum_k D_jk x_k - sum_l M_jl x_l) / sum_k D_jk).
+enum class Discretization { nodeToSegment, mortar };
+
 struct ContactZone {
   std::string name;
   std::string slave;   // boundary physical group (its nodes are the contact points)
@@ -27,7 +33,9 @@ struct ContactZone {
   // (twice the largest slave facet size).
   double searchDistance = 0.0;
   InitialContact initialContact = InitialContact::interpenetrated;
-  std::string formulation;  // registry name, for reports
+  Discretization discretization = Discretization::nodeToSegment;
+  MultiplierBasis multiplierBasis = MultiplierBasis::Standard;  // mortar only
+  std::string formulation;                                      // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
 };
 

@@ -313,7 +313,10 @@ TEST_P(ContactProblemTest, FrictionHoldsBelowTheThresholdAndSlidesAbove) {
 // sheared solution. Frozen geometry: the pairing is fixed at that state. Geometry in Newton:
 // every residual re-pairs (as the Newton of the generalized-Newton preset does), and the
 // tangent with the geometric terms must match it, where the frozen-geometry one must not.
-void checkTangent(const std::string& formulation, bool geometryInNewton) {
+// Mortar: the frozen geometry only (its geometry is a fixed point), with the slave's
+// neighbours and every overlapping master node in each point's row.
+void checkTangent(const std::string& formulation, bool geometryInNewton,
+                  Discretization discretization = Discretization::nodeToSegment) {
   for (int dim : {2, 3}) {
     std::shared_ptr<Mesh> mesh;
     if (dim == 2) {
@@ -346,6 +349,7 @@ void checkTangent(const std::string& formulation, bool geometryInNewton) {
     zone.master = "lower-top";
     zone.friction = 0.2;
     zone.law = law(formulation);
+    zone.discretization = discretization;
     ContactRun run(model, {zone}, 2);
     ContactProblem& contact = run.contact;
     const Problem& solid = run.solid;
@@ -441,6 +445,10 @@ void checkTangent(const std::string& formulation, bool geometryInNewton) {
 
 TEST_P(ContactProblemTest, AssembledTangentMatchesFiniteDifferences) {
   checkTangent(GetParam(), false);
+}
+
+TEST_P(ContactProblemTest, MortarTangentMatchesFiniteDifferences) {
+  checkTangent(GetParam(), false, Discretization::mortar);
 }
 
 TEST_P(ContactProblemTest, GeometricTangentMatchesFiniteDifferencesOfTheRepairedResidual) {
