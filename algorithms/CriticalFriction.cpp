@@ -15,6 +15,18 @@ void checkSize(int n, const std::vector<double>& M, const char* name) {
     throw std::invalid_argument(std::string(name) + " must be n x n with n >= 1");
 }
 
+// A finite real root of the determinant: counted, then structural (|mu| <= zeroTolerance), the
+// round-off of a root at infinity (|mu| >= 1 / zeroTolerance) or a candidate critical value.
+void addRealRoot(CriticalFriction& out, double mu, double zeroTolerance) {
+  ++out.realRoots;
+  if (std::fabs(mu) <= zeroTolerance)
+    ++out.zero;
+  else if (zeroTolerance > 0 && std::fabs(mu) >= 1 / zeroTolerance)
+    ++out.infinite;
+  else if (mu > 0 && mu < out.mu)
+    out.mu = mu;
+}
+
 }  // namespace
 
 CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<double> B,
@@ -47,18 +59,7 @@ CriticalFriction criticalFriction(int n, std::vector<double> A, std::vector<doub
       continue;
     }
     if (std::fabs(alphaI[k]) > 1e-12 * std::max(scale, std::fabs(alphaR[k]))) continue;
-    ++out.realRoots;
-    const double mu = alphaR[k] / beta[k];
-    if (std::fabs(mu) <= zeroTolerance) {
-      ++out.zero;
-      continue;
-    }
-    if (zeroTolerance > 0 &&
-        std::fabs(mu) >= 1 / zeroTolerance) {  // round-off of a root at infinity
-      ++out.infinite;
-      continue;
-    }
-    if (mu > 0 && mu < out.mu) out.mu = mu;
+    addRealRoot(out, alphaR[k] / beta[k], zeroTolerance);
   }
   return out;
 }
@@ -87,17 +88,7 @@ CriticalFriction criticalFactorOfUpdate(int k, std::vector<double> M, double zer
       continue;
     }
     if (std::fabs(lambdaI[i]) > 1e-12 * std::max(scale, std::fabs(lambdaR[i]))) continue;
-    ++out.realRoots;
-    const double s = 1.0 - 1.0 / lambdaR[i];
-    if (std::fabs(s) <= zeroTolerance) {
-      ++out.zero;
-      continue;
-    }
-    if (zeroTolerance > 0 && std::fabs(s) >= 1 / zeroTolerance) {
-      ++out.infinite;
-      continue;
-    }
-    if (s > 0 && s < out.mu) out.mu = s;
+    addRealRoot(out, 1.0 - 1.0 / lambdaR[i], zeroTolerance);
   }
   return out;
 }

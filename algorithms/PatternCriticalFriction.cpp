@@ -15,9 +15,9 @@
 namespace contactlab {
 namespace {
 
-// J(1) and B = J(2) - J(1) with `statuses` held (the same graph: B is formed value by value).
+// J(1) and J(2) with `statuses` held (the same graph: their differences are taken value by value).
 struct PatternMatrices {
-  Teuchos::RCP<Matrix> J1, B;
+  Teuchos::RCP<Matrix> J1, J2;
 };
 
 PatternMatrices assemblePattern(NonlinearSystem& system, ContactControls& controls, const Vector& x,
@@ -31,19 +31,9 @@ PatternMatrices assemblePattern(NonlinearSystem& system, ContactControls& contro
   };
   PatternMatrices p;
   p.J1 = assembleAt(1.0);
-  p.B = assembleAt(2.0);
+  p.J2 = assembleAt(2.0);
   controls.setFrictionScale(1.0);
   return p;
-}
-
-// A := A - B value by value (A and B share their graph).
-void subtractValues(Matrix& A, const Matrix& B) {
-  A.resumeFill();
-  const auto a = A.getLocalMatrixHost().values;
-  const auto b = B.getLocalMatrixHost().values;
-  for (std::size_t e = 0; e < a.extent(0); ++e)
-    a(e) -= b(e);
-  A.fillComplete(A.getDomainMap(), A.getRangeMap());
 }
 
 double largestEntry(const Matrix& A) {
@@ -55,21 +45,18 @@ double largestEntry(const Matrix& A) {
   return global;
 }
 
-// Global indices of the rows of A with an entry above `threshold`, ascending, on every rank.
-std::vector<GO> rowsAbove(const Matrix& A, double threshold) {
-  const auto map = A.getRowMap();
-  const GO n = static_cast<GO>(map->getGlobalNumElements());
+// The union over the ranks of each rank's global indices `mine`, ascending, on every rank.
+std::vector<GO> onEveryRank(const std::vector<GO>& mine, const Map& map) {
+  const GO n = static_cast<GO>(map.getGlobalNumElements());
   std::vector<int> flag(static_cast<std::size_t>(n), 0), flagGlobal(flag.size(), 0);
-  const auto local = A.getLocalMatrixHost();
-  for (LO r = 0; r < static_cast<LO>(map->getNodeNumElements()); ++r)
-    for (auto e = local.graph.row_map(r); e < local.graph.row_map(r + 1); ++e)
-      if (std::abs(local.values(e)) > threshold) flag[map->getGlobalElement(r)] = 1;
-  Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MAX, static_cast<int>(n), flag.data(),
+  for (GO g : mine)
+    flag[static_cast<std::size_t>(g)] = 1;
+  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, static_cast<int>(n), flag.data(),
                      flagGlobal.data());
-  std::vector<GO> rows;
+  std::vector<GO> all;
   for (GO g = 0; g < n; ++g)
-    if (flagGlobal[g]) rows.push_back(g);
-  return rows;
+    if (flagGlobal[g]) all.push_back(g);
+  return all;
 }
 
 // The identity's columns at `rows`.
@@ -98,44 +85,41 @@ std::vector<double> gatherRows(const MultiVector& Y, const std::vector<GO>& rows
   return global;
 }
 
-// The locally owned rows of A that have entries above `threshold`, with those entries (global
-// columns): B and J'(1) - J(1) have a few such rows, and products with them should cost those.
+// The locally owned rows of A - B (same graph, value by value) that have entries above
+// `threshold`, with those entries (global columns): B = J(2) - J(1) and J'(1) - J(1) have a few
+// such rows, and products with them should cost those. `all`: their rows on every rank.
 struct SparseRows {
-  std::vector<GO> rows;
+  std::vector<GO> rows, all;
   std::vector<std::vector<std::pair<GO, double>>> entries;
 };
 
-SparseRows sparseRows(const Matrix& A, double threshold) {
+SparseRows sparseDifference(const Matrix& A, const Matrix& B, double threshold) {
   const auto rowMap = A.getRowMap();
   const auto colMap = A.getColMap();
-  const auto local = A.getLocalMatrixHost();
+  const auto a = A.getLocalMatrixHost();
+  const auto b = B.getLocalMatrixHost().values;
   SparseRows s;
   for (LO r = 0; r < static_cast<LO>(rowMap->getNodeNumElements()); ++r) {
     std::vector<std::pair<GO, double>> row;
-    for (auto e = local.graph.row_map(r); e < local.graph.row_map(r + 1); ++e)
-      if (std::abs(local.values(e)) > threshold)
-        row.emplace_back(colMap->getGlobalElement(local.graph.entries(e)), local.values(e));
+    for (auto e = a.graph.row_map(r); e < a.graph.row_map(r + 1); ++e)
+      if (std::abs(a.values(e) - b(e)) > threshold)
+        row.emplace_back(colMap->getGlobalElement(a.graph.entries(e)), a.values(e) - b(e));
     if (row.empty()) continue;
     s.rows.push_back(rowMap->getGlobalElement(r));
     s.entries.push_back(std::move(row));
   }
+  s.all = onEveryRank(s.rows, *rowMap);
   return s;
 }
 
 // The columns that `a` and `b` touch on any rank, ascending, on every rank.
 std::vector<GO> columnsOf(const SparseRows& a, const SparseRows& b, const Map& map) {
-  const GO n = static_cast<GO>(map.getGlobalNumElements());
-  std::vector<int> flag(static_cast<std::size_t>(n), 0), flagGlobal(flag.size(), 0);
+  std::vector<GO> mine;
   for (const SparseRows* s : {&a, &b})
     for (const auto& row : s->entries)
-      for (const auto& [column, value] : row)
-        flag[static_cast<std::size_t>(column)] = 1;
-  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, static_cast<int>(n), flag.data(),
-                     flagGlobal.data());
-  std::vector<GO> columns;
-  for (GO g = 0; g < n; ++g)
-    if (flagGlobal[g]) columns.push_back(g);
-  return columns;
+      for (const auto& entry : row)
+        mine.push_back(entry.first);
+  return onEveryRank(mine, map);
 }
 
 // (A V) at `rows` (A's nonzero rows among them), rows.size() x c, column major, on every rank;
@@ -186,43 +170,39 @@ struct Restore {
   }
 };
 
-// A pattern factorized with the solver: J(1), B's nonzero rows R (they depend on mu) and
+// A pattern factorized with the solver: J(1), B's nonzero rows R = B.all (they depend on mu) and
 // X = J(1)^-1 E_R, so that patterns differing from it in a few rows cost a few more solves.
 struct FactorizedPattern {
   Teuchos::RCP<Matrix> J1;
   SparseRows B;
-  std::vector<GO> frictionRows;  // R
   Teuchos::RCP<MultiVector> X;
   std::optional<Determinant> determinant;
   double threshold = 0;  // entries below it are zero (relative to J(1)'s largest)
 };
 
-FactorizedPattern factorize(PatternMatrices matrices, LinearSolver& solver) {
+FactorizedPattern factorize(const PatternMatrices& matrices, LinearSolver& solver) {
   FactorizedPattern f;
   f.J1 = matrices.J1;
-  subtractValues(*matrices.B, *f.J1);
   f.threshold = 1e-13 * largestEntry(*f.J1);
-  f.frictionRows = rowsAbove(*matrices.B, f.threshold);
-  f.B = sparseRows(*matrices.B, f.threshold);
+  f.B = sparseDifference(*matrices.J2, *f.J1, f.threshold);
   solver.setMatrix(f.J1, true);
   f.determinant = solver.determinant();
   const auto map = f.J1->getRowMap();
-  f.X = Teuchos::rcp(new MultiVector(map, std::max<std::size_t>(f.frictionRows.size(), 1)));
-  if (!f.frictionRows.empty()) solver.solve(unitColumns(map, f.frictionRows), *f.X);
+  f.X = Teuchos::rcp(new MultiVector(map, std::max<std::size_t>(f.B.all.size(), 1)));
+  if (!f.B.all.empty()) solver.solve(unitColumns(map, f.B.all), *f.X);
   return f;
 }
 
 PatternCriticalFriction criticalOf(const FactorizedPattern& f) {
   PatternCriticalFriction out;
-  const std::size_t k = f.frictionRows.size();
+  const std::size_t k = f.B.all.size();
   out.frictionRows = static_cast<int>(k);
   out.determinant = f.determinant;
   const auto map = f.J1->getRowMap();
   const std::vector<GO> S = columnsOf(f.B, SparseRows{}, *map);
   const CriticalFriction c = reducedCriticalFriction(
-      static_cast<int>(k),
-      k ? product(f.B, f.frictionRows, S, gatherRows(*f.X, S), k, *map->getComm())
-        : std::vector<double>{});
+      static_cast<int>(k), k ? product(f.B, f.B.all, S, gatherRows(*f.X, S), k, *map->getComm())
+                             : std::vector<double>{});
   out.scale = c.mu;
   out.realRoots = c.realRoots;
   return out;
@@ -236,17 +216,15 @@ PatternCriticalFriction criticalOf(const FactorizedPattern& f) {
 // needed: q solves and dense algebra of size k in place of a factorization and k solves.
 // Empty when Q has more than `maxRows` rows (a factorization is then the cheaper way).
 std::optional<PatternCriticalFriction> updatedCritical(const FactorizedPattern& base,
-                                                       PatternMatrices p, LinearSolver& solver,
-                                                       std::size_t maxRows) {
+                                                       const PatternMatrices& p,
+                                                       LinearSolver& solver, std::size_t maxRows) {
   const auto map = base.J1->getRowMap();
   const Comm& comm = *map->getComm();
-  subtractValues(*p.B, *p.J1);
-  subtractValues(*p.J1, *base.J1);  // D = J'(1) - J(1)
-  const std::vector<GO> Q = rowsAbove(*p.J1, base.threshold);
+  const SparseRows D = sparseDifference(*p.J1, *base.J1, base.threshold);  // J'(1) - J(1)
+  const std::vector<GO>& Q = D.all;
   if (Q.size() > maxRows) return std::nullopt;
-  const std::vector<GO> R = rowsAbove(*p.B, base.threshold);
-  const SparseRows D = sparseRows(*p.J1, base.threshold);
-  const SparseRows B = sparseRows(*p.B, base.threshold);
+  const SparseRows B = sparseDifference(*p.J2, *p.J1, base.threshold);
+  const std::vector<GO>& R = B.all;
   const std::vector<GO> S = columnsOf(D, B, *map);
   const std::size_t q = Q.size(), k = R.size(), ns = S.size();
 
@@ -287,7 +265,7 @@ std::optional<PatternCriticalFriction> updatedCritical(const FactorizedPattern& 
   std::vector<double> WS(ns * k);
   for (std::size_t j = 0; j < k; ++j) {
     const double* source = nullptr;
-    if (const auto inX = position(base.frictionRows, R[j]))
+    if (const auto inX = position(base.B.all, R[j]))
       source = &XS[*inX * ns];
     else if (const auto inZ = position(Q, R[j]))
       source = &ZS[*inZ * ns];
@@ -400,9 +378,9 @@ UniquenessCheck checkUniqueness(NonlinearSystem& system, ContactControls& contro
   std::optional<FactorizedPattern> converged;
   bool convergedInSolver = false;
   auto examine = [&](const std::vector<int>& pattern) -> PatternCriticalFriction {
-    PatternMatrices m = assemblePattern(system, controls, x, t, pattern);
+    const PatternMatrices m = assemblePattern(system, controls, x, t, pattern);
     if (!converged) {
-      converged = factorize(std::move(m), solver);
+      converged = factorize(m, solver);
       convergedInSolver = true;
       return criticalOf(*converged);
     }
@@ -411,16 +389,14 @@ UniquenessCheck checkUniqueness(NonlinearSystem& system, ContactControls& contro
         solver.setMatrix(converged->J1, false);
         convergedInSolver = true;
       }
-      PatternMatrices copy{Teuchos::rcp(new Matrix(*m.J1, Teuchos::Copy)),
-                           Teuchos::rcp(new Matrix(*m.B, Teuchos::Copy))};
-      if (auto c = updatedCritical(*converged, std::move(copy), solver,
-                                   static_cast<std::size_t>(maxUpdateRows))) {
+      if (auto c =
+              updatedCritical(*converged, m, solver, static_cast<std::size_t>(maxUpdateRows))) {
         ++out.updatedPatterns;
         return *c;
       }
     }
     convergedInSolver = false;
-    return criticalOf(factorize(std::move(m), solver));
+    return criticalOf(factorize(m, solver));
   };
 
   out.localScale = std::numeric_limits<double>::infinity();

@@ -518,6 +518,19 @@ std::array<double, 3> ContactProblem::surfaceDisplacement(std::int64_t node, boo
   return u;
 }
 
+std::array<double, 3> ContactProblem::masterPosition(const Point& pt,
+                                                     const std::array<double, 3>& xs) const {
+  std::array<double, 3> xm{};
+  for (int c = 0; c < 3; ++c)
+    xm[c] = (1.0 - pt.self) * xs[c];
+  for (std::size_t a = 0; a < pt.master.size(); ++a) {
+    const auto x = surfacePosition(pt.master[a]);
+    for (int c = 0; c < 3; ++c)
+      xm[c] += pt.N[a] * x[c];
+  }
+  return xm;
+}
+
 std::array<double, 3> ContactProblem::surfacePosition(std::int64_t node) const {
   const Mesh& mesh = *solid_.model().mesh;
   auto u = surfaceDisplacement(node, false);
@@ -587,15 +600,8 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
           pt.facet = static_cast<int>(hash & 0x3fffffffu);
           for (int c = 0; c < 3; ++c)
             pt.normal[c] = -row.normal[c];  // from the master towards the slave
-          std::array<double, 3> rel{};
-          for (int c = 0; c < 3; ++c)
-            rel[c] = pt.self * xs[c];
-          for (std::size_t a = 0; a < pt.master.size(); ++a) {
-            const auto x = surfacePosition(pt.master[a]);
-            for (int c = 0; c < 3; ++c)
-              rel[c] -= pt.N[a] * x[c];
-          }
-          gap = dot(pt.normal, rel);
+          const auto xm = masterPosition(pt, xs);
+          gap = dot(pt.normal, {xs[0] - xm[0], xs[1] - xm[1], xs[2] - xm[2]});
         }
         signature_[i] = pt.paired ? pt.facet : -1;
       } else {
@@ -662,20 +668,8 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
           before = old.obstaclePoint;
           after = pt.obstaclePoint;
         } else {
-          for (int c = 0; c < 3; ++c) {  // mortar: the slave's own coefficient moves too
-            before[c] = (1.0 - old.self) * xs[c];
-            after[c] = (1.0 - pt.self) * xs[c];
-          }
-          for (std::size_t a = 0; a < old.master.size(); ++a) {
-            const auto x = surfacePosition(old.master[a]);
-            for (int c = 0; c < 3; ++c)
-              before[c] += old.N[a] * x[c];
-          }
-          for (std::size_t a = 0; a < pt.master.size(); ++a) {
-            const auto x = surfacePosition(pt.master[a]);
-            for (int c = 0; c < 3; ++c)
-              after[c] += pt.N[a] * x[c];
-          }
+          before = masterPosition(old, xs);
+          after = masterPosition(pt, xs);
         }
         for (int c = 0; c < 3; ++c)
           change = std::max(change, std::abs(before[c] - after[c]) / std::max(size, 1e-300));

@@ -157,6 +157,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   std::vector<int> facetsAround(const Point& pt) const;
   void geometricColumns(const Point& pt, double t, std::vector<double>& ke) const;
   std::array<double, 3> surfacePosition(std::int64_t node) const;
+  // The point the slave at xs is paired with: x_s - masterPosition = self x_s - sum_a N_a x_a
+  // (node-to-segment: the master point; mortar: the weighted master side).
+  std::array<double, 3> masterPosition(const Point& pt, const std::array<double, 3>& xs) const;
   std::array<double, 3> surfaceDisplacement(std::int64_t node, bool converged) const;
 
   Problem& solid_;

@@ -54,6 +54,7 @@ def run_case(exe, scene, folder, sets, timeout, retry_failed):
             code = None
     record = {"wall_s": time.time() - start, "returncode": code}
     summary = metrics.load_summary(folder)
+    non_finite = metrics.non_finite_outputs(folder)
     if code is None:
         record.update(status="timeout", reason=f"timeout ({timeout:g} s)")
     elif code < 0:
@@ -65,9 +66,8 @@ def run_case(exe, scene, folder, sets, timeout, retry_failed):
             record.update(status="invalid", reason=errors[-1][len("contactlab: error:"):].strip())
         else:
             record.update(status="crash", reason=f"no summary.json (exit code {code})")
-    elif metrics.non_finite_outputs(folder):
-        record.update(status="nan-in-output",
-                      reason="NaN or infinity in " + ", ".join(metrics.non_finite_outputs(folder)))
+    elif non_finite:
+        record.update(status="nan-in-output", reason="NaN or infinity in " + ", ".join(non_finite))
     elif summary.get("converged"):
         record.update(status="converged", reason="")
     else:

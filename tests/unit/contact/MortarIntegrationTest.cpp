@@ -77,6 +77,14 @@ Map unitSlave(ElementType t) {
   return [](double u, double v) { return place({0.5 + 0.5 * u, 0.5 + 0.5 * v, 0.0}); };
 }
 
+// A skewed segment or parallelogram (triangle): affine, so every integrand is a polynomial.
+Map skewedSlave(ElementType t) {
+  return [t](double u, double v) {
+    if (isLine(t)) return Vec3{0.2 + 0.65 * u, 0.3 - 0.1 * u, 0.0};
+    return place({0.5 * u + 0.2 * v, 0.1 * u + 0.7 * v, 0.0});
+  };
+}
+
 // Geometric unit normal at each node.
 std::vector<Vec3> nodeNormals(const Facet& f) {
   const ReferenceElement& ref = ReferenceElement::get(f.type);
@@ -216,11 +224,7 @@ TEST(MortarIntegration, IdenticalFacetsGiveTheConsistentMassMatrix) {
   for (ElementType t :
        {ElementType::Line2, ElementType::Line3, ElementType::Tri3, ElementType::Tri6,
         ElementType::Quad4, ElementType::Quad8, ElementType::Quad9}) {
-    // A skewed parallelogram (or triangle): affine, so every integrand is a polynomial.
-    const Map map = [t](double u, double v) {
-      if (isLine(t)) return Vec3{0.2 + 0.65 * u, 0.3 - 0.1 * u, 0.0};
-      return place({0.5 * u + 0.2 * v, 0.1 * u + 0.7 * v, 0.0});
-    };
+    const Map map = skewedSlave(t);
     const Facet slave = makeFacet(t, map);
     const std::vector<Facet> masters = {makeMaster(t, map)};
     const MortarIntegrals r =
@@ -308,10 +312,7 @@ TEST(MortarIntegration, LinearFieldsTransferExactlyBetweenCoplanarFacets) {
 TEST(MortarIntegration, DualBasisIsBiorthogonal) {
   for (ElementType t : {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
                         ElementType::Quad4, ElementType::Quad9}) {
-    const Map map = [t](double u, double v) {
-      if (isLine(t)) return Vec3{0.2 + 0.65 * u, 0.3 - 0.1 * u, 0.0};
-      return place({0.5 * u + 0.2 * v, 0.1 * u + 0.7 * v, 0.0});
-    };
+    const Map map = skewedSlave(t);
     const Facet slave = makeFacet(t, map);
     const std::vector<Facet> masters = {makeMaster(t, map)};
     const MortarIntegrals r =

@@ -356,6 +356,15 @@ void checkTangent(const std::string& formulation, bool geometryInNewton,
     auto& x = run.x;
     const RunReport& report = run.report;
     ASSERT_TRUE(report.converged) << dim << "D: " << report.message;
+    if (discretization == Discretization::mortar) {
+      // Mortar is in effect: each point's row also couples its slave neighbours (D_jk).
+      ContactZone plain = zone;
+      plain.discretization = Discretization::nodeToSegment;
+      ContactRun nodeToSegment(model, {plain}, 2);
+      EXPECT_GT(contact.tangent()->getGlobalNumEntries(),
+                nodeToSegment.contact.tangent()->getGlobalNumEntries())
+          << dim << "D";
+    }
     const ContactResultants r = contact.resultants();
     ASSERT_GT(r.contact, 0);
 
