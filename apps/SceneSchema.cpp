@@ -158,13 +158,13 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   p.set("Discretization", "node-to-segment",
         "Where the contact conditions hold: 'node-to-segment' (at each slave node against the "
         "closest master point) or 'mortar' (weighted over the slave surface by the mortar "
-        "integrals D and M; two bodies only; its geometry is a fixed point, doc/formulations)",
+        "integrals D and M; two bodies only; its geometry is a fixed point, doc/verification.md)",
         choices({"node-to-segment", "mortar"}));
-  p.set("Multiplier Basis", "standard",
-        "mortar: the multiplier basis, 'standard' (the slave's shape functions) or 'dual' "
-        "(biorthogonal to them; line2, line3, tri3, quad4, quad9 facets; not modified on the "
-        "facets the master covers only in part, so its geometric fixed point may not settle "
-        "where the contact zone ends inside a quadratic facet)",
+  p.set("Multiplier Basis", "dual",
+        "mortar: the multiplier basis, 'dual' (biorthogonal to the slave's shape functions, "
+        "built on the covered part of each facet: nodal pressures like lumped ones) or "
+        "'standard' (the shape functions themselves: its nodal values overshoot at the "
+        "contact edge and amplify the bulk's nodal-force noise, doc/verification.md)",
         choices({"standard", "dual"}));
   p.set("Formulation", typedSection(formulationRegistry(), userSublist(user, "Formulation"),
                                     "augmented-lagrangian", where, path + "/Formulation"));

@@ -49,4 +49,7 @@ python3 bench/algorithms.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-algori
 # Uniqueness diagnostic on the frictional 3D Hertz up to ~1 000 contact points (~3 minutes).
 python3 bench/critical_mu.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-critical-mu" \
   --doc doc/performance.md
+# Mortar against node-to-segment on the two-body 3D Hertz up to ~100 000 dofs (~25 minutes).
+python3 bench/mortar.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-mortar" \
+  --doc doc/performance.md
 echo "bench: doc/performance.md updated"

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -31,7 +32,7 @@ double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
 struct ContactProblem::Point {
   int zone = 0;
   std::int64_t node = -1;
-  double weight = 0;           // of the contact conditions (mortar: sum_k D_jk, current)
+  double weight = 0;           // of the contact conditions (mortar: sum_k D_jk, nominal)
   double referenceWeight = 0;  // tributary area in the reference configuration
   GO multiplier = -1;          // first multiplier GID (-1: none)
   int nt = 0;
@@ -109,6 +110,18 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     } catch (const std::invalid_argument& e) {
       throw InputError("Contact/" + zone.name + ": " + e.what());
     }
+    if (zone.discretization == Discretization::mortar)
+      for (const CellGroup* g : mesh.findBoundaries(zone.slave))
+        if (g->type == ElementType::Tri6 || g->type == ElementType::Quad8)
+          throw InputError(
+              "Contact/" + zone.name +
+              ": mortar needs slave facets whose shape functions "
+              "integrate to positive values; the corner ones of " +
+              std::string(g->type == ElementType::Tri6 ? "tri6 (tet10)" : "quad8 (hex20)") +
+              " facets integrate to " +
+              (g->type == ElementType::Tri6 ? "zero" : "a negative value") +
+              ", so their weighted gaps vanish. Use linear or quad9 (hex27) facets on the "
+              "slave, or 'node-to-segment'");
     const int nt = zone.friction > 0 ? dim_ - 1 : 0;
     const int multipliers = zone.law->hasMultipliers() ? 1 + nt : 0;
     for (std::int64_t node : mesh.boundaryNodes(zone.slave)) {
@@ -380,38 +393,50 @@ void ContactProblem::buildSurfaceMaps() {
 // Tributary areas by HRZ lumping: w_a = A * m_aa / sum_b m_bb with m_aa = int N_a^2 dA, which
 // is positive on every facet type (the row sum int N_a dA vanishes at tri6 corners and is
 // negative at quad8 corners) and gives the usual halves on linear segments.
-void ContactProblem::computeWeights() {
+std::map<std::int64_t, double> ContactProblem::tributaryAreas(
+    std::size_t z, const std::function<std::array<double, 3>(std::int64_t)>& position) const {
   const Mesh& mesh = *solid_.model().mesh;
-  std::vector<std::map<std::int64_t, double>> weights(zones_.size());
-  for (std::size_t z = 0; z < zones_.size(); ++z) {
-    for (const CellGroup* g : mesh.findBoundaries(zones_[z].slave)) {
-      const ReferenceElement& ref = ReferenceElement::get(g->type);
-      const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
-      const int n = g->nodesPerCell();
-      std::vector<double> x(3 * n), N(n), dN(n * ref.dim()), diag(n);
-      double normal[3];
-      for (std::size_t c = 0; c < g->size(); ++c) {
-        for (int a = 0; a < n; ++a)
-          for (int i = 0; i < 3; ++i)
-            x[3 * a + i] = mesh.coords[3 * g->nodes[c * n + a] + i];
-        std::fill(diag.begin(), diag.end(), 0.0);
-        double area = 0, sum = 0;
-        for (int q = 0; q < rule.size(); ++q) {
-          const double* xi = &rule.points[q * rule.dim];
-          ref.shape(xi, N.data());
-          ref.shapeDerivatives(xi, dN.data());
-          const double dA = facetGeometry(dim_, n, x.data(), dN.data(), normal) * rule.weights[q];
-          area += dA;
-          for (int a = 0; a < n; ++a)
-            diag[a] += N[a] * N[a] * dA;
-        }
-        for (int a = 0; a < n; ++a)
-          sum += diag[a];
-        for (int a = 0; a < n; ++a)
-          weights[z][g->nodes[c * n + a]] += area * diag[a] / sum;
+  std::map<std::int64_t, double> weights;
+  for (const CellGroup* g : mesh.findBoundaries(zones_[z].slave)) {
+    const ReferenceElement& ref = ReferenceElement::get(g->type);
+    const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
+    const int n = g->nodesPerCell();
+    std::vector<double> x(3 * n), N(n), dN(n * ref.dim()), diag(n);
+    double normal[3];
+    for (std::size_t c = 0; c < g->size(); ++c) {
+      for (int a = 0; a < n; ++a) {
+        const auto xa = position(g->nodes[c * n + a]);
+        std::copy(xa.begin(), xa.end(), x.begin() + 3 * a);
       }
+      std::fill(diag.begin(), diag.end(), 0.0);
+      double area = 0, sum = 0;
+      for (int q = 0; q < rule.size(); ++q) {
+        const double* xi = &rule.points[q * rule.dim];
+        ref.shape(xi, N.data());
+        ref.shapeDerivatives(xi, dN.data());
+        const double dA = facetGeometry(dim_, n, x.data(), dN.data(), normal) * rule.weights[q];
+        area += dA;
+        for (int a = 0; a < n; ++a)
+          diag[a] += N[a] * N[a] * dA;
+      }
+      for (int a = 0; a < n; ++a)
+        sum += diag[a];
+      for (int a = 0; a < n; ++a)
+        weights[g->nodes[c * n + a]] += area * diag[a] / sum;
     }
   }
+  return weights;
+}
+
+void ContactProblem::computeWeights() {
+  const Mesh& mesh = *solid_.model().mesh;
+  const auto reference = [&mesh](std::int64_t node) {
+    return std::array<double, 3>{mesh.coords[3 * node], mesh.coords[3 * node + 1],
+                                 mesh.coords[3 * node + 2]};
+  };
+  std::vector<std::map<std::int64_t, double>> weights(zones_.size());
+  for (std::size_t z = 0; z < zones_.size(); ++z)
+    weights[z] = tributaryAreas(z, reference);
   for (Point& pt : points_)
     pt.weight = pt.referenceWeight = weights[pt.zone][pt.node];
 }
@@ -558,6 +583,14 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
     }
     const bool mortar = zones_[z].discretization == Discretization::mortar;
     const auto rows = mortar ? mortarRows(z, *search) : std::map<std::int64_t, MortarRow>{};
+    // Mortar integrates on the current surface, so its multiplier is a traction per current
+    // area. Node-to-segment and the small-strain bulk work per reference area: scale each
+    // point's weight by its facets' reference-to-current area ratio, which makes the mortar
+    // multiplier a nominal pressure too (it differs from the current one by the surface
+    // strain, ~1 % in the Hertz cases) and keeps a uniform pressure uniform.
+    const auto currentAreas =
+        mortar ? tributaryAreas(z, [this](std::int64_t node) { return surfacePosition(node); })
+               : std::map<std::int64_t, double>{};
     for (std::size_t i = 0; i < points_.size(); ++i) {
       Point& pt = points_[i];
       if (pt.zone != static_cast<int>(z)) continue;
@@ -593,7 +626,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
             pt.master.push_back(l);
             pt.N.push_back(m / w);
           }
-          pt.weight = w;
+          pt.weight = w * pt.referenceWeight / currentAreas.at(pt.node);
           std::uint32_t hash = 2166136261u;  // FNV-1a of the coupled nodes: the graph's signature
           for (std::int64_t node : pt.master)
             hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;

@@ -42,6 +42,7 @@
 #include "formulations/ContactZone.hpp"
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -135,6 +136,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // the master facets `search` finds within the search distance).
   std::map<std::int64_t, MortarRow> mortarRows(std::size_t z, const ContactSearch& search) const;
   void buildSurfaceMaps();
+  // HRZ-lumped tributary areas of zone z's slave nodes at the given positions.
+  std::map<std::int64_t, double> tributaryAreas(
+      std::size_t z, const std::function<std::array<double, 3>(std::int64_t)>& position) const;
   void computeWeights();
   void buildGraph();
   void importSurface(const Vector& x);

@@ -34,8 +34,8 @@ struct ContactZone {
   double searchDistance = 0.0;
   InitialContact initialContact = InitialContact::interpenetrated;
   Discretization discretization = Discretization::nodeToSegment;
-  MultiplierBasis multiplierBasis = MultiplierBasis::Standard;  // mortar only
-  std::string formulation;                                      // registry name, for reports
+  MultiplierBasis multiplierBasis = MultiplierBasis::Dual;  // mortar only
+  std::string formulation;                                  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
 };
 

@@ -150,24 +150,11 @@ std::vector<double> inverse(int n, std::vector<double> a) {
   return inv;
 }
 
-// Phi_j at a point from the slave's N: the shapes themselves or A N.
-void multipliers(const std::vector<double>& A, int ns, const double* N, double* phi) {
+// D += N_S N_S^T dA, M += N_S N_M^T dA (standard basis; the dual one is a transform after).
+void accumulate(int ns, const double* NS, int nm, const double* NM, double dA, double* D,
+                double* M) {
   for (int j = 0; j < ns; ++j) {
-    if (A.empty()) {
-      phi[j] = N[j];
-      continue;
-    }
-    phi[j] = 0.0;
-    for (int k = 0; k < ns; ++k)
-      phi[j] += A[j * ns + k] * N[k];
-  }
-}
-
-// D += phi N_S^T dA, M += phi N_M^T dA.
-void accumulate(int ns, const double* phi, const double* NS, int nm, const double* NM, double dA,
-                double* D, double* M) {
-  for (int j = 0; j < ns; ++j) {
-    const double w = phi[j] * dA;
+    const double w = NS[j] * dA;
     for (int k = 0; k < ns; ++k)
       D[j * ns + k] += w * NS[k];
     for (int l = 0; l < nm; ++l)
@@ -215,9 +202,9 @@ struct SlaveLine {
   }
 };
 
-// eta on the master where the line point + s n meets it, Newton from etaStart.
-void projectOnMaster(const Facet& master, const ReferenceElement& ref, const double* point,
-                     const double* n, double etaStart, FacetPoint& p) {
+// eta on the master where the line point + s n meets it, Newton from etaStart (returned).
+double projectOnMaster(const Facet& master, const ReferenceElement& ref, const double* point,
+                       const double* n, double etaStart, FacetPoint& p) {
   double eta = etaStart, previous = HUGE_VAL;
   for (int it = 0; it < kMaxNewton; ++it) {
     evaluate(ref, master.coords.data(), &eta, p);
@@ -225,7 +212,7 @@ void projectOnMaster(const Facet& master, const ReferenceElement& ref, const dou
     const double dg = cross2(p.a[0], n);
     if (!(std::abs(dg) > 0.0)) break;
     const double step = -cross2(r, n) / dg;
-    if (newtonConverged(std::abs(step), previous)) return;
+    if (newtonConverged(std::abs(step), previous)) return eta;
     eta += step;
     previous = std::abs(step);
   }
@@ -234,8 +221,7 @@ void projectOnMaster(const Facet& master, const ReferenceElement& ref, const dou
 }
 
 void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& normals,
-                 const std::vector<const Facet*>& masters, const std::vector<double>& A,
-                 MortarIntegrals& out) {
+                 const std::vector<const Facet*>& masters, MortarIntegrals& out) {
   const ReferenceElement& sref = ReferenceElement::get(slave.type);
   const int ns = sref.numNodes();
   const SlaveLine line{slave, sref, normals};
@@ -263,6 +249,23 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     const double lo = std::max(-1.0, std::min(xiEnd[0], xiEnd[1]));
     const double hi = std::min(1.0, std::max(xiEnd[0], xiEnd[1]));
     if (!(hi - lo > 2 * kSliver)) continue;
+    // The ends' projections can also meet through the slave's extrapolation (|xi| >> 1 on a
+    // curved slave, where the interpolated normals swing): a distant master's two ends then
+    // land on both sides of the slave. A true overlap's middle meets the master inside it.
+    {
+      const double xi = 0.5 * (lo + hi);
+      FacetPoint ps, pm;
+      evaluate(sref, slave.coords.data(), &xi, ps);
+      double n[2], dn[2];
+      line.normalField(ps, n, dn);
+      const double etaStart = -1.0 + 2.0 * (xi - xiEnd[0]) / (xiEnd[1] - xiEnd[0]);
+      double eta = HUGE_VAL;
+      try {
+        eta = projectOnMaster(master, mref, ps.x, n, etaStart, pm);
+      } catch (const std::runtime_error&) {
+      }
+      if (!(std::abs(eta) <= 1.0 + 1e-6)) continue;
+    }
     const int degree = 2 * (info(slave.type).order + info(master.type).order) + 2;
     const QuadratureRule& rule = quadratureRule(ElementType::Line2, degree);
     MortarMaster mm{m, std::vector<double>(static_cast<std::size_t>(ns) * nm, 0.0)};
@@ -276,9 +279,7 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
       // Linear interpolation of the ends' correspondence: exact for straight facets.
       const double etaStart = -1.0 + 2.0 * (xi - xiEnd[0]) / (xiEnd[1] - xiEnd[0]);
       projectOnMaster(master, mref, ps.x, n, etaStart, pm);
-      double phi[kMaxNodes];
-      multipliers(A, ns, ps.N, phi);
-      accumulate(ns, phi, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
+      accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
       out.coveredArea += dA;
     }
     out.masters.push_back(std::move(mm));
@@ -317,8 +318,7 @@ void projectOnPlanePoint(const Facet& f, const ReferenceElement& ref, const Auxi
 }
 
 void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& normals,
-                 const std::vector<const Facet*>& masters, const std::vector<double>& A,
-                 MortarIntegrals& out) {
+                 const std::vector<const Facet*>& masters, MortarIntegrals& out) {
   const ReferenceElement& sref = ReferenceElement::get(slave.type);
   const int ns = sref.numNodes();
   AuxiliaryPlane plane;
@@ -380,15 +380,60 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
             double nS[3];
             areaElement(slave, 3, ps.dN, nS);
             const double dA = rule.weights[q] * twiceArea / std::abs(dot3(nS, plane.n0.data()));
-            double phi[kMaxNodes];
-            multipliers(A, ns, ps.N, phi);
-            accumulate(ns, phi, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
+            accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
             out.coveredArea += dA;
           }
         }
       }
     if (overlaps) out.masters.push_back(std::move(mm));
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The standard-basis integrals (D = int N_j N_k, M = int N_j N^M_l over the covered part) into
+// the dual basis Phi = A N: D <- A D, M <- A M. On a partially covered facet A is built on the
+// covered part where it exists (A = diag(int_c N_j) (int_c N N^T)^-1, Cichosz & Bischoff 2011):
+// D stays diagonal with the covered integrals and sum_l M_jl = D_jj, where the whole facet's
+// basis would couple the nodes and give weights near zero or negative. It exists when every
+// int_c N_j > 0, always on linear facets; a quadratic facet's corner function can integrate
+// to a negative value over part of it, and there the whole facet's basis is kept. A sliver
+// (covered mass matrix singular in double precision) counts as no coverage.
+void toDualBasis(const std::vector<double>& whole, int ns, MortarIntegrals& out) {
+  std::vector<double> A = whole;
+  if (out.coveredArea < 1e-6 * out.area) {
+    out.D.assign(out.D.size(), 0.0);
+    out.masters.clear();
+    out.coveredArea = 0.0;
+    return;
+  }
+  if (out.coveredArea < (1.0 - 1e-9) * out.area) {
+    std::vector<double> rowSums(ns, 0.0);
+    for (int j = 0; j < ns; ++j)
+      for (int k = 0; k < ns; ++k)
+        rowSums[j] += out.D[j * ns + k];
+    if (*std::min_element(rowSums.begin(), rowSums.end()) > 1e-9 * out.coveredArea) {
+      std::vector<double> covered = inverse(ns, out.D);
+      for (int j = 0; j < ns; ++j)
+        for (int k = 0; k < ns; ++k)
+          covered[j * ns + k] *= rowSums[j];
+      if (std::all_of(covered.begin(), covered.end(), [](double a) { return std::isfinite(a); }))
+        A.swap(covered);
+    }
+  }
+  auto transform = [&](std::vector<double>& X, int columns) {
+    std::vector<double> Y(X.size(), 0.0);
+    for (int j = 0; j < ns; ++j)
+      for (int i = 0; i < ns; ++i)
+        for (int c = 0; c < columns; ++c)
+          Y[j * columns + c] += A[j * ns + i] * X[i * columns + c];
+    X.swap(Y);
+  };
+  transform(out.D, ns);
+  for (MortarMaster& m : out.masters)
+    transform(m.M, static_cast<int>(m.M.size()) / ns);
 }
 
 }  // namespace
@@ -441,12 +486,14 @@ MortarIntegrals integrateMortar(const Facet& slave,
   out.D.assign(static_cast<std::size_t>(ns) * ns, 0.0);
   const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, nullptr);
   out.area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
-  const std::vector<double> A =
+  // Checks the dual basis exists before integrating (a sentence, not a singular matrix).
+  const std::vector<double> whole =
       basis == MultiplierBasis::Dual ? dualBasisCoefficients(slave) : std::vector<double>();
   if (spaceDim == 2)
-    integrate2d(slave, slaveNormals, masters, A, out);
+    integrate2d(slave, slaveNormals, masters, out);
   else
-    integrate3d(slave, slaveNormals, masters, A, out);
+    integrate3d(slave, slaveNormals, masters, out);
+  if (basis == MultiplierBasis::Dual && out.coveredArea > 0) toDualBasis(whole, ns, out);
   return out;
 }
 

@@ -27,9 +27,12 @@
 // projections are affine (triangles, parallelograms).
 //
 // Multiplier bases: standard (Phi_j = N_j^S) or dual (Phi_j = sum_k A_jk N_k^S, biorthogonal:
-// int_S Phi_j N_k dA = delta_jk int_S N_k dA over the whole facet, so D is diagonal where S is
-// fully covered). The dual basis exists only where every int_S N_j dA > 0: line2, line3, tri3,
-// quad4, quad9, not tri6 and quad8 (zero or negative corner integrals).
+// int_C Phi_j N_k dA = delta_jk int_C N_k dA over the covered part C of S, so D is diagonal; on
+// a fully covered facet A is the whole facet's, on a partially covered one it is built on C
+// where every int_C N_j > 0 (always on linear facets; else the whole facet's A is kept), and
+// coverage below 1e-6 of the facet counts as none). The dual
+// basis exists only where every int_S N_j dA > 0: line2, line3, tri3, quad4, quad9, not tri6
+// and quad8 (zero or negative corner integrals).
 #include "core/contact/ContactSearch.hpp"
 
 #include <array>

@@ -6,6 +6,8 @@
 #include <gmsh.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace contactlab {
 
@@ -15,9 +17,18 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
                                 {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
   requirePositive("half-sphere", "radius", p.radius);
   requireGrading("half-sphere", p.grading);
-  const std::string source =
-      "generated half-sphere (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
-      formatNumber(p.grading.sizeContact) + " to " + formatNumber(p.grading.sizeFar) + ")";
+  const bool block = p.base == "block";
+  if (!block && p.base != "none")
+    throw std::invalid_argument("half-sphere: base must be 'none' or 'block' (got '" + p.base +
+                                "')");
+  if (block) {
+    requirePositive("half-sphere", "base width", p.baseWidth);
+    requirePositive("half-sphere", "base height", p.baseHeight);
+  }
+  const std::string source = "generated half-sphere" + std::string(block ? " on a block" : "") +
+                             " (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
+                             formatNumber(p.grading.sizeContact) + " to " +
+                             formatNumber(p.grading.sizeFar) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();
@@ -30,6 +41,11 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
     occ::rotate({{3, volume}}, 0, 0, 0, 1, 0, 0, -M_PI / 2);
     occ::translate({{3, volume}}, cx, cy, cz);
     const int contact = occ::addPoint(cx, cy, cz - r);
+    // Not fragmented with the sphere: the two bodies are meshed separately (disjoint nodes).
+    const int base =
+        block ? occ::addBox(cx - p.baseWidth / 2, cy - p.baseWidth / 2, cz - r - p.baseHeight,
+                            p.baseWidth, p.baseWidth, p.baseHeight)
+              : -1;
     occ::synchronize();
     gmsh::vectorpair faces;
     gmsh::model::getBoundary({{3, volume}}, faces, false, false, false);
@@ -44,6 +60,22 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
     addGroup(2, flat, "flat");
     addGroup(2, curved, "curved");
     addGroup(0, {contact}, "contact-point");
+    if (block) {
+      gmsh::model::getBoundary({{3, base}}, faces, false, false, false);
+      std::vector<int> top, bottom, sides;
+      for (const auto& f : faces) {
+        const int tag = std::abs(f.second);
+        const double z = centerOfMass(2, tag)[2];
+        (std::abs(z - (cz - r)) < 1e-8 * r                  ? top
+         : std::abs(z - (cz - r - p.baseHeight)) < 1e-8 * r ? bottom
+                                                            : sides)
+            .push_back(tag);
+      }
+      addGroup(3, {base}, "base");
+      addGroup(2, top, "base-top");
+      addGroup(2, bottom, "base-bottom");
+      addGroup(2, sides, "base-sides");
+    }
     // Hexes: every tet is split into 4 hexes, which halves the edges; mesh twice as coarse.
     if (!spec.simplex) gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
     generateGraded(3, {cx, cy, cz - r}, p.grading, spec.simplex ? 1.0 : 2.0);

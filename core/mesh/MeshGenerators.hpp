@@ -86,6 +86,12 @@ struct HalfSphereParams {
   double radius = 1.0;
   ContactGrading grading{0.1, 0.3, 0.1, 0.5};
   std::string elementType = "tet4";
+  // "block": a separately meshed box under the sphere, its top face through the lowest point
+  // (width x width, centred there, `baseHeight` deep). Block 'base'; faces 'base-top',
+  // 'base-bottom', 'base-sides'.
+  std::string base = "none";
+  double baseWidth = 2.0;
+  double baseHeight = 1.0;
 };
 Mesh generateHalfSphere(const HalfSphereParams& p);
 
@@ -122,6 +128,9 @@ struct StackedBlocks3DParams {
   std::array<int, 3> lowerDivisions{2, 2, 2};
   std::array<int, 3> upperDivisions{3, 3, 3};
   double upperRotationDeg = 0.0;
+  // The upper block's footprint extends this far beyond the lower's on each side (so that,
+  // rotated, it still covers the lower's top face).
+  double upperMargin = 0.0;
   std::string elementType = "hex8";
 };
 Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p);

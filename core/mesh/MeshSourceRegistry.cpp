@@ -120,6 +120,12 @@ RCP<const ParameterList> halfSphereParameters() {
   p->set("Radius", d.radius, "Radius");
   addGrading(*p, d.grading);
   p->set("Element", "tet4", "Element type (hexes: each tet split into 4)", oneOf(k3D));
+  p->set("Base", d.base,
+         "'none', or 'block': a separately meshed box under the sphere, touching it at its "
+         "lowest point (a two-body Hertz contact)",
+         oneOf({"none", "block"}));
+  p->set("Base Width", d.baseWidth, "Block base: side of its square top, centred under the sphere");
+  p->set("Base Height", d.baseHeight, "Block base: depth");
   return p;
 }
 
@@ -147,6 +153,8 @@ RCP<const ParameterList> stacked3DParameters() {
   p->set("Lower Divisions", arrayOf<int>({2, 2, 2}), "nx, ny, nz of the lower block");
   p->set("Upper Divisions", arrayOf<int>({3, 3, 3}), "nx, ny, nz of the upper block");
   p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh about z, degrees");
+  p->set("Upper Margin", 0.0,
+         "How far the upper block's footprint extends beyond the lower's on each side");
   p->set("Element", "hex8", "Element type", oneOf(k3D));
   return p;
 }
@@ -216,14 +224,18 @@ void registerMeshSources() {
            return std::make_unique<Mesh>(generateRollerOnBase(g));
          }});
   r.add({"half-sphere",
-         "Lower half of a ball (Hertz sphere), graded towards the lowest point. Block 'body'; "
-         "faces 'flat' (top), 'curved', point 'contact-point'.",
+         "Lower half of a ball (Hertz sphere), graded towards the lowest point, optionally on a "
+         "block. Block 'body'; faces 'flat' (top), 'curved', point 'contact-point' (block: also "
+         "'base', 'base-top', 'base-bottom', 'base-sides').",
          halfSphereParameters, [](const ParameterList& p, const std::string&) {
            HalfSphereParams g;
            g.centre = fixed<3, double>(p, "Centre");
            g.radius = p.get<double>("Radius");
            g.grading = grading(p);
            g.elementType = p.get<std::string>("Element");
+           g.base = p.get<std::string>("Base");
+           g.baseWidth = p.get<double>("Base Width");
+           g.baseHeight = p.get<double>("Base Height");
            return std::make_unique<Mesh>(generateHalfSphere(g));
          }});
   r.add({"stacked-blocks-2d",
@@ -255,6 +267,7 @@ void registerMeshSources() {
            g.lowerDivisions = fixed<3, int>(p, "Lower Divisions");
            g.upperDivisions = fixed<3, int>(p, "Upper Divisions");
            g.upperRotationDeg = p.get<double>("Upper Rotation");
+           g.upperMargin = p.get<double>("Upper Margin");
            g.elementType = p.get<std::string>("Element");
            return std::make_unique<Mesh>(generateStackedBlocks3D(g));
          }});

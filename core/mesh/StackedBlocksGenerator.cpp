@@ -78,6 +78,9 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p) {
   requirePositive(gen, "footprint[0]", p.footprint[0]);
   requirePositive(gen, "footprint[1]", p.footprint[1]);
   requireStacking(gen, p.lowerHeight, p.upperHeight, p.gap, p.upperRotationDeg);
+  if (!(p.upperMargin >= 0))
+    throw std::invalid_argument(gen + ": upper margin must be >= 0 (got " +
+                                std::to_string(p.upperMargin) + ")");
   for (int i = 0; i < 3; ++i) {
     requireDivisions(gen, "lowerDivisions[" + std::to_string(i) + "]", p.lowerDivisions[i]);
     requireDivisions(gen, "upperDivisions[" + std::to_string(i) + "]", p.upperDivisions[i]);
@@ -91,8 +94,10 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p) {
     const auto [lx, ly] = p.footprint;
     const auto lower =
         addStructuredBox(p.origin, {lx, ly, p.lowerHeight}, p.lowerDivisions, !spec.simplex);
-    const auto upper = addStructuredBox({p.origin[0], p.origin[1], upperZ}, {lx, ly, p.upperHeight},
-                                        p.upperDivisions, !spec.simplex);
+    const double m = p.upperMargin;
+    const auto upper =
+        addStructuredBox({p.origin[0] - m, p.origin[1] - m, upperZ},
+                         {lx + 2 * m, ly + 2 * m, p.upperHeight}, p.upperDivisions, !spec.simplex);
     const char* faces[] = {"xmin", "xmax", "ymin", "ymax", "bottom", "top"};
     for (const auto& [block, b] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
       addGroup(3, {b.volume}, block);

@@ -51,7 +51,8 @@ for index, row in enumerate(rows):
         failures.append(row["scene"])
 if update:
     with open(gold, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=["scene", "formulation", "zone", "sets"] + fields + ["tolerance"])
+        w = csv.DictWriter(f, fieldnames=["scene", "formulation", "zone", "sets"] + fields + ["tolerance"],
+                           lineterminator="\n")
         w.writeheader()
         w.writerows(out_rows)
     print("updated", gold)

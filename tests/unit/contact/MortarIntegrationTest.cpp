@@ -371,6 +371,52 @@ TEST(MortarIntegration, PartialOverlapCoversTheIntersection) {
   EXPECT_EQ(r.masters[0].facet, 0u);
 }
 
+// On a partially covered facet the dual basis is built on the covered part: D stays diagonal
+// and holds the standard basis' covered integrals, and each row of M sums to its D entry (a
+// uniform pressure is still transferred exactly). The whole facet's basis would couple the
+// nodes and give a near-zero weight to the node the master barely reaches. (On quadratic
+// facets a corner function integrates to a negative value over this covered part: no covered
+// basis, the whole facet's is kept; the transfer of a constant is checked for those.)
+TEST(MortarIntegration, DualBasisOnACoveredPartStaysBiorthogonal) {
+  for (ElementType t : {ElementType::Line2, ElementType::Line3, ElementType::Quad4,
+                        ElementType::Tri3, ElementType::Quad9}) {
+    const Facet slave = makeFacet(t, unitSlave(t));
+    // A master shifted by a third of the slave's extent along x: it covers part of it.
+    const Map shifted = [&](double u, double v) {
+      Vec3 x = unitSlave(t)(u, v);
+      x[0] += 0.3;
+      return x;
+    };
+    const std::vector<Facet> masters = {makeMaster(t, shifted)};
+    const MortarIntegrals standard =
+        integrateMortar(slave, nodeNormals(slave), pointers(masters), MultiplierBasis::Standard);
+    const MortarIntegrals dual =
+        integrateMortar(slave, nodeNormals(slave), pointers(masters), MultiplierBasis::Dual);
+    SCOPED_TRACE(info(t).name);
+    ASSERT_NEAR(standard.coveredArea, dual.coveredArea, 1e-14);
+    ASSERT_GT(dual.coveredArea, 0.3 * dual.area);
+    ASSERT_LT(dual.coveredArea, 0.9 * dual.area);
+    ASSERT_EQ(dual.masters.size(), 1u);
+    expectTransfer(slave, masters, dual, constantField, 1e-12);
+    if (info(t).order > 1) continue;
+    const int n = info(t).nodes;
+    const int nm = static_cast<int>(dual.masters[0].M.size()) / n;
+    for (int j = 0; j < n; ++j) {
+      double covered = 0.0, masterSum = 0.0;
+      for (int k = 0; k < n; ++k) {
+        covered += standard.D[j * n + k];
+        if (k != j) {
+          EXPECT_NEAR(dual.D[j * n + k], 0.0, 1e-12);
+        }
+      }
+      for (int l = 0; l < nm; ++l)
+        masterSum += dual.masters[0].M[j * nm + l];
+      EXPECT_NEAR(dual.D[j * n + j], covered, 1e-12);
+      EXPECT_NEAR(masterSum, dual.D[j * n + j], 1e-12);
+    }
+  }
+}
+
 // ---- 6. Projection, not proximity ----
 
 TEST(MortarIntegration, OffsetAlongTheNormalChangesNothing) {
@@ -442,6 +488,36 @@ TEST(MortarIntegration, CurvedSlaveIsIntegratedOnItsSurface) {
     EXPECT_NEAR(r2.area, length, 1e-8);
     EXPECT_NEAR(r2.coveredArea, length, 1e-8);
     expectTransfer(arc, segments, r2, constantField, 1e-14);
+  }
+}
+
+// A far master is not an overlap: on a curved line3 slave the normal lines through the
+// extrapolated facet (|xi| >> 1, where the interpolated normals swing) can meet a distant
+// master's two ends on both sides of the slave, which read as covering it all. Coordinates of
+// cattaneo-mindlin-2d at the contact edge in its normal step (a nearly flat slave whose nodal
+// normals turn by 5e-3 across it; a master 0.25 away).
+TEST(MortarIntegration, DistantMasterOnACurvedSlaveIsNoOverlap) {
+  Facet slave{ElementType::Line3,
+              {0.064379099625611544, -0.010000442261974808, 0, 0.073634907432162292,
+               -0.010003483931826516, 0, 0.06900450931698357, -0.010001138685165461, 0}};
+  const std::vector<Vec3> normals = {{-3.5380609641833154e-05, -0.99999999937410622, 0},
+                                     {-0.0051098628159435208, -0.99998694456577897, 0},
+                                     {-0.00032862282266874599, -0.99999994600351882, 0}};
+  const std::vector<Facet> far = {
+      {ElementType::Line3,
+       {0.37605145505157628, -0.075253050798442064, 0, 0.31103183685935021, -0.052017484387009642,
+        0, 0.34374774768616617, -0.063058125691514283, 0}}};
+  const std::vector<Facet> near = {
+      {ElementType::Line3,
+       {0.073654982874933814, -0.010005410137985959, 0, 0.064373152926862132,
+        -0.0099999847126556272, 0, 0.069003128276117612, -0.010000780929000107, 0}}};
+  for (MultiplierBasis basis : kBases) {
+    const MortarIntegrals r = integrateMortar(slave, normals, pointers(far), basis);
+    EXPECT_EQ(r.coveredArea, 0.0);
+    EXPECT_TRUE(r.masters.empty());
+    const MortarIntegrals covered = integrateMortar(slave, normals, pointers(near), basis);
+    EXPECT_NEAR(covered.coveredArea, covered.area, 1e-3 * covered.area);
+    EXPECT_EQ(covered.masters.size(), 1u);
   }
 }
 
