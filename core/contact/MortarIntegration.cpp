@@ -389,10 +389,6 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
   }
 }
 
-}  // namespace
-
-namespace {
-
 // The standard-basis integrals (D = int N_j N_k, M = int N_j N^M_l over the covered part) into
 // the dual basis Phi = A N: D <- A D, M <- A M. On a partially covered facet A is built on the
 // covered part where it exists (A = diag(int_c N_j) (int_c N N^T)^-1, Cichosz & Bischoff 2011):
