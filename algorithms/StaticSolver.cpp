@@ -1,15 +1,24 @@
 #include "algorithms/StaticSolver.hpp"
 
+#include "core/io/Interruption.hpp"
 #include "core/io/ParameterValidation.hpp"
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <utility>
 
 namespace contactlab {
 namespace {
+
+// Thrown from the Newton observer when a signal asked the run to stop (every rank at once).
+struct Interrupted {
+  int signal;
+};
 
 std::string sci(double v) {
   char buffer[32];
@@ -146,8 +155,13 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   if (o.maxIterations < 1) throw std::invalid_argument("Newton/Max Iterations must be >= 1");
   if (o.maxGeometryIterations < 0)
     throw std::invalid_argument("Newton/Max Geometry Iterations must be >= 0");
-  if (!(o.relativeTolerance >= 0) || !(o.absoluteTolerance >= 0) || !(o.geometryTolerance >= 0))
-    throw std::invalid_argument("Newton tolerances must be >= 0");
+  for (const auto& [key, value] :
+       {std::pair<const char*, double>{"Relative Tolerance", o.relativeTolerance},
+        {"Absolute Tolerance", o.absoluteTolerance},
+        {"Geometry Tolerance", o.geometryTolerance}})
+    if (!(value >= 0))
+      throw std::invalid_argument(std::string("Newton/") + key + " must be >= 0 (got " +
+                                  sci(value) + ")");
 
   o.method = algorithm.get<std::string>("Method");
   const bool all = o.method == "generalized-newton";
@@ -199,7 +213,9 @@ void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
   for (const CyclingEvent& e : events) {
     ++sr.cycling[static_cast<int>(e.kind)];
     controls_->markCycling(e.point, static_cast<int>(e.kind));
+    if (!treating_) continue;
     if (options_.cyclingTreatment == "forced") {
+      forcedPoints_.push_back(e.point);
       const int status = e.kind == CyclingKind::StickSlip      ? 2
                          : e.kind == CyclingKind::SlipReversal ? 1
                                                                : kForcedClosed;
@@ -210,6 +226,18 @@ void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
   }
 }
 
+bool StaticSolver::forcedStateHolds(const Vector& x, double t, double target, Vector& residual) {
+  if (forcedPoints_.empty() || !treating_) return true;
+  treating_ = false;
+  controls_->releaseForcedStatuses();
+  // With the statuses a fixed point, a forced point's frozen status is the forced one: the
+  // model's law decides it again here.
+  const bool statusesMoved = !options_.statusesInNewton && controls_->updateStatuses(x, t) > 0;
+  problem_.assemble(x, t, &residual, false);
+  forcedResidual_ = residual.norm2();
+  return !statusesMoved && forcedResidual_ <= target;
+}
+
 bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
                              const IterationCallback& onIteration) {
   const double t = sr.time;
@@ -217,6 +245,8 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   problem_.applyDirichlet(t, x);
   const bool statusFixedPoint = controls_ && !options_.statusesInNewton;
   const bool thresholdFixedPoint = controls_ && !options_.thresholdsInNewton;
+  forcedPoints_.clear();
+  treating_ = true;
   if (controls_) {
     controls_->releaseTreatments();
     controls_->freezeStatuses(false);
@@ -234,10 +264,31 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   const auto fail = [&](const std::string& failure, const std::string& message) {
     report.failure = failure;
     report.message = message + " at step " + std::to_string(sr.step) + " (t = " + sci(t) + ")";
+    if (!treating_ && !forcedPoints_.empty()) {
+      // The forced treatment had converged on its modified law, and the model's own law
+      // failed from there: name that, and the points.
+      std::vector<std::size_t> points = forcedPoints_;
+      std::sort(points.begin(), points.end());
+      points.erase(std::unique(points.begin(), points.end()), points.end());
+      std::string list;
+      for (std::size_t i = 0; i < points.size() && i < 10; ++i)
+        list += (i ? ", " : "") + std::to_string(points[i]);
+      if (points.size() > 10) list += ", ...";
+      report.failure = "degraded-contact";
+      report.message =
+          "the forced cycling treatment converged to a state that violates the "
+          "contact law at its " +
+          std::to_string(points.size()) + " forced point(s) (contact points " + list +
+          "; |R| = " + sci(forcedResidual_) +
+          " with the law restored), and Newton from there without the treatment "
+          "failed (" +
+          failure + ": " + report.message + ")";
+    }
     return false;
   };
   int solves = 0;
   const NewtonMethod::Observer observer = [&](int iteration, double norm) {
+    if (const int signal = interruptionAgreed(mpiComm_)) throw Interrupted{signal};
     sr.residual = norm;
     if (onIteration) onIteration(sr.step, t, solves + iteration, norm);
     if (controls_) treatCycling(detector_.observe(controls_->pointStates()), sr);
@@ -286,17 +337,23 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
       problem_.assemble(x, t, residual.get(), false);
       sr.residual = residual->norm2();
       if (sr.residual <=
-          std::max(options_.absoluteTolerance, options_.geometryTolerance * reference))
+              std::max(options_.absoluteTolerance, options_.geometryTolerance * reference) &&
+          forcedStateHolds(
+              x, t, std::max(options_.absoluteTolerance, options_.geometryTolerance * reference),
+              *residual))
         return true;
       continue;
     }
-    return true;
+    // A forced state that violates the model's law is not a solution: Newton goes on from it
+    // with the law restored (near a solution, it converges in a few iterations).
+    if (forcedStateHolds(x, t, request.target, *residual)) return true;
   }
 }
 
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                             const IterationCallback& onIteration) {
   RunReport report;
+  mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_) controls_->seedInitialStatuses(u, 0.0);
   auto x = problem_.createVector();
   const double nominal = options_.endTime / options_.steps;
@@ -308,7 +365,20 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     sr.cuts = cuts;
     // Land exactly on End Time (no sliver of a last step).
     sr.time = (options_.endTime - (t + dt) < 1e-9 * nominal) ? options_.endTime : t + dt;
-    const bool ok = solveStep(u, *x, sr, report, onIteration);
+    bool ok = false;
+    try {
+      ok = solveStep(u, *x, sr, report, onIteration);
+    } catch (const Interrupted& i) {
+      // The last converged step stays the result; the summary says why the run stopped.
+      report.failure = "interrupted";
+      report.message = std::string("interrupted by ") +
+                       (i.signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                       " during the step to t = " + sci(sr.time) + "; the results are those of " +
+                       "the last converged step";
+      report.interruptSignal = i.signal;
+      report.iterations += sr.iterations;
+      return report;
+    }
     report.iterations += sr.iterations;
     report.statusIterations += sr.statusIterations;
     report.thresholdIterations += sr.thresholdIterations;

@@ -79,13 +79,17 @@ struct StepReport {
 
 struct RunReport {
   bool converged = false;
-  std::string failure;  // empty, or a named reason: "diverged", "max-iterations",
-                        // "nan-detected", "linear-solver-failed", "nonlinear-solver-error",
-                        // "geometry-not-converged", "statuses-not-converged",
-                        // "thresholds-not-converged", "step-too-small"
-  std::string message;  // one sentence for the user
-  int steps = 0;        // converged steps
-  int iterations = 0;   // total Newton iterations
+  std::string failure;      // empty, or a named reason: "diverged", "max-iterations",
+                            // "nan-detected", "linear-solver-failed", "nonlinear-solver-error",
+                            // "geometry-not-converged", "statuses-not-converged",
+                            // "thresholds-not-converged", "degraded-contact" (a forced
+                            // cycling treatment's state violates the contact law and Newton
+                            // from it without the treatment failed), "step-too-small",
+                            // "interrupted" (SIGINT or SIGTERM)
+  std::string message;      // one sentence for the user
+  int interruptSignal = 0;  // failure "interrupted": the signal (SIGINT, SIGTERM)
+  int steps = 0;            // converged steps
+  int iterations = 0;       // total Newton iterations
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
   int cuts = 0;
@@ -113,12 +117,21 @@ class StaticSolver {
   bool solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
                  const IterationCallback& onIteration);
   void treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
+  // Whether the step may end at x: true unless a forced treatment is in effect and the model's
+  // own contact law, the forced statuses released, leaves a residual above `target` there.
+  bool forcedStateHolds(const Vector& x, double t, double target, Vector& residual);
 
   NonlinearSystem& problem_;
   ContactControls* controls_;
   NewtonMethod& newton_;
   const StaticSolverOptions options_;
   CyclingDetector detector_;
+  // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
+  // in it: after a forced state failed the check, the step goes on with the model's own law.
+  std::vector<std::size_t> forcedPoints_;
+  bool treating_ = true;
+  double forcedResidual_ = 0;
+  MPI_Comm mpiComm_ = MPI_COMM_SELF;  // the system's ranks, which agree on an interruption
 };
 
 }  // namespace contactlab

@@ -7,7 +7,9 @@
 #include "core/io/CsvWriter.hpp"
 #include "core/io/InputError.hpp"
 #include "core/io/JsonWriter.hpp"
+#include "core/io/OutputFolder.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
+#include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
 #include "linear/MumpsSolver.hpp"
@@ -213,6 +215,17 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (root)
         std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
                   << sm.model.mesh->numElements() << " elements)\n";
+    } else {
+      // Before solving: a folder that cannot be written is found now, not after step 1.
+      const std::string folder =
+          options.outputDirectory.empty() ? sm.outputDirectory : options.outputDirectory;
+      collectively(*comm, [&] {
+        if (!root) return;
+        const std::vector<std::string> stale = prepareOutputFolder(folder);
+        if (!stale.empty())
+          std::cerr << "contactlab: " << folder << ": removed " << stale.size()
+                    << " file(s) of an earlier run\n";
+      });
     }
   } catch (const InputError& e) {
     return reportInputError(e, root);
@@ -285,7 +298,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       table.addRow(sm.contact[p.zone].name, static_cast<long long>(p.node + 1), p.x[0], p.x[1],
                    p.x[2], p.paired ? p.gap : std::numeric_limits<double>::quiet_NaN(), p.pressure,
                    p.traction[0], p.traction[1], p.traction[2], p.slip[0], p.slip[1], p.slip[2],
-                   static_cast<int>(p.status));
+                   outputStatus(p));
     table.write(outDir + "/contact.csv");
   };
   double lastPairing = 0, lastContact = 0;
@@ -312,6 +325,27 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
               .set("value", value));
     }
   };
+  auto contactSummary = [&] {
+    if (!contact) return JsonValue();
+    const ContactResultants r = contact->resultants();
+    auto vec = [&](const std::array<double, 3>& v) {
+      return JsonValue::array(std::vector<double>(v.begin(), v.begin() + problem->dim()));
+    };
+    return JsonValue::object()
+        .set("normal_force", r.normalForceMagnitude)
+        .set("normal_force_vector", vec(r.normalForce))
+        .set("tangential_force_vector", vec(r.tangentialForce))
+        .set("max_pressure", r.maxPressure)
+        .set("max_penetration", r.maxPenetration)
+        .set("contact_points_closed", r.contact)
+        .set("stick_points", r.stick)
+        .set("slip_points", r.slip)
+        .set("closed_frictionless_points", r.closedFrictionless)
+        .set("surfaces_met", contact->everInContact());
+  };
+  // The contact block of the last converged step: after a failure, the contact state left in
+  // the problem is the failed iterate's, which summary.json reports under a key of its own.
+  JsonValue convergedContact;
   double lastTime = 0;
   auto onStep = [&](const StepReport& s, const Vector& state) {
     lastTime = s.time;
@@ -331,6 +365,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       lastPairing = contact->pairingSeconds();
       lastContact = contact->contactSeconds();
       if (root) writeContactCsv();
+      convergedContact = contactSummary().set("time", s.time);
     }
     int events = 0;
     for (int k = 1; k < kCyclingKinds; ++k)
@@ -397,6 +432,17 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   };
   const RunReport report =
       runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep, onIteration);
+  // Said once per run: where the Dirichlet conditions fix a friction direction, its multiplier
+  // was dropped (the singular tangent that would otherwise stop every algorithm there).
+  if (contact)
+    for (std::size_t z = 0; z < sm.contact.size(); ++z) {
+      const std::vector<std::int64_t> nodes = contact->prescribedSlipNodes(z);
+      if (root && !nodes.empty())
+        std::cerr << "contactlab: Contact/" << sm.contact[z].name << ": at " << nodes.size()
+                  << " slave node(s) (e.g. node " << nodes.front() + 1
+                  << ") the Dirichlet conditions fix a friction direction: its friction "
+                     "multiplier is dropped (the support carries that force)\n";
+    }
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "
@@ -404,7 +450,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
 
   // Uniqueness: the critical friction coefficient of the last converged state's pattern.
   JsonValue criticalMu;
-  if (options.criticalMu)
+  if (options.criticalMu && !report.interruptSignal)
     criticalMu = criticalMuSummary(sm, contact.get(), *x, lastTime, report.steps, comm);
 
   // 3. Summary, also when the run failed (the last converged step stays written).
@@ -441,23 +487,6 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                ? std::string("mortar (dual)")
                                : std::string("mortar (standard)"));
     return zones;
-  };
-  auto contactSummary = [&] {
-    if (!contact) return JsonValue();
-    const ContactResultants r = contact->resultants();
-    auto vec = [&](const std::array<double, 3>& v) {
-      return JsonValue::array(std::vector<double>(v.begin(), v.begin() + problem->dim()));
-    };
-    return JsonValue::object()
-        .set("normal_force", r.normalForceMagnitude)
-        .set("normal_force_vector", vec(r.normalForce))
-        .set("tangential_force_vector", vec(r.tangentialForce))
-        .set("max_pressure", r.maxPressure)
-        .set("max_penetration", r.maxPenetration)
-        .set("contact_points_closed", r.contact)
-        .set("stick_points", r.stick)
-        .set("slip_points", r.slip)
-        .set("surfaces_met", contact->everInContact());
   };
   auto loop = [](bool inNewton) { return inNewton ? "newton" : "fixed-point"; };
   auto cyclingSummary = [&] {
@@ -531,7 +560,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                             .set("output", report.seconds.output)
                             .set("total", elapsed()))
         .set("peak_memory_mb", maxMemory)
-        .set("contact", contactSummary())
+        .set("contact", convergedContact)
+        .set("failed_iterate", report.converged || !contact ? JsonValue() : contactSummary())
         .set("reactions", reactions)
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
@@ -554,6 +584,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     std::cout << "  summary: " << std::filesystem::absolute(outDir + "/summary.json").string()
               << "\n";
   }
+  if (report.interruptSignal) return 128 + report.interruptSignal;
   return report.converged ? 0 : 1;
 }
 

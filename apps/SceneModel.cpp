@@ -11,7 +11,9 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace contactlab {
@@ -48,6 +50,10 @@ std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
   if (static_cast<int>(v.size()) != dim && static_cast<int>(v.size()) != 3)
     throw InputError(where + ": " + path + "/" + key + " must have " + std::to_string(dim) +
                      " components");
+  // A 2D model has no z: a z component that is not zero would be dropped without a word.
+  if (dim == 2 && v.size() == 3 && v[2] != 0.0)
+    throw InputError(where + ": " + path + "/" + key + " has a z component (" +
+                     std::to_string(v[2]) + ") in a 2D model: give 2 components, or z = 0");
   std::array<double, 3> out{};
   for (int i = 0; i < dim; ++i)
     out[i] = v[i];
@@ -89,7 +95,25 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
                      "mesh (boundary groups: " + boundaries + ")");
   if (zone.slave == zone.master)
     throw InputError(path + ": Slave and Master are the same group '" + zone.slave +
-                     "' (self-contact is not supported)");
+                     "' (self-contact within one group is not supported; two groups of one "
+                     "body that share no node are, e.g. the two sides of a fold)");
+  if (!obstacle) {
+    // A node on both sides would be paired with its own surface (a gap of 0 from the start).
+    const std::vector<std::int64_t> s = mesh.boundaryNodes(zone.slave);
+    const std::vector<std::int64_t> m = mesh.boundaryNodes(zone.master);
+    std::vector<std::int64_t> shared;
+    std::set_intersection(s.begin(), s.end(), m.begin(), m.end(), std::back_inserter(shared));
+    if (!shared.empty())
+      throw InputError(path + ": Slave '" + zone.slave + "' and Master '" + zone.master +
+                       "' share " + std::to_string(shared.size()) + " node(s) (e.g. node " +
+                       std::to_string(shared.front() + 1) +
+                       "): a node cannot be paired with its own surface; make the groups "
+                       "disjoint");
+  }
+  zone.noFrictionGroup = z.get<std::string>("No Friction Group");
+  if (!zone.noFrictionGroup.empty() && !isBoundary(zone.noFrictionGroup))
+    throw InputError(path + "/No Friction Group: '" + zone.noFrictionGroup +
+                     "' is not a boundary group of the mesh (boundary groups: " + boundaries + ")");
   zone.friction = z.get<double>("Friction");
   if (!(zone.friction >= 0) || !std::isfinite(zone.friction))
     throw InputError(path + "/Friction must be a finite number >= 0 (got " +
@@ -212,7 +236,12 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     DirichletCondition bc;
     bc.name = dirichlet.name(it);
     bc.group = d.get<std::string>("Group");
-    for (char c : d.get<std::string>("Components"))
+    const std::string components = d.get<std::string>("Components");
+    // 'xyz' is "every component"; a z named on its own in 2D would constrain nothing.
+    if (dim == 2 && components != "xyz" && components.find('z') != std::string::npos)
+      throw InputError(where + ": Dirichlet/" + bc.name + "/Components: '" + components +
+                       "' names z in a 2D model, which has x and y only");
+    for (char c : components)
       if (c - 'x' < dim) bc.components.push_back(c - 'x');
     bc.value = d.get<double>("Value");
     bc.function = loadFunction(d, endTime, where, "Dirichlet/" + bc.name);

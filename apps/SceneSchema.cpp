@@ -74,7 +74,8 @@ ParameterList dirichletItem() {
   ParameterList p;
   p.set("Group", "", "Boundary physical group whose nodes are constrained");
   p.set("Components", "xyz",
-        "Constrained components: any of x, y, z (e.g. 'y', 'xy'); 'xyz' constrains all",
+        "Constrained components: any of x, y, z (e.g. 'y', 'xy'); 'xyz' constrains all (x and "
+        "y in 2D, where z alone is refused)",
         choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
   p.set("Value", 0.0, "Prescribed displacement at the end of the load");
   p.set("Function", "ramp",
@@ -145,6 +146,10 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "Boundary physical group of the other body; leave empty when an Obstacle is given");
   if (!user || user->isSublist("Obstacle")) p.set("Obstacle", obstacleItem());
   p.set("Friction", 0.0, "Coulomb coefficient mu >= 0; 0 builds no friction unknowns");
+  p.set("No Friction Group", "",
+        "Boundary group of slave nodes without friction (code_aster's SANS_GROUP_NO_FR); not "
+        "needed where the Dirichlet conditions fix a node's tangential motion: that friction "
+        "direction is dropped automatically (doc/scenes.md)");
   p.set("Search Distance", 0.0,
         "Master points farther than this from a slave point are ignored; 0 = twice the largest "
         "slave facet");

@@ -11,8 +11,11 @@
 
 #include "apps/RunCommand.hpp"
 #include "apps/SceneSchema.hpp"
+#include "core/io/InputError.hpp"
+#include "core/io/Interruption.hpp"
 
 #include <Tpetra_Core.hpp>
+#include <mpi.h>
 
 #include <cerrno>
 #include <cstring>
@@ -72,12 +75,7 @@ int study(int argc, char** argv) {
   return 1;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  if (argc >= 2 && std::string(argv[1]) == "study") return study(argc, argv);
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  auto comm = Tpetra::getDefaultComm();
+int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char** argv) {
   const bool root = comm->getRank() == 0;
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) return root ? usageError("no command given") : 2;
@@ -97,6 +95,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (command == "run" || command == "validate" || command == "critical-mu") {
+    contactlab::installInterruptionHandlers();
     contactlab::RunOptions options;
     options.validateOnly = command == "validate";
     options.criticalMu = command == "critical-mu";
@@ -120,4 +119,35 @@ int main(int argc, char** argv) {
     return contactlab::runCommand(options, comm);
   }
   return root ? usageError("unknown command '" + command + "'") : 2;
+}
+
+// An error that escaped a command: one sentence, exit code 2 for bad input and 1 otherwise.
+// Another rank may be waiting in a collective call, so a parallel run is aborted as a whole.
+int escaped(const Teuchos::Comm<int>& comm, const std::string& what, int code) {
+  std::cerr << "contactlab: error: " << what << "\n";
+  if (comm.getSize() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "study") return study(argc, argv);
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  try {
+    return dispatch(comm, argc, argv);
+  } catch (const contactlab::InputError& e) {
+    return escaped(*comm, e.what(), 2);
+  } catch (const std::bad_alloc&) {
+    return escaped(*comm, "out of memory (the model is too large for this machine)", 1);
+  } catch (const std::exception& e) {
+    return escaped(*comm, e.what(), 1);
+  } catch (const std::string& e) {  // gmsh throws strings
+    return escaped(*comm, "gmsh: " + e, 1);
+  } catch (const char* e) {
+    return escaped(*comm, std::string("gmsh: ") + e, 1);
+  } catch (...) {
+    return escaped(*comm, "an unknown error stopped the run", 1);
+  }
 }

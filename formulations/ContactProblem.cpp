@@ -5,6 +5,7 @@
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
+#include "formulations/PrescribedSlip.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -59,6 +60,9 @@ struct ContactProblem::Point {
   double forcedThreshold = -1.0;
   double coefficientScale = 1.0;
   int cycling = 0;
+  // Friction directions the Dirichlet conditions prescribe at the last evaluation (their
+  // multiplier component dropped: PrescribedSlip.hpp).
+  int prescribedSlip = 0;
   // Last evaluation.
   ContactPointResult result;
   std::array<double, 3> slipIncrement{};
@@ -122,10 +126,14 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
               (g->type == ElementType::Tri6 ? "zero" : "a negative value") +
               ", so their weighted gaps vanish. Use linear or quad9 (hex27) facets on the "
               "slave, or 'node-to-segment'");
-    const int nt = zone.friction > 0 ? dim_ - 1 : 0;
-    const int multipliers = zone.law->hasMultipliers() ? 1 + nt : 0;
+    // No Friction Group: nodes whose friction the user removed (code_aster's SANS_GROUP_NO_FR).
+    std::vector<std::int64_t> noFriction;
+    if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);
     for (std::int64_t node : mesh.boundaryNodes(zone.slave)) {
       if (dofs.globalNode(node) < 0) continue;
+      const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);
+      const int nt = zone.friction > 0 && !frictionless ? dim_ - 1 : 0;
+      const int multipliers = zone.law->hasMultipliers() ? 1 + nt : 0;
       Point pt;
       pt.zone = static_cast<int>(z);
       pt.node = node;
@@ -147,6 +155,12 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   map_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(owned), 0, dofs.comm()));
   buildSurfaceMaps();
+  // The Dirichlet-constrained dofs of the surface nodes (the whole mesh is on every rank).
+  for (const DirichletCondition& bc : solid_.model().dirichlet)
+    for (std::int64_t node : mesh.boundaryNodes(bc.group))
+      if (surfaceIndex_[node] >= 0 && dofs.globalNode(node) >= 0)
+        for (int c : bc.components)
+          constrainedSurfaceDofs_.insert(dofs.globalNode(node) * dim_ + c);
   computeWeights();
   searchDistance_.resize(zones_.size());
   for (std::size_t z = 0; z < zones_.size(); ++z) {
@@ -336,6 +350,13 @@ void ContactProblem::releaseTreatments() {
     pt.coefficientScale = 1.0;
     pt.cycling = 0;
     pt.result.cycling = 0;
+  }
+}
+
+void ContactProblem::releaseForcedStatuses() {
+  for (Point& pt : points_) {
+    pt.forcedStatus = -1;
+    pt.forcedThreshold = -1.0;
   }
 }
 
@@ -900,6 +921,15 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   in.coefficientScale = pt.coefficientScale;
   LawOutput out;
   law.evaluate(in, out);
+  pt.prescribedSlip = 0;
+  if (pt.paired && pt.multiplier >= 0 && nt > 0) {
+    std::vector<char> free(nu);
+    for (int a = 0; a < nu; ++a)
+      free[a] = constrainedSurfaceDofs_.count(pt.dofs[a]) == 0;
+    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, free);
+    pt.prescribedSlip = prescribed.prescribed;
+    dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
+  }
   pt.threshold = out.threshold;
   pt.indicator = out.indicator;
   pt.frictionIndicator = out.frictionIndicator;
@@ -911,15 +941,19 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   r.weight = pt.weight;
   r.paired = pt.paired;
   r.gap = in.gap;
-  r.pressure = out.pressure;
+  // An open point transmits nothing: its multiplier's last bits (1e-75 with lagrange) are not
+  // a pressure.
+  r.pressure = out.status == ContactStatus::Free ? 0.0 : out.pressure;
   r.normal = pt.normal;
   r.status = out.status;
+  r.frictional = pt.nt > 0;
   r.cycling = pt.cycling;
   r.traction = {0, 0, 0};
   pt.slipIncrement = {0, 0, 0};
   for (int k = 0; k < nt; ++k)
     for (int c = 0; c < 3; ++c) {
-      r.traction[c] += out.tangentialTraction[k] * (*dirs[1 + k])[c];
+      if (out.status != ContactStatus::Free)
+        r.traction[c] += out.tangentialTraction[k] * (*dirs[1 + k])[c];
       pt.slipIncrement[c] += in.slip[k] * (*dirs[1 + k])[c];
     }
   for (int c = 0; c < 3; ++c)
@@ -1167,6 +1201,19 @@ void ContactProblem::commitState(const Vector& x, double t) {
   solid_.commitState(*displacement(x), t);
 }
 
+std::vector<std::int64_t> ContactProblem::prescribedSlipNodes(std::size_t zone) const {
+  // Points are evaluated on their owners: the union over the ranks.
+  std::vector<int> local(points_.size(), 0), global(points_.size(), 0);
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    local[i] = points_[i].zone == static_cast<int>(zone) && points_[i].prescribedSlip > 0;
+  Teuchos::reduceAll(*solid_.dofs().comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
+                     local.data(), global.data());
+  std::vector<std::int64_t> nodes;
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    if (global[i]) nodes.push_back(points_[i].node);
+  return nodes;
+}
+
 std::vector<ContactPointResult> ContactProblem::results() const {
   std::vector<ContactPointResult> out;
   out.reserve(points_.size());
@@ -1181,8 +1228,16 @@ ContactResultants ContactProblem::resultants() const {
     const ContactPointResult& p = pt.result;
     if (p.status == ContactStatus::Free) continue;
     ++r.contact;
-    if (p.status == ContactStatus::Stick && pt.nt > 0) ++r.stick;
-    if (p.status == ContactStatus::Slip) ++r.slip;
+    switch (outputStatus(p)) {
+      case 1:
+        ++r.stick;
+        break;
+      case 2:
+        ++r.slip;
+        break;
+      default:
+        ++r.closedFrictionless;
+    }
     for (int c = 0; c < 3; ++c) {
       r.normalForce[c] += p.weight * p.pressure * p.normal[c];
       r.tangentialForce[c] += p.weight * p.traction[c];
@@ -1207,7 +1262,7 @@ void ContactProblem::addPointData(MeshPiece& piece) const {
     const ContactPointResult* p = it == byNode.end() ? nullptr : it->second;
     pressure.values.push_back(p ? p->pressure : 0.0);
     gap.values.push_back(p && p->paired ? p->gap : 0.0);
-    status.values.push_back(p ? static_cast<double>(p->status) : 0.0);
+    status.values.push_back(p ? static_cast<double>(outputStatus(*p)) : 0.0);
     cycling.values.push_back(p ? static_cast<double>(p->cycling) : 0.0);
     for (int c = 0; c < 3; ++c) {
       traction.values.push_back(p ? p->traction[c] : 0.0);

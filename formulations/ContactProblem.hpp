@@ -21,10 +21,12 @@
 // (`full`, then with the columns of the master nodes around its facet, on which the smoothed
 // normal depends), recomputed (geometricColumns).
 //
-// Mortar (a zone's Discretization): each slave node j is a point with weight w_j = sum_k D_jk
-// and gap n_j . (sum_k D_jk x_k - sum_l M_jl x_l) / w_j, n_j the slave's nodal normal (turned
-// towards the slave), D and M integrated over the slave facets around j (integrateMortar) at
-// each updateGeometry; the slip likewise with the increments. The laws are unchanged. Its
+// Mortar (a zone's Discretization): each slave node j is a point with gap
+// n_j . (sum_k D_jk x_k - sum_l M_jl x_l) / w_j, w_j = sum_k D_jk, n_j the slave's nodal normal
+// (turned towards the slave), D and M integrated over the current slave facets around j
+// (integrateMortar) at each updateGeometry; the slip likewise with the increments. The point's
+// weight is w_j times its facets' reference-to-current area ratio, so that its multiplier is a
+// pressure per reference area as node-to-segment's is. The laws are unchanged. Its
 // geometry is a fixed point: no geometric terms (the segmentation's derivatives are not
 // linearized), whatever Algorithm/Geometric Terms says.
 //
@@ -45,6 +47,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <unordered_set>
 #include <vector>
 
 namespace contactlab {
@@ -62,8 +65,17 @@ struct ContactPointResult {
   std::array<double, 3> normal{};
   std::array<double, 3> slip{};  // accumulated slip (sum of converged increments)
   ContactStatus status = ContactStatus::Free;
-  int cycling = 0;  // cycling kind detected in the step (CyclingKind), 0 none
+  bool frictional = false;  // the point carries friction (mu > 0)
+  int cycling = 0;          // cycling kind detected in the step (CyclingKind), 0 none
 };
+
+// contact_status as written to contact.csv and the VTK output, one meaning everywhere: 0 free,
+// 1 stick, 2 slip (frictional points), 3 closed without friction (no stick or slip to tell).
+constexpr int kOutputClosedFrictionless = 3;
+inline int outputStatus(const ContactPointResult& p) {
+  if (p.status == ContactStatus::Free) return 0;
+  return p.frictional ? static_cast<int>(p.status) : kOutputClosedFrictionless;
+}
 
 struct ContactResultants {
   std::array<double, 3> normalForce{};      // sum w p n (force on the slave surfaces)
@@ -71,7 +83,7 @@ struct ContactResultants {
   double normalForceMagnitude = 0;          // sum w p
   double maxPressure = 0;
   double maxPenetration = 0;  // max(-gap) over closed points, >= 0
-  int contact = 0, stick = 0, slip = 0;
+  int contact = 0, stick = 0, slip = 0, closedFrictionless = 0;
 };
 
 class ContactProblem : public NonlinearSystem, public ContactControls {
@@ -100,6 +112,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void forceStatus(std::size_t point, int status) override;
   bool scaleCoefficients(std::size_t point, double factor) override;
   void releaseTreatments() override;
+  void releaseForcedStatuses() override;
   void seedInitialStatuses(Vector& x, double t) override;
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
@@ -113,6 +126,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   GO numMultipliers() const { return numMultipliers_; }
   // Results of the last assemble() (or commit).
   std::vector<ContactPointResult> results() const;
+  // Slave nodes of a zone where, at the last evaluation, the Dirichlet conditions prescribed a
+  // friction direction, whose multiplier was dropped (PrescribedSlip.hpp). Collective.
+  std::vector<std::int64_t> prescribedSlipNodes(std::size_t zone) const;
   ContactResultants resultants() const;
   // Whether any point has been closed at a converged step (surfaces that never meet: false).
   bool everInContact() const { return everInContact_; }
@@ -168,6 +184,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
 
   Problem& solid_;
   std::vector<ContactZone> zones_;
+  std::unordered_set<GO> constrainedSurfaceDofs_;            // Dirichlet dofs of the surface nodes
   std::vector<std::unique_ptr<RigidObstacle>> obstacles_;    // per zone (null: two bodies)
   std::vector<std::vector<std::int64_t>> masterFacetNodes_;  // per zone, flat
   std::vector<ElementType> masterFacetType_;

@@ -35,7 +35,10 @@ struct ContactZone {
   InitialContact initialContact = InitialContact::interpenetrated;
   Discretization discretization = Discretization::nodeToSegment;
   MultiplierBasis multiplierBasis = MultiplierBasis::Dual;  // mortar only
-  std::string formulation;                                  // registry name, for reports
+  // Boundary group of slave nodes without friction (code_aster's SANS_GROUP_NO_FR); empty:
+  // none. Nodes whose tangential motion the Dirichlet conditions fix need not be listed.
+  std::string noFrictionGroup;
+  std::string formulation;  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
 };
 

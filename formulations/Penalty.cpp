@@ -18,7 +18,10 @@ void Penalty::evaluate(const LawInput& in, LawOutput& out) const {
   out = LawOutput{};
   auto J = [&](int i, int j) -> double& { return out.J[i * n + j]; };
 
-  const bool closed = in.frozenStatus >= 0 ? in.frozenStatus > 0 : in.gap < 0;
+  // Touching (g = 0) is closed: its contact stiffness is what holds a body that only its
+  // contact supports at the first iterate (a zero-gap start under load control). With the open
+  // piece there, the first tangent has no stiffness in the normal direction at all.
+  const bool closed = in.frozenStatus >= 0 ? in.frozenStatus > 0 : in.gap <= 0;
   const double SR = closed ? 1.0 : 0.0;
   out.indicator = -epsN_ * in.gap;
   const double pressure = -SR * epsN_ * in.gap;

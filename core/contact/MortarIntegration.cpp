@@ -150,6 +150,36 @@ std::vector<double> inverse(int n, std::vector<double> a) {
   return inv;
 }
 
+// Dual basis coefficients A = diag(d) M^-1 (row major n x n) from the integrals d_j = int N_j
+// and M_jk = int N_j N_k over the same region: biorthogonal there, int Phi_j N_k = d_j delta_jk.
+// M^-1 is symmetric, so A_jk = d_j (M^-1)_jk.
+std::vector<double> dualCoefficients(int n, const std::vector<double>& d,
+                                     const std::vector<double>& mass) {
+  std::vector<double> A = inverse(n, mass);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      A[j * n + k] *= d[j];
+  return A;
+}
+
+// The whole facet's dual basis from its integrals (wholeFacetIntegrals); throws
+// std::invalid_argument where it does not exist.
+std::vector<double> wholeFacetDualBasis(const Facet& slave, const std::vector<double>& lumped,
+                                        const std::vector<double>& mass) {
+  if (slave.type == ElementType::Tri6 || slave.type == ElementType::Quad8)
+    throw std::invalid_argument(
+        "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
+        ": its corner shape functions integrate to zero (tri6) or a negative value (quad8)");
+  const double area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
+  for (std::size_t j = 0; j < lumped.size(); ++j)
+    if (!(lumped[j] > 1e-12 * area))
+      throw std::invalid_argument(
+          "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
+          ": the shape function of its node " + std::to_string(j) +
+          " does not integrate to a positive value");
+  return dualCoefficients(static_cast<int>(lumped.size()), lumped, mass);
+}
+
 // D += N_S N_S^T dA, M += N_S N_M^T dA (standard basis; the dual one is a transform after).
 void accumulate(int ns, const double* NS, int nm, const double* NM, double dA, double* D,
                 double* M) {
@@ -249,19 +279,23 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     const double lo = std::max(-1.0, std::min(xiEnd[0], xiEnd[1]));
     const double hi = std::min(1.0, std::max(xiEnd[0], xiEnd[1]));
     if (!(hi - lo > 2 * kSliver)) continue;
-    // The ends' projections can also meet through the slave's extrapolation (|xi| >> 1 on a
-    // curved slave, where the interpolated normals swing): a distant master's two ends then
-    // land on both sides of the slave. A true overlap's middle meets the master inside it.
-    {
-      const double xi = 0.5 * (lo + hi);
-      FacetPoint ps, pm;
+    // The slave point at xi (ps) and the master point its normal line meets (pm), from the
+    // ends' correspondence interpolated linearly (exact for straight facets); returns eta.
+    const auto meetMaster = [&](double xi, FacetPoint& ps, FacetPoint& pm) {
       evaluate(sref, slave.coords.data(), &xi, ps);
       double n[2], dn[2];
       line.normalField(ps, n, dn);
       const double etaStart = -1.0 + 2.0 * (xi - xiEnd[0]) / (xiEnd[1] - xiEnd[0]);
+      return projectOnMaster(master, mref, ps.x, n, etaStart, pm);
+    };
+    // The ends' projections can also meet through the slave's extrapolation (|xi| >> 1 on a
+    // curved slave, where the interpolated normals swing): a distant master's two ends then
+    // land on both sides of the slave. A true overlap's middle meets the master inside it.
+    {
+      FacetPoint ps, pm;
       double eta = HUGE_VAL;
       try {
-        eta = projectOnMaster(master, mref, ps.x, n, etaStart, pm);
+        eta = meetMaster(0.5 * (lo + hi), ps, pm);
       } catch (const std::runtime_error&) {
       }
       if (!(std::abs(eta) <= 1.0 + 1e-6)) continue;
@@ -270,15 +304,10 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     const QuadratureRule& rule = quadratureRule(ElementType::Line2, degree);
     MortarMaster mm{m, std::vector<double>(static_cast<std::size_t>(ns) * nm, 0.0)};
     for (int q = 0; q < rule.size(); ++q) {
-      const double xi = 0.5 * (lo + hi) + 0.5 * (hi - lo) * rule.points[q];
       FacetPoint ps, pm;
-      evaluate(sref, slave.coords.data(), &xi, ps);
-      double n[2], dn[2], geometric[3];
-      line.normalField(ps, n, dn);
+      meetMaster(0.5 * (lo + hi) + 0.5 * (hi - lo) * rule.points[q], ps, pm);
+      double geometric[3];
       const double dA = 0.5 * (hi - lo) * rule.weights[q] * areaElement(slave, 2, ps.dN, geometric);
-      // Linear interpolation of the ends' correspondence: exact for straight facets.
-      const double etaStart = -1.0 + 2.0 * (xi - xiEnd[0]) / (xiEnd[1] - xiEnd[0]);
-      projectOnMaster(master, mref, ps.x, n, etaStart, pm);
       accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
       out.coveredArea += dA;
     }
@@ -411,10 +440,7 @@ void toDualBasis(const std::vector<double>& whole, int ns, MortarIntegrals& out)
       for (int k = 0; k < ns; ++k)
         rowSums[j] += out.D[j * ns + k];
     if (*std::min_element(rowSums.begin(), rowSums.end()) > 1e-9 * out.coveredArea) {
-      std::vector<double> covered = inverse(ns, out.D);
-      for (int j = 0; j < ns; ++j)
-        for (int k = 0; k < ns; ++k)
-          covered[j * ns + k] *= rowSums[j];
+      std::vector<double> covered = dualCoefficients(ns, rowSums, out.D);
       if (std::all_of(covered.begin(), covered.end(), [](double a) { return std::isfinite(a); }))
         A.swap(covered);
     }
@@ -435,27 +461,9 @@ void toDualBasis(const std::vector<double>& whole, int ns, MortarIntegrals& out)
 }  // namespace
 
 std::vector<double> dualBasisCoefficients(const Facet& slave) {
-  const int spaceDim = checkFacet(slave);
-  if (slave.type == ElementType::Tri6 || slave.type == ElementType::Quad8)
-    throw std::invalid_argument(
-        "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
-        ": its corner shape functions integrate to zero (tri6) or a negative value (quad8)");
   std::vector<double> mass;
-  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, &mass);
-  const int n = static_cast<int>(lumped.size());
-  const double area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
-  for (int j = 0; j < n; ++j)
-    if (!(lumped[j] > 1e-12 * area))
-      throw std::invalid_argument(
-          "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
-          ": the shape function of its node " + std::to_string(j) +
-          " does not integrate to a positive value");
-  // A = D_e M_e^-1, and M_e^-1 is symmetric: A_jk = d_j (M_e^-1)_jk.
-  std::vector<double> A = inverse(n, mass);
-  for (int j = 0; j < n; ++j)
-    for (int k = 0; k < n; ++k)
-      A[j * n + k] *= lumped[j];
-  return A;
+  const std::vector<double> lumped = wholeFacetIntegrals(slave, checkFacet(slave), &mass);
+  return wholeFacetDualBasis(slave, lumped, mass);
 }
 
 MortarIntegrals integrateMortar(const Facet& slave,
@@ -480,16 +488,18 @@ MortarIntegrals integrateMortar(const Facet& slave,
   }
   MortarIntegrals out;
   out.D.assign(static_cast<std::size_t>(ns) * ns, 0.0);
-  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, nullptr);
+  const bool dual = basis == MultiplierBasis::Dual;
+  std::vector<double> mass;
+  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, dual ? &mass : nullptr);
   out.area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
   // Checks the dual basis exists before integrating (a sentence, not a singular matrix).
   const std::vector<double> whole =
-      basis == MultiplierBasis::Dual ? dualBasisCoefficients(slave) : std::vector<double>();
+      dual ? wholeFacetDualBasis(slave, lumped, mass) : std::vector<double>();
   if (spaceDim == 2)
     integrate2d(slave, slaveNormals, masters, out);
   else
     integrate3d(slave, slaveNormals, masters, out);
-  if (basis == MultiplierBasis::Dual && out.coveredArea > 0) toDualBasis(whole, ns, out);
+  if (dual && out.coveredArea > 0) toDualBasis(whole, ns, out);
   return out;
 }
 

@@ -12,8 +12,8 @@ Mesh generateBox(const BoxParams& p) {
   const auto spec =
       elementSpec("box", p.elementType, {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
   for (int i = 0; i < 3; ++i) {
-    requirePositive("box", "lengths[" + std::to_string(i) + "]", p.lengths[i]);
-    requireDivisions("box", "divisions[" + std::to_string(i) + "]", p.divisions[i]);
+    requirePositive("box", std::string("L") + "xyz"[i], p.lengths[i]);
+    requireDivisions("box", std::string("n") + "xyz"[i], p.divisions[i]);
   }
   const std::string source = "generated box (" + p.elementType + ", " +
                              std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +

@@ -48,16 +48,16 @@ void requireDivisions(const std::string& generator, const std::string& param, in
 }
 
 void requireGrading(const std::string& generator, const ContactGrading& g) {
-  requirePositive(generator, "grading.sizeContact", g.sizeContact);
-  requirePositive(generator, "grading.sizeFar", g.sizeFar);
-  requirePositive(generator, "grading.transitionLength", g.transitionLength);
+  requirePositive(generator, "Size Contact", g.sizeContact);
+  requirePositive(generator, "Size Far", g.sizeFar);
+  requirePositive(generator, "Transition Length", g.transitionLength);
   if (!(g.fineRadius >= 0))
-    throw std::invalid_argument(generator + " generator: grading.fineRadius = " +
+    throw std::invalid_argument(generator + " generator: Fine Radius = " +
                                 formatNumber(g.fineRadius) + " must not be negative");
   if (g.sizeFar < g.sizeContact)
     throw std::invalid_argument(
-        generator + " generator: grading.sizeFar = " + formatNumber(g.sizeFar) +
-        " must not be smaller than grading.sizeContact = " + formatNumber(g.sizeContact));
+        generator + " generator: Size Far = " + formatNumber(g.sizeFar) +
+        " must not be smaller than Size Contact = " + formatNumber(g.sizeContact));
 }
 
 void resetMeshOptions() {

@@ -1,5 +1,6 @@
 #include "core/mesh/GmshExtract.hpp"
 
+#include "core/mesh/FacetOrientation.hpp"
 #include "core/mesh/MeshChecks.hpp"
 
 #include <gmsh.h>
@@ -114,6 +115,7 @@ Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
                              std::to_string(mesh.dim) + " but they contain no elements");
   renumberNodes(mesh, label);
   checkMesh(mesh);
+  orientBoundaryFacets(mesh);
   return mesh;
 }
 

@@ -27,7 +27,7 @@ Mesh generateHalfDisc(const HalfDiscParams& p) {
   using ET = ElementType;
   const auto spec = elementSpec("half-disc", p.elementType,
                                 {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
-  requirePositive("half-disc", "radius", p.radius);
+  requirePositive("half-disc", "Radius", p.radius);
   requireGrading("half-disc", p.grading);
   const std::string source =
       "generated half-disc (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
@@ -68,7 +68,7 @@ Mesh generateRollerOnBase(const RollerOnBaseParams& p) {
   using ET = ElementType;
   const auto spec = elementSpec("roller-on-base", p.elementType,
                                 {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
-  requirePositive("roller-on-base", "radius", p.radius);
+  requirePositive("roller-on-base", "Radius", p.radius);
   requireGrading("roller-on-base", p.grading);
   const bool disc = p.base == "disc";
   if (!disc && p.base != "block")

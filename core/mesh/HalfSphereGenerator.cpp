@@ -15,7 +15,7 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
   using ET = ElementType;
   const auto spec = elementSpec("half-sphere", p.elementType,
                                 {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
-  requirePositive("half-sphere", "radius", p.radius);
+  requirePositive("half-sphere", "Radius", p.radius);
   requireGrading("half-sphere", p.grading);
   const bool block = p.base == "block";
   if (!block && p.base != "none")

@@ -1,6 +1,7 @@
 #include "core/mesh/MeshSourceRegistry.hpp"
 
 #include "core/io/InputError.hpp"
+#include "core/mesh/ElementEstimate.hpp"
 #include "core/mesh/GmshReader.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 
@@ -46,6 +47,19 @@ void addGrading(ParameterList& p, const ContactGrading& g) {
         "Distance over which the size grows from Size Contact to Size Far");
 }
 
+void addElementLimit(ParameterList& p) {
+  p.set(kMaxElementsKey, kDefaultMaxElements,
+        "Refuse before meshing when the estimated element count exceeds this (> 0): a request "
+        "that would exhaust memory ends in a sentence, not in bad_alloc");
+}
+
+// The generator's parameters, checked against its element limit before gmsh runs.
+template <class Params>
+const Params& withinLimit(const std::string& generator, const ParameterList& p, const Params& g) {
+  requireElementLimit(generator, estimateElements(g), p.get<int>(kMaxElementsKey));
+  return g;
+}
+
 ContactGrading grading(const ParameterList& p) {
   return {p.get<double>("Size Contact"), p.get<double>("Size Far"), p.get<double>("Fine Radius"),
           p.get<double>("Transition Length")};
@@ -68,6 +82,7 @@ RCP<const ParameterList> rectangleParameters() {
   p->set("Top Shift", 0.0,
          "Shears the rectangle into a parallelogram: the top edge moves this much along x, "
          "every node by Top Shift * (y - y0) / Ly");
+  addElementLimit(*p);
   return p;
 }
 
@@ -81,6 +96,7 @@ RCP<const ParameterList> boxParameters() {
   p->set("ny", 2, "Divisions along y");
   p->set("nz", 2, "Divisions along z");
   p->set("Element", "hex8", "Element type (tets: 6 per hex cell)", oneOf(k3D));
+  addElementLimit(*p);
   return p;
 }
 
@@ -92,6 +108,7 @@ RCP<const ParameterList> halfDiscParameters() {
   p->set("Radius", d.radius, "Radius");
   addGrading(*p, d.grading);
   p->set("Element", "tri3", "Element type", oneOf(k2D));
+  addElementLimit(*p);
   return p;
 }
 
@@ -109,6 +126,7 @@ RCP<const ParameterList> rollerOnBaseParameters() {
   p->set("Base Height", d.baseHeight, "Block base: height");
   addGrading(*p, d.grading);
   p->set("Element", "quad4", "Element type", oneOf(k2D));
+  addElementLimit(*p);
   return p;
 }
 
@@ -126,6 +144,7 @@ RCP<const ParameterList> halfSphereParameters() {
          oneOf({"none", "block"}));
   p->set("Base Width", d.baseWidth, "Block base: side of its square top, centred under the sphere");
   p->set("Base Height", d.baseHeight, "Block base: depth");
+  addElementLimit(*p);
   return p;
 }
 
@@ -140,6 +159,7 @@ RCP<const ParameterList> stacked2DParameters() {
   p->set("Upper Divisions", arrayOf<int>({3, 3}), "nx, ny of the upper block");
   p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh, degrees");
   p->set("Element", "quad4", "Element type", oneOf(k2D));
+  addElementLimit(*p);
   return p;
 }
 
@@ -156,6 +176,7 @@ RCP<const ParameterList> stacked3DParameters() {
   p->set("Upper Margin", 0.0,
          "How far the upper block's footprint extends beyond the lower's on each side");
   p->set("Element", "hex8", "Element type", oneOf(k3D));
+  addElementLimit(*p);
   return p;
 }
 
@@ -184,7 +205,7 @@ void registerMeshSources() {
            g.divisions = {p.get<int>("nx"), p.get<int>("ny")};
            g.elementType = p.get<std::string>("Element");
            g.topShift = p.get<double>("Top Shift");
-           return std::make_unique<Mesh>(generateRectangle(g));
+           return std::make_unique<Mesh>(generateRectangle(withinLimit("rectangle", p, g)));
          }});
   r.add({"box",
          "Structured box. Block 'body'; faces 'xmin', 'xmax', 'ymin', 'ymax', 'zmin', 'zmax'.",
@@ -194,7 +215,7 @@ void registerMeshSources() {
            g.lengths = {p.get<double>("Lx"), p.get<double>("Ly"), p.get<double>("Lz")};
            g.divisions = {p.get<int>("nx"), p.get<int>("ny"), p.get<int>("nz")};
            g.elementType = p.get<std::string>("Element");
-           return std::make_unique<Mesh>(generateBox(g));
+           return std::make_unique<Mesh>(generateBox(withinLimit("box", p, g)));
          }});
   r.add({"half-disc",
          "Lower half of a disc (Hertz cylinder), graded towards the lowest point. Block 'body'; "
@@ -205,7 +226,7 @@ void registerMeshSources() {
            g.radius = p.get<double>("Radius");
            g.grading = grading(p);
            g.elementType = p.get<std::string>("Element");
-           return std::make_unique<Mesh>(generateHalfDisc(g));
+           return std::make_unique<Mesh>(generateHalfDisc(withinLimit("half-disc", p, g)));
          }});
   r.add({"roller-on-base",
          "Two bodies touching at one point (two-body Hertz, Cattaneo-Mindlin): a half disc "
@@ -221,7 +242,7 @@ void registerMeshSources() {
            g.baseHeight = p.get<double>("Base Height");
            g.grading = grading(p);
            g.elementType = p.get<std::string>("Element");
-           return std::make_unique<Mesh>(generateRollerOnBase(g));
+           return std::make_unique<Mesh>(generateRollerOnBase(withinLimit("roller-on-base", p, g)));
          }});
   r.add({"half-sphere",
          "Lower half of a ball (Hertz sphere), graded towards the lowest point, optionally on a "
@@ -236,7 +257,7 @@ void registerMeshSources() {
            g.base = p.get<std::string>("Base");
            g.baseWidth = p.get<double>("Base Width");
            g.baseHeight = p.get<double>("Base Height");
-           return std::make_unique<Mesh>(generateHalfSphere(g));
+           return std::make_unique<Mesh>(generateHalfSphere(withinLimit("half-sphere", p, g)));
          }});
   r.add({"stacked-blocks-2d",
          "Two separately meshed blocks, one on the other (contact patch test). Blocks 'lower', "
@@ -252,7 +273,8 @@ void registerMeshSources() {
            g.upperDivisions = fixed<2, int>(p, "Upper Divisions");
            g.upperRotationDeg = p.get<double>("Upper Rotation");
            g.elementType = p.get<std::string>("Element");
-           return std::make_unique<Mesh>(generateStackedBlocks2D(g));
+           return std::make_unique<Mesh>(
+               generateStackedBlocks2D(withinLimit("stacked-blocks-2d", p, g)));
          }});
   r.add({"stacked-blocks-3d",
          "Two separately meshed boxes stacked along z. Blocks 'lower', 'upper'; faces "
@@ -269,7 +291,8 @@ void registerMeshSources() {
            g.upperRotationDeg = p.get<double>("Upper Rotation");
            g.upperMargin = p.get<double>("Upper Margin");
            g.elementType = p.get<std::string>("Element");
-           return std::make_unique<Mesh>(generateStackedBlocks3D(g));
+           return std::make_unique<Mesh>(
+               generateStackedBlocks3D(withinLimit("stacked-blocks-3d", p, g)));
          }});
 }
 

@@ -11,10 +11,10 @@ Mesh generateRectangle(const RectangleParams& p) {
   using ET = ElementType;
   const auto spec = elementSpec("rectangle", p.elementType,
                                 {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
-  requirePositive("rectangle", "lengths[0]", p.lengths[0]);
-  requirePositive("rectangle", "lengths[1]", p.lengths[1]);
-  requireDivisions("rectangle", "divisions[0]", p.divisions[0]);
-  requireDivisions("rectangle", "divisions[1]", p.divisions[1]);
+  requirePositive("rectangle", "Lx", p.lengths[0]);
+  requirePositive("rectangle", "Ly", p.lengths[1]);
+  requireDivisions("rectangle", "nx", p.divisions[0]);
+  requireDivisions("rectangle", "ny", p.divisions[1]);
   const std::string source = "generated rectangle (" + p.elementType + ", " +
                              std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
                              ")";

@@ -20,8 +20,8 @@ std::string divisionsText(const int* d, int n) {
 
 void requireStacking(const std::string& generator, double lowerHeight, double upperHeight,
                      double gap, double rotation) {
-  requirePositive(generator, "lowerHeight", lowerHeight);
-  requirePositive(generator, "upperHeight", upperHeight);
+  requirePositive(generator, "Lower Height", lowerHeight);
+  requirePositive(generator, "Upper Height", upperHeight);
   if (!std::isfinite(gap) || gap <= -std::min(lowerHeight, upperHeight))
     throw std::invalid_argument(generator + " generator: gap = " + formatNumber(gap) +
                                 " must be a number larger than minus the smaller block height");

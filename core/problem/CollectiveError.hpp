@@ -10,7 +10,7 @@ namespace contactlab {
 
 void agreeOnError(const Comm& comm, const std::string& localMessage);
 
-// Runs `work`, then agrees: an InputError or std::invalid_argument on any rank is rethrown as
+// Runs `work`, then agrees: any exception on any rank (gmsh's strings included) is rethrown as
 // InputError on all.
 template <class Work>
 void collectively(const Comm& comm, Work&& work) {
@@ -20,6 +20,10 @@ void collectively(const Comm& comm, Work&& work) {
   } catch (const std::exception& e) {
     message = e.what();
     if (message.empty()) message = "unknown error";
+  } catch (const std::string& e) {  // gmsh throws strings
+    message = "gmsh: " + e;
+  } catch (...) {
+    message = "unknown error";
   }
   agreeOnError(comm, message);
 }

@@ -60,6 +60,9 @@ class ContactControls {
   virtual void forceStatus(std::size_t point, int status) = 0;
   virtual bool scaleCoefficients(std::size_t point, double factor) = 0;
   virtual void releaseTreatments() = 0;
+  // Ends the forced statuses (and their frozen thresholds) only: the state is then judged by
+  // the model's own contact law; coefficients and cycling marks stay.
+  virtual void releaseForcedStatuses() = 0;
   // The starting point of the first load step (the zones' Initial Contact): sets the contact
   // multipliers of the state x at time t so that the statuses x gives are those asked for.
   virtual void seedInitialStatuses(Vector& x, double t) = 0;

@@ -143,6 +143,19 @@ cases = [
      ["Output/Critical Mu Tolerance", "[0, 1)"]),
     ("line search without the NOX driver", GOOD + "  Newton: {Line Search: Backtrack}\n", [],
      ["Newton/Line Search 'Backtrack'", "Driver: nox"]),
+    ("a mesh that would exhaust memory", scene_with("nx: 4, ny: 2", "nx: 100000, ny: 100000"), [],
+     ["Mesh", "rectangle", "about 1e+10 elements", "Max Elements"]),
+    ("empty scene file", "\n# nothing\n", [], ["scene.yaml", "the file is empty"]),
+    ("scene file is a directory", None, ["."], ["is a directory"]),
+    ("tab in the indentation", GOOD.replace("  Name: bad-input", "\tName: bad-input"), [],
+     ["scene.yaml", "line 2", "tab in the indentation"]),
+    ("duplicate key", GOOD.replace("  Materials:", "  Name: again\n  Materials:"), [],
+     ["scene.yaml", "line 6", "'Name'", "given twice", "first at line 2"]),
+    ("2D: a z component of a load", scene_with("    p: {Type: pressure, Group: top, Value: 1.0}\n",
+                                                "    p: {Type: traction, Group: top, Vector: [0, -1, 5]}\n"),
+     [], ["Loads/p/Vector", "z component", "2D"]),
+    ("2D: a z displacement", scene_with("Components: xy", "Components: z"), [],
+     ["Dirichlet/fix/Components", "'z'", "2D"]),
     ("contact: initial penetration deeper than an element",
      contact_with("Point: [0.0, 0.0]", "Point: [0.0, 0.9]"), [],
      ["initial penetration larger than an element", "'bottom'", "zone floor"]),
@@ -163,8 +176,8 @@ for name, scene, extra, expected in cases:
                          env=env, timeout=120)
     err = run.stderr.strip()
     problems = []
-    if run.returncode == 0:
-        problems.append("exit code 0")
+    if run.returncode != 2:
+        problems.append(f"exit code {run.returncode}, not 2 (bad input)")
     lines = [l for l in err.splitlines() if l.strip()]
     if not lines or not lines[0].startswith("contactlab: error:"):
         problems.append("no 'contactlab: error:' line")
@@ -180,5 +193,60 @@ for name, scene, extra, expected in cases:
     for p in problems:
         print("       " + p)
     failures += bool(problems)
+
+# The output folder is checked before anything is solved: a file in its place, a file on its
+# path, or a folder that cannot be written is bad input (exit 2, one sentence, nothing solved).
+good = os.path.join(work, "good.yaml")
+open(good, "w").write(GOOD)
+blocker = os.path.join(work, "a-file")
+open(blocker, "w").write("not a folder\n")
+readonly = os.path.join(work, "read-only")
+os.makedirs(readonly)
+os.chmod(readonly, 0o500)
+folder_cases = [("output folder is a file", blocker, ["a-file", "is a file, not a folder"]),
+                ("output folder under a file", os.path.join(blocker, "out"),
+                 ["a-file' is a file, not a folder"])]
+if os.geteuid() != 0:  # root writes anywhere
+    folder_cases.append(("output folder not writable", os.path.join(readonly, "out"),
+                         ["read-only", "Permission denied"]))
+for name, out, expected in folder_cases:
+    run = subprocess.run([exe, "run", good, "--out", out], capture_output=True, text=True, env=env,
+                         timeout=120)
+    err = run.stderr.strip()
+    problems = [f"message lacks {e!r}" for e in expected if e not in err]
+    if run.returncode != 2:
+        problems.append(f"exit code {run.returncode}, not 2")
+    if "step 1" in run.stderr or "converged" in run.stdout:
+        problems.append("the scene was solved before the folder was checked")
+    print(f"{'ok  ' if not problems else 'FAIL'} {name}: {err.splitlines()[0] if err else '(no message)'}")
+    for p in problems:
+        print("       " + p)
+    failures += bool(problems)
+    cases.append(name)
+
+# A new run into an older run's folder removes what that run wrote and this one rewrites: no
+# stale step outlives it (a 1-step run after a 3-step run leaves no result_000002.vtu).
+stale_dir = os.path.join(work, "stale")
+os.makedirs(stale_dir)
+for f in ["result_000002.vtu", ".steps.csv.tmp.123", "summary.json", "notes.txt"]:
+    open(os.path.join(stale_dir, f), "w").write("stale-marker\n")
+run = subprocess.run([exe, "run", good, "--out", stale_dir], capture_output=True, text=True,
+                     env=env, timeout=120)
+left = sorted(os.listdir(stale_dir))
+problems = []
+if run.returncode != 0:
+    problems.append(f"exit code {run.returncode}: {run.stderr.strip()}")
+for f in ["result_000002.vtu", ".steps.csv.tmp.123"]:
+    if f in left:
+        problems.append(f"stale {f} left")
+if "notes.txt" not in left:
+    problems.append("a file the run does not write (notes.txt) was removed")
+if "stale-marker" in open(os.path.join(stale_dir, "summary.json")).read():
+    problems.append("summary.json is the old one")
+print(f"{'ok  ' if not problems else 'FAIL'} stale outputs of an earlier run: {left}")
+for p in problems:
+    print("       " + p)
+failures += bool(problems)
+cases.append("stale outputs")
 print(f"{len(cases) - failures} passed, {failures} failed")
 sys.exit(1 if failures else 0)

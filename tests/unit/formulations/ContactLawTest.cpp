@@ -361,6 +361,21 @@ TEST(ContactLaw, SeparatedPointIsFreeAndExertsNoForce) {
   }
 }
 
+// A body resting on its contact at zero gap under a load (load control): the first tangent
+// needs the contact stiffness. Penalty took the open piece at g = 0 and the first Newton system
+// had no normal stiffness at all (the run ended in max-iterations with no cause given).
+TEST(ContactLaw, PenaltyTouchingPointIsClosedWithItsStiffness) {
+  const auto law = makeLaw("penalty");  // eps_n = 100
+  LawInput in;
+  in.weight = kWeight;
+  in.gap = 0.0;
+  LawOutput out;
+  law->evaluate(in, out);
+  EXPECT_NE(out.status, ContactStatus::Free);
+  EXPECT_EQ(out.pressure, 0.0);
+  EXPECT_DOUBLE_EQ(out.J[0], kWeight * 100.0);
+}
+
 TEST(ContactLaw, ClosedPointUnderCompressionTransmitsThePressure) {
   for (const char* name : {"lagrange", "augmented-lagrangian"}) {
     const auto law = makeLaw(name);

@@ -74,7 +74,7 @@ TEST(BoxGeneratorErrors, NameTheParameter) {
     generateBox(p);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "box generator: divisions[1] = 0 must be at least 1");
+    EXPECT_STREQ(e.what(), "box generator: ny = 0 must be at least 1");
   }
 }
 

@@ -62,7 +62,7 @@ TEST(HalfDiscGeneratorErrors, NameTheParameter) {
     generateHalfDisc(p);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("grading.sizeFar"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("Size Far"), std::string::npos);
   }
   p = HalfDiscParams{};
   p.elementType = "tet4";

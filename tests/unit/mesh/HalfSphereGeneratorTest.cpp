@@ -55,7 +55,7 @@ TEST(HalfSphereGeneratorErrors, NameTheParameter) {
     generateHalfSphere(p);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "half-sphere generator: radius = 0 must be a positive number");
+    EXPECT_STREQ(e.what(), "half-sphere generator: Radius = 0 must be a positive number");
   }
 }
 

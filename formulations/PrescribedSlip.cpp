@@ -1,0 +1,77 @@
+#include "formulations/PrescribedSlip.hpp"
+
+#include <cmath>
+
+namespace contactlab {
+
+PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
+                              const std::vector<char>& free) {
+  PrescribedSlip s;
+  if (nt == 0) return s;
+  // Gram matrices of the slip rows over the free dofs (M) and over all of them (scale).
+  double M[2][2] = {{0, 0}, {0, 0}}, scale = 0;
+  for (int a = 0; a < nu; ++a)
+    for (int k = 0; k < nt; ++k) {
+      const double bk = B[(1 + k) * nu + a];
+      scale += bk * bk;
+      if (!free[a]) continue;
+      for (int j = 0; j < nt; ++j)
+        M[k][j] += bk * B[(1 + j) * nu + a];
+    }
+  // A direction is prescribed when its free part is round-off of the whole operator (the
+  // eigenvalues below come with round-off of order 1e-16 scale; a free direction's part is at
+  // least the square of a shape value, far above 1e-12 unless the point sits on a node).
+  const double tiny = 1e-12 * scale;
+  if (nt == 1) {
+    s.prescribed = M[0][0] <= tiny ? 1 : 0;
+    return s;
+  }
+  // 2 x 2: eigenvalues of the symmetric M, the smaller one's eigenvector prescribed.
+  const double mean = 0.5 * (M[0][0] + M[1][1]);
+  const double radius = std::hypot(0.5 * (M[0][0] - M[1][1]), M[0][1]);
+  const double small = mean - radius, large = mean + radius;
+  if (large <= tiny) {
+    s.prescribed = 2;
+    return s;
+  }
+  if (small > tiny) return s;
+  // The eigenvector of `large` is free; its normal is prescribed.
+  double fx = M[0][1], fy = large - M[0][0];
+  if (std::hypot(fx, fy) <= 1e-300) fx = large - M[1][1], fy = M[0][1];
+  const double norm = std::hypot(fx, fy);
+  s.prescribed = 1;
+  s.basis = {{{fx / norm, -fy / norm}, {fy / norm, fx / norm}}};  // columns (fx, fy), (-fy, fx)
+  return s;
+}
+
+void dropPrescribedFriction(const PrescribedSlip& slip, int nt, double weight,
+                            const std::array<double, 2>& Lambda, int size, LawOutput& out) {
+  if (slip.prescribed == 0) return;
+  const int first = 2 + nt;  // Lambda_1's law variable: (g, v.., p, Lambda..)
+  // Q^T r and Q^T J on the Lambda rows; basis[i][c] = component i of column c.
+  std::array<double, 2> r{};
+  std::array<std::array<double, kMaxLawVariables>, 2> J{};
+  for (int c = 0; c < nt; ++c)
+    for (int i = 0; i < nt; ++i) {
+      const double q = slip.basis[i][c];
+      r[c] += q * out.r[first + i];
+      for (int j = 0; j < size; ++j)
+        J[c][j] += q * out.J[(first + i) * size + j];
+    }
+  for (int c = nt - slip.prescribed; c < nt; ++c) {
+    // The prescribed direction's multiplier is 0: its row is w (q . Lambda).
+    r[c] = 0;
+    J[c].fill(0.0);
+    for (int i = 0; i < nt; ++i) {
+      r[c] += weight * slip.basis[i][c] * Lambda[i];
+      J[c][first + i] = weight * slip.basis[i][c];
+    }
+  }
+  for (int c = 0; c < nt; ++c) {
+    out.r[first + c] = r[c];
+    for (int j = 0; j < size; ++j)
+      out.J[(first + c) * size + j] = J[c][j];
+  }
+}
+
+}  // namespace contactlab

@@ -1,0 +1,36 @@
+#pragma once
+// Friction at a contact point whose tangential motion the Dirichlet conditions already fix (a
+// slave node on a symmetry axis, a supported corner in contact). The slip operators B_k of such
+// a direction vanish on every free dof, so its friction multiplier appears in no free row: the
+// stick law's row (Lambda - Lambda^ = -r_t v) is zero there and the tangent is singular, with
+// every algorithm. code_aster asks the user to list such nodes (SANS_GROUP_NO_FR); here they
+// are found from B: the directions q of the tangent plane with B_q = sum_k q_k B_k = 0 on the
+// free dofs. Their multiplier component q . Lambda is dropped (set to 0 by its own row): the
+// force along q is the support's, and the friction law acts on the free directions. The
+// other rows are rotated with the same orthonormal basis (an invertible recombination of the
+// equations, so the free direction's law is unchanged).
+#include "formulations/ContactLaw.hpp"
+
+#include <array>
+#include <vector>
+
+namespace contactlab {
+
+struct PrescribedSlip {
+  int prescribed = 0;  // directions of the tangent plane whose slip is prescribed (0..nt)
+  // Orthonormal basis of the tangent plane in the point's (t1, t2) coordinates, as columns:
+  // the free directions first, the prescribed ones last.
+  std::array<std::array<double, 2>, 2> basis{{{1, 0}, {0, 1}}};
+};
+
+// B: (1 + nt) x nu row-major operators (row 0 the gap, rows 1..nt the slips) on the element's
+// displacement dofs; free[a] whether dof a is free (not Dirichlet).
+PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
+                              const std::vector<char>& free);
+
+// Replaces the friction multipliers' rows of `out` (law variables 2 + nt .. 1 + 2 nt, after the
+// kinematic ones and p) as described above. Lambda: the multipliers at the point.
+void dropPrescribedFriction(const PrescribedSlip& slip, int nt, double weight,
+                            const std::array<double, 2>& Lambda, int size, LawOutput& out);
+
+}  // namespace contactlab

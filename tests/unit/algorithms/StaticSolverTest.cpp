@@ -1,0 +1,133 @@
+// StaticSolver with a forced cycling treatment: a state that the forced (modified) contact law
+// accepts is a solution only if the model's own law holds there too. A one-unknown system with
+// one contact point: R(x) = x - 1 while the point is forced closed, R(x) = x - natural with
+// the law restored; a scripted Newton cycles the point's zone 1, 3, 1, 3 (sub-cycling 1, which
+// the forced treatment closes) and then solves whatever residual is in effect.
+#include "algorithms/StaticSolver.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <gtest/gtest.h>
+
+namespace contactlab {
+namespace {
+
+class OnePointSystem : public NonlinearSystem, public ContactControls {
+ public:
+  explicit OnePointSystem(double natural)
+      : natural_(natural), map_(Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()))) {}
+
+  double root() const { return forced_ ? 1.0 : natural_; }
+  int zone = 1;
+  bool forced() const { return forced_; }
+
+  // NonlinearSystem
+  Teuchos::RCP<Vector> createVector() const override { return Teuchos::rcp(new Vector(map_)); }
+  void applyDirichlet(double, Vector&) const override {}
+  void assemble(const Vector& x, double, Vector* residual, bool) override {
+    if (residual) residual->getDataNonConst(0)[0] = x.getData(0)[0] - root();
+  }
+  const Teuchos::RCP<Matrix>& tangent() const override { return tangent_; }
+  void commitState(const Vector&, double) override {}
+
+  // ContactControls
+  void freezeStatuses(bool) override {}
+  void freezeThresholds(bool) override {}
+  int updateStatuses(const Vector&, double) override { return 0; }
+  double updateThresholds(const Vector&, double) override { return 0; }
+  int statusChanges() const override { return 0; }
+  std::vector<ContactPointState> pointStates() const override {
+    ContactPointState s;
+    s.zone = zone;
+    s.status = zone >= 3 ? 1 : 0;
+    s.gap = zone == 1 ? 1e-3 : -1e-3;
+    s.length = 1;
+    return {s};
+  }
+  void forceStatus(std::size_t, int status) override { forced_ = status == kForcedClosed; }
+  bool scaleCoefficients(std::size_t, double) override { return false; }
+  void releaseTreatments() override { forced_ = false; }
+  void releaseForcedStatuses() override { forced_ = false; }
+  void seedInitialStatuses(Vector&, double) override {}
+  void markCycling(std::size_t, int) override {}
+  void setFrictionScale(double) override {}
+  void setGeometricTerms(GeometricTerms) override {}
+
+ private:
+  double natural_;
+  bool forced_ = false;
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<Matrix> tangent_;
+};
+
+// Solve 1 cycles (zones 1, 3, 1, 3) and then solves; later solves solve at once, or fail when
+// `naturalFails` and the law is not forced.
+class ScriptedNewton : public NewtonMethod {
+ public:
+  ScriptedNewton(OnePointSystem& system, bool naturalFails)
+      : system_(system), naturalFails_(naturalFails) {}
+  int solves = 0;
+
+  NewtonOutcome solve(Vector& x, const NewtonRequest&, const Observer& observer) override {
+    NewtonOutcome out;
+    if (solves++ == 0)
+      for (int zone : {1, 3, 1, 3}) {
+        system_.zone = zone;
+        observer(++out.iterations, 1.0);
+      }
+    if (naturalFails_ && !system_.forced()) {
+      out.failure = "max-iterations";
+      out.message = "scripted";
+      return out;
+    }
+    x.getDataNonConst(0)[0] = system_.root();
+    observer(++out.iterations, 0.0);
+    return out;
+  }
+
+ private:
+  OnePointSystem& system_;
+  bool naturalFails_;
+};
+
+// One load step with the forced treatment from u = 0; u holds the converged state.
+RunReport runForced(OnePointSystem& system, ScriptedNewton& newton, Vector& u) {
+  StaticSolverOptions options;
+  options.cyclingTreatment = "forced";
+  StaticSolver solver(system, &system, newton, options);
+  return solver.run(u, {});
+}
+
+TEST(StaticSolverForcedTreatment, AStateThatTheModelsLawAcceptsConverges) {
+  OnePointSystem system(/*natural=*/1.0);
+  ScriptedNewton newton(system, /*naturalFails=*/true);
+  auto u = system.createVector();
+  const RunReport report = runForced(system, newton, *u);
+  EXPECT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(newton.solves, 1);
+  EXPECT_EQ(report.cycling[static_cast<int>(CyclingKind::SubCycling1)], 1);
+}
+
+TEST(StaticSolverForcedTreatment, AViolatingStateIsSolvedAgainWithTheLawRestored) {
+  OnePointSystem system(/*natural=*/2.0);
+  ScriptedNewton newton(system, /*naturalFails=*/false);
+  auto u = system.createVector();
+  const RunReport report = runForced(system, newton, *u);
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(newton.solves, 2);
+  EXPECT_DOUBLE_EQ(u->getData(0)[0], 2.0);  // the model's solution, not the forced one
+}
+
+TEST(StaticSolverForcedTreatment, AViolatingStateThatNewtonCannotLeaveIsNamed) {
+  OnePointSystem system(/*natural=*/2.0);
+  ScriptedNewton newton(system, /*naturalFails=*/true);
+  auto u = system.createVector();
+  const RunReport report = runForced(system, newton, *u);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, "degraded-contact");
+  EXPECT_NE(report.message.find("contact points 0"), std::string::npos) << report.message;
+  EXPECT_NE(report.message.find("max-iterations"), std::string::npos) << report.message;
+}
+
+}  // namespace
+}  // namespace contactlab

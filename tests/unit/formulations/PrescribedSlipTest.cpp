@@ -1,0 +1,64 @@
+// Known answers of the prescribed-slip detection (PrescribedSlip.hpp): which directions of the
+// tangent plane the Dirichlet conditions fix, and the rows that drop their multipliers.
+#include "formulations/PrescribedSlip.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace contactlab {
+namespace {
+
+// One slave node on a rigid plane z = 0 (3 dofs), tangents t1, t2 in the plane: B rows
+// (gap, slip 1, slip 2) = (n, t1, t2).
+std::vector<double> pointOnAPlane(double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {0, 0, 1, c, s, 0, -s, c, 0};
+}
+
+TEST(PrescribedSlip, FreeTangentialMotionPrescribesNothing) {
+  EXPECT_EQ(prescribedSlip(pointOnAPlane(0.3), 2, 3, {1, 1, 1}).prescribed, 0);
+  EXPECT_EQ(prescribedSlip(pointOnAPlane(0.3), 2, 3, {1, 1, 0}).prescribed, 0);  // z fixed
+}
+
+TEST(PrescribedSlip, BothTangentsFixedAtACorner) {
+  EXPECT_EQ(prescribedSlip(pointOnAPlane(0.3), 2, 3, {0, 0, 1}).prescribed, 2);
+}
+
+TEST(PrescribedSlip, ASymmetryPlaneFixesOneDirectionWhateverTheTangentBasis) {
+  // x fixed (plane x = 0): the free direction is y, in (t1, t2) coordinates (sin a, cos a).
+  const double a = 0.3;
+  const PrescribedSlip s = prescribedSlip(pointOnAPlane(a), 2, 3, {0, 1, 1});
+  ASSERT_EQ(s.prescribed, 1);
+  const double fy1 = std::sin(a), fy2 = std::cos(a);
+  EXPECT_NEAR(std::abs(s.basis[0][0] * fy1 + s.basis[1][0] * fy2), 1.0, 1e-14);  // free column
+  EXPECT_NEAR(s.basis[0][1] * fy1 + s.basis[1][1] * fy2, 0.0, 1e-14);  // prescribed column
+}
+
+TEST(PrescribedSlip, TwoDimensionsOnASymmetryAxis) {
+  // 2D: (gap, slip) = (y, x) on one node; x fixed.
+  EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {0, 1}).prescribed, 1);
+  EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {1, 0}).prescribed, 0);
+}
+
+TEST(PrescribedSlip, TheDroppedMultiplierIsZeroAndTheOtherRowIsKept) {
+  // A law of size 6 (g, v1, v2, p, L1, L2) with arbitrary rows for L1, L2.
+  LawOutput out;
+  const int n = 6;
+  for (int j = 0; j < n; ++j) {
+    out.J[4 * n + j] = 1.0 + j;
+    out.J[5 * n + j] = 10.0 - j;
+  }
+  out.r[4] = 0.5, out.r[5] = -0.25;
+  PrescribedSlip s;  // t1 free, t2 prescribed
+  s.prescribed = 1;
+  const double w = 2.0;
+  dropPrescribedFriction(s, 2, w, {0.3, 0.7}, n, out);
+  EXPECT_DOUBLE_EQ(out.r[4], 0.5);  // the free row is untouched in the identity basis
+  EXPECT_DOUBLE_EQ(out.J[4 * n + 2], 3.0);
+  EXPECT_DOUBLE_EQ(out.r[5], w * 0.7);  // w Lambda_2
+  for (int j = 0; j < n; ++j)
+    EXPECT_DOUBLE_EQ(out.J[5 * n + j], j == 5 ? w : 0.0);
+}
+
+}  // namespace
+}  // namespace contactlab
