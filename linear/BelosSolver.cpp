@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace contactlab {
@@ -43,8 +45,25 @@ const char* nameOf(Kind kind) {
   return "?";
 }
 
+// The sentence of a Teuchos/Belos exception, without the header TEUCHOS_TEST_FOR_EXCEPTION
+// puts first ("./packages/belos/src/BelosX.hpp:574:", "Throw number = 1", "Throw test that
+// evaluated to true: <code>"): a user gets the reason, not an installed header's path.
 std::string firstLine(const std::string& text) {
-  return text.substr(0, text.find('\n'));
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    line = line.substr(first);
+    const bool location =
+        line.back() == ':' && (line.find(".hpp:") != std::string::npos ||
+                               line.find(".cpp:") != std::string::npos ||
+                               line.find(".h:") != std::string::npos);
+    if (location || line.rfind("Throw number", 0) == 0 || line.rfind("Throw test that", 0) == 0)
+      continue;
+    return line;
+  }
+  return "an internal error of Belos";
 }
 
 // A solve whose true residual exceeds this multiple of the tolerance throws even when Belos
