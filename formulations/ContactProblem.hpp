@@ -183,6 +183,11 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   std::array<double, 3> surfaceDisplacement(std::int64_t node, bool converged) const;
 
   Problem& solid_;
+  // The output pressure of points on tri6 node-to-segment slaves (NaN elsewhere: the
+  // law's), recovered from the nodal forces at each commit (SurfacePressure.hpp).
+  void recoverPressures();
+  ContactPointResult outputResult(std::size_t point) const;
+  std::vector<double> recoveredPressure_;
   std::vector<ContactZone> zones_;
   std::unordered_set<GO> constrainedSurfaceDofs_;            // Dirichlet dofs of the surface nodes
   std::vector<std::unique_ptr<RigidObstacle>> obstacles_;    // per zone (null: two bodies)
