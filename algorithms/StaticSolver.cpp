@@ -336,11 +336,9 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
       // the residual by less than the geometry tolerance, the fixed point has converged too.
       problem_.assemble(x, t, residual.get(), false);
       sr.residual = residual->norm2();
-      if (sr.residual <=
-              std::max(options_.absoluteTolerance, options_.geometryTolerance * reference) &&
-          forcedStateHolds(
-              x, t, std::max(options_.absoluteTolerance, options_.geometryTolerance * reference),
-              *residual))
+      const double geometryTarget =
+          std::max(options_.absoluteTolerance, options_.geometryTolerance * reference);
+      if (sr.residual <= geometryTarget && forcedStateHolds(x, t, geometryTarget, *residual))
         return true;
       continue;
     }

@@ -325,9 +325,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
               .set("value", value));
     }
   };
-  auto contactSummary = [&] {
-    if (!contact) return JsonValue();
-    const ContactResultants r = contact->resultants();
+  auto contactSummary = [&](const ContactResultants& r) {
     auto vec = [&](const std::array<double, 3>& v) {
       return JsonValue::array(std::vector<double>(v.begin(), v.begin() + problem->dim()));
     };
@@ -365,7 +363,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       lastPairing = contact->pairingSeconds();
       lastContact = contact->contactSeconds();
       if (root) writeContactCsv();
-      convergedContact = contactSummary().set("time", s.time);
+      convergedContact = contactSummary(cr).set("time", s.time);
     }
     int events = 0;
     for (int k = 1; k < kCyclingKinds; ++k)
@@ -561,7 +559,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                             .set("total", elapsed()))
         .set("peak_memory_mb", maxMemory)
         .set("contact", convergedContact)
-        .set("failed_iterate", report.converged || !contact ? JsonValue() : contactSummary())
+        .set("failed_iterate",
+             report.converged || !contact ? JsonValue() : contactSummary(contact->resultants()))
         .set("reactions", reactions)
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());

@@ -69,6 +69,7 @@ struct ContactProblem::Point {
   std::array<double, 3> slipIncrement{};
   // Element dofs (GIDs), our column LIDs, owned row LIDs (-1) and positions in surface_.
   std::vector<GO> dofs;
+  std::vector<char> freeDofs;  // per displacement dof of `dofs`: not Dirichlet-constrained
   std::vector<LO> cols, rows;
   std::vector<int> surfacePos;
   // Geometric linearization: the displacement dofs of the master nodes around the facet that
@@ -743,10 +744,12 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
   const DofMap& dofs = solid_.dofs();
   for (Point& pt : points_) {
     pt.dofs.clear();
+    pt.freeDofs.clear();
     pt.surfacePos.clear();
     auto addNode = [&](std::int64_t node) {
       for (int c = 0; c < dim_; ++c) {
         pt.dofs.push_back(dofs.globalNode(node) * dim_ + c);
+        pt.freeDofs.push_back(constrainedSurfaceDofs_.count(pt.dofs.back()) == 0);
         pt.surfacePos.push_back(surfaceIndex_[node] * dim_ + c);
       }
     };
@@ -923,11 +926,8 @@ void ContactProblem::evaluatePoint(Point& pt, double t, bool withTangent, std::v
   LawOutput out;
   law.evaluate(in, out);
   pt.prescribedSlip = 0;
-  if (pt.paired && pt.multiplier >= 0 && nt > 0) {
-    std::vector<char> free(nu);
-    for (int a = 0; a < nu; ++a)
-      free[a] = constrainedSurfaceDofs_.count(pt.dofs[a]) == 0;
-    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, free);
+  if (pt.paired && pt.multiplier >= 0 && nt > 0 && !constrainedSurfaceDofs_.empty()) {
+    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, pt.freeDofs);
     pt.prescribedSlip = prescribed.prescribed;
     dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
   }
@@ -1243,18 +1243,18 @@ void ContactProblem::recoverPressures() {
   }
 }
 
-ContactPointResult ContactProblem::outputResult(std::size_t i) const {
-  ContactPointResult r = points_[i].result;
-  if (i < recoveredPressure_.size() && !std::isnan(recoveredPressure_[i]))
-    r.pressure = recoveredPressure_[i];
-  return r;
+double ContactProblem::outputPressure(std::size_t i) const {
+  const bool recovered = i < recoveredPressure_.size() && !std::isnan(recoveredPressure_[i]);
+  return recovered ? recoveredPressure_[i] : points_[i].result.pressure;
 }
 
 std::vector<ContactPointResult> ContactProblem::results() const {
   std::vector<ContactPointResult> out;
   out.reserve(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i)
-    out.push_back(outputResult(i));
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    out.push_back(points_[i].result);
+    out.back().pressure = outputPressure(i);
+  }
   return out;
 }
 
@@ -1279,7 +1279,7 @@ ContactResultants ContactProblem::resultants() const {
       r.tangentialForce[c] += p.weight * p.traction[c];
     }
     r.normalForceMagnitude += p.weight * p.pressure;
-    r.maxPressure = std::max(r.maxPressure, outputResult(i).pressure);
+    r.maxPressure = std::max(r.maxPressure, outputPressure(i));
     r.maxPenetration = std::max(r.maxPenetration, -p.gap);
   }
   return r;

@@ -186,7 +186,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // The output pressure of points on tri6 node-to-segment slaves (NaN elsewhere: the
   // law's), recovered from the nodal forces at each commit (SurfacePressure.hpp).
   void recoverPressures();
-  ContactPointResult outputResult(std::size_t point) const;
+  double outputPressure(std::size_t point) const;
   std::vector<double> recoveredPressure_;
   std::vector<ContactZone> zones_;
   std::unordered_set<GO> constrainedSurfaceDofs_;            // Dirichlet dofs of the surface nodes

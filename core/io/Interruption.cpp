@@ -23,10 +23,6 @@ void installInterruptionHandlers() {
   std::signal(SIGTERM, onSignal);
 }
 
-int interruptionSignal() {
-  return received;
-}
-
 int interruptionAgreed(MPI_Comm comm) {
   int local = received, global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MAX, comm);

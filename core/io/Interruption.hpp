@@ -8,8 +8,6 @@
 namespace contactlab {
 
 void installInterruptionHandlers();
-// The signal received (SIGINT, SIGTERM), 0 if none. Async-signal-safe to set, cheap to read.
-int interruptionSignal();
 // Collective over `comm`: the largest signal any rank received (0 if none), so that every
 // rank stops at the same iterate.
 int interruptionAgreed(MPI_Comm comm);

@@ -46,6 +46,19 @@ ElementType elementTypeFromGmsh(int gmshType) {
                               "hex27)");
 }
 
+int cornerCount(ElementType type) {
+  switch (info(type).dim) {
+    case 0:
+      return 1;
+    case 1:
+      return 2;
+    case 2:
+      return (type == ElementType::Tri3 || type == ElementType::Tri6) ? 3 : 4;
+    default:
+      return (type == ElementType::Tet4 || type == ElementType::Tet10) ? 4 : 8;
+  }
+}
+
 std::vector<std::string> solidElementTypeNames() {
   std::vector<std::string> names;
   for (const auto& i : kInfo)

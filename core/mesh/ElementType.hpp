@@ -36,6 +36,9 @@ struct ElementTypeInfo {
 
 const ElementTypeInfo& info(ElementType type);
 
+// Number of corner (vertex) nodes; they come first in gmsh's node order.
+int cornerCount(ElementType type);
+
 // Throws std::invalid_argument naming the valid choices when `name` is unknown.
 ElementType elementTypeFromName(const std::string& name);
 

@@ -8,27 +8,6 @@
 namespace contactlab {
 namespace {
 
-int corners(ElementType type) {
-  switch (type) {
-    case ElementType::Point1:
-      return 1;
-    case ElementType::Line2:
-    case ElementType::Line3:
-      return 2;
-    case ElementType::Tri3:
-    case ElementType::Tri6:
-      return 3;
-    case ElementType::Quad4:
-    case ElementType::Quad8:
-    case ElementType::Quad9:
-    case ElementType::Tet4:
-    case ElementType::Tet10:
-      return 4;
-    default:
-      return 8;  // hexahedra
-  }
-}
-
 std::array<double, 3> centroid(const Mesh& mesh, const std::int64_t* nodes, int n) {
   std::array<double, 3> c{};
   for (int a = 0; a < n; ++a)
@@ -42,7 +21,7 @@ std::array<double, 3> cornerNormal(const Mesh& mesh, ElementType type, const std
   const auto x = [&](int a, int i) { return mesh.coords[3 * nodes[a] + i]; };
   if (mesh.dim == 2) return {x(1, 1) - x(0, 1), -(x(1, 0) - x(0, 0)), 0.0};
   // Triangle: (x1 - x0) x (x2 - x0); quadrilateral: the diagonals (x2 - x0) x (x3 - x1).
-  const bool quad = corners(type) == 4;
+  const bool quad = cornerCount(type) == 4;
   std::array<double, 3> a{}, b{};
   for (int i = 0; i < 3; ++i) {
     a[i] = quad ? x(2, i) - x(0, i) : x(1, i) - x(0, i);
@@ -83,7 +62,7 @@ std::size_t orientBoundaryFacets(Mesh& mesh) {
   std::vector<std::vector<std::pair<int, std::size_t>>> around(mesh.numNodes());
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const CellGroup& g = mesh.blocks[b];
-    const int k = corners(g.type), per = g.nodesPerCell();
+    const int k = cornerCount(g.type), per = g.nodesPerCell();
     for (std::size_t e = 0; e < g.size(); ++e)
       for (int a = 0; a < k; ++a)
         around[g.nodes[e * per + a]].emplace_back(static_cast<int>(b), e);
@@ -91,7 +70,7 @@ std::size_t orientBoundaryFacets(Mesh& mesh) {
   std::size_t turned = 0;
   for (CellGroup& f : mesh.boundaries) {
     if (f.dim != mesh.dim - 1) continue;
-    const int k = corners(f.type), per = f.nodesPerCell();
+    const int k = cornerCount(f.type), per = f.nodesPerCell();
     for (std::size_t c = 0; c < f.size(); ++c) {
       std::int64_t* nodes = &f.nodes[c * per];
       const std::pair<int, std::size_t>* owner = nullptr;
@@ -99,7 +78,7 @@ std::size_t orientBoundaryFacets(Mesh& mesh) {
       for (const auto& candidate : around[nodes[0]]) {
         const CellGroup& g = mesh.blocks[candidate.first];
         const std::int64_t* en = &g.nodes[candidate.second * g.nodesPerCell()];
-        const int ek = corners(g.type);
+        const int ek = cornerCount(g.type);
         const bool holds = std::all_of(nodes + 1, nodes + k, [&](std::int64_t node) {
           return std::find(en, en + ek, node) != en + ek;
         });
@@ -108,7 +87,7 @@ std::size_t orientBoundaryFacets(Mesh& mesh) {
       if (owners != 1) continue;
       const CellGroup& g = mesh.blocks[owner->first];
       const auto inside =
-          centroid(mesh, &g.nodes[owner->second * g.nodesPerCell()], corners(g.type));
+          centroid(mesh, &g.nodes[owner->second * g.nodesPerCell()], cornerCount(g.type));
       const auto middle = centroid(mesh, nodes, k);
       const auto n = cornerNormal(mesh, f.type, nodes);
       double outward = 0;

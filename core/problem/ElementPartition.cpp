@@ -6,21 +6,6 @@
 #include <string>
 
 namespace contactlab {
-namespace {
-
-int cornerCount(ElementType type) {
-  switch (info(type).dim) {
-    case 1:
-      return 2;
-    case 2:
-      return (type == ElementType::Tri3 || type == ElementType::Tri6) ? 3 : 4;
-    default:
-      return (type == ElementType::Tet4 || type == ElementType::Tet10) ? 4 : 8;
-  }
-}
-
-}  // namespace
-
 std::vector<ElementRef> allElements(const Mesh& mesh) {
   std::vector<ElementRef> refs;
   refs.reserve(mesh.numElements());
