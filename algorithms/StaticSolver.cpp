@@ -306,7 +306,12 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     sr.seconds.assembly += outcome.assemblySeconds;
     sr.seconds.linearSolve += outcome.linearSolveSeconds;
     report.linearSolves += outcome.iterations;
-    if (!outcome.failure.empty()) return fail(outcome.failure, outcome.message);
+    if (!outcome.failure.empty()) {
+      // A NaN residual from an iterate the solid could not evaluate: say which and where.
+      const AssemblyFailure assembly = problem_.assemblyFailure();
+      if (!assembly.code.empty()) return fail(assembly.code, assembly.message);
+      return fail(outcome.failure, outcome.message);
+    }
     if (statusFixedPoint && controls_->updateStatuses(x, t) > 0) {
       // A status that flips from one fixed-point update to the next cycles too.
       treatCycling(detector_.observe(controls_->pointStates()), sr);

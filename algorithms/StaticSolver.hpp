@@ -82,7 +82,9 @@ struct RunReport {
   std::string failure;      // empty, or a named reason: "diverged", "max-iterations",
                             // "nan-detected", "linear-solver-failed", "nonlinear-solver-error",
                             // "geometry-not-converged", "statuses-not-converged",
-                            // "thresholds-not-converged", "degraded-contact" (a forced
+                            // "thresholds-not-converged", "material-update-failed",
+                            // "inverted-element" (the solid cannot be evaluated at an
+                            // iterate: see AssemblyFailure), "degraded-contact" (a forced
                             // cycling treatment's state violates the contact law and Newton
                             // from it without the treatment failed), "step-too-small",
                             // "interrupted" (SIGINT or SIGTERM)

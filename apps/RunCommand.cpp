@@ -493,6 +493,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       counts.set(cyclingKindName(static_cast<CyclingKind>(k)), report.cycling[k]);
     return counts;
   };
+  const MaterialStateSummary materialState = problem->materialState();  // collective
   if (root) {
     JsonValue reactions = JsonValue::object();
     for (const auto& r : problem->reactions())
@@ -564,6 +565,11 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("reactions", reactions)
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
+    if (materialState.plasticity)
+      summary.set("plasticity",
+                  JsonValue::object()
+                      .set("max_equivalent_plastic_strain", materialState.maxPlasticStrain)
+                      .set("plastic_volume_fraction", materialState.plasticVolumeFraction));
     if (options.criticalMu) summary.set("critical_mu", criticalMu);
     if (checkSolver)
       summary.set("critical_mu_check", JsonValue::object()

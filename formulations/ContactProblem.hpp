@@ -96,6 +96,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void applyDirichlet(double t, Vector& x) const override;
   void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
   const Teuchos::RCP<Matrix>& tangent() const override { return matrix_; }
+  AssemblyFailure assemblyFailure() const override { return solid_.assemblyFailure(); }
   bool takePatternChanged() override;
   // Re-pairs every slave point at x, t. The first call also checks the initial penetration
   // (InputError, on every rank, when a slave point is deeper than its master facet's size).

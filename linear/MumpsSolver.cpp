@@ -224,6 +224,13 @@ void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternCha
     m.irn = std::move(irn);
     m.jcn = std::move(jcn);
     m.id.n = static_cast<MUMPS_INT>(N);
+    // PORD aborts the process on some tiny graphs ("orderMinPriority: no valid number of stages
+    // in multisector", a one-element model); any ordering is as good as another there.
+    constexpr std::int64_t kPordMinimumSize = 64;
+    m.icntl(7) = static_cast<MUMPS_INT>(options_.ordering == Ordering::pord &&
+                                                static_cast<std::int64_t>(N) < kPordMinimumSize
+                                            ? Ordering::amd
+                                            : options_.ordering);
     m.id.nnz_loc = static_cast<MUMPS_INT8>(m.irn.size());
     m.id.irn_loc = m.irn.data();
     m.id.jcn_loc = m.jcn.data();

@@ -3,14 +3,21 @@
 //
 // Conventions (fixed for the whole project):
 //  - Voigt order xx, yy, zz, xy, yz, xz; strains use engineering shears (gamma = 2 eps).
-//  - Plane strain is the 3D law with eps_zz = eps_yz = eps_xz = 0; the 2D kernels pick the
-//    rows/columns {0, 1, 3} and still report sigma_zz.
-//  - Small-strain laws take the linearized strain; finite-strain laws (later) take the
-//    deformation gradient F and return the first Piola-Kirchhoff stress P and dP/dF. The
-//    element kernel asks `kinematics()` which one to provide.
+//  - Plane strain is the 3D law with eps_zz = eps_yz = eps_xz = 0 (finite strain: F_zz = 1,
+//    F_xz = F_zx = F_yz = F_zy = 0); the 2D kernels pick the in-plane components and still
+//    report sigma_zz.
+//  - Small-strain laws take the linearized strain and return the Cauchy stress and
+//    d stress / d strain. Finite-strain laws take the deformation gradient F and return the
+//    first Piola-Kirchhoff stress P (row major, P[i * 3 + J]) and its derivative
+//    dPdF[(i * 3 + J) * 9 + k * 3 + L] = dP_iJ / dF_kL. The element kernel asks
+//    `kinematics()` which one to provide.
 //  - Internal variables live per quadrature point in a flat array of `stateSize()` doubles:
 //    `evaluate` reads the last converged state and writes the trial state; the problem commits
-//    trial to converged after a load step converges.
+//    trial to converged after a load step converges, so a step cut restarts from the converged
+//    state by construction.
+//  - A law that cannot evaluate (a local return map that does not converge, J <= 0) sets
+//    `failed` and a one-line `failure` instead of throwing: the kernel turns it into a named
+//    step failure that step cutting can take over.
 #include <array>
 #include <string>
 
@@ -30,6 +37,8 @@ struct MaterialOutput {
   std::array<double, 9> P{};         // first Piola-Kirchhoff (finite strain only)
   std::array<double, 81> dPdF{};     // (finite strain only)
   double* stateNew = nullptr;
+  bool failed = false;  // the law could not be evaluated; `failure` says why
+  std::string failure;
 };
 
 class Material {
@@ -42,6 +51,9 @@ class Material {
   virtual void evaluate(const MaterialInput& in, MaterialOutput& out) const = 0;
   // Density, for body forces and (later) slow-dynamics mass.
   virtual double density() const { return 0.0; }
+  // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
+  // kernels output it and flag a point plastic when a step increased it.
+  virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }
 };
 
 }  // namespace contactlab

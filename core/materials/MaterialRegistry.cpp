@@ -1,6 +1,9 @@
 #include "core/materials/MaterialRegistry.hpp"
 
+#include "core/materials/J2SmallStrain.hpp"
 #include "core/materials/LinearElastic.hpp"
+#include "core/materials/NeoHookean.hpp"
+#include "core/materials/SaintVenantKirchhoff.hpp"
 
 namespace contactlab {
 
@@ -22,6 +25,81 @@ void registerMaterials() {
        [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
          return std::make_unique<LinearElastic>(p.get<double>("E"), p.get<double>("nu"),
                                                 p.get<double>("density"));
+       }});
+  materialRegistry().add(
+      {"saint-venant-kirchhoff",
+       "Saint Venant-Kirchhoff hyperelasticity, finite strain: S = lambda tr(E) I + 2 mu E with "
+       "the Green-Lagrange strain E (large rotations, small strains).",
+       [] {
+         auto p = Teuchos::rcp(new Teuchos::ParameterList("saint-venant-kirchhoff"));
+         p->set("E", 1.0, "Young's modulus (> 0), in the scene's stress unit");
+         p->set("nu", 0.3, "Poisson's ratio, in (-1, 0.5)");
+         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+         return Teuchos::RCP<const Teuchos::ParameterList>(p);
+       },
+       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
+         return std::make_unique<SaintVenantKirchhoff>(p.get<double>("E"), p.get<double>("nu"),
+                                                       p.get<double>("density"));
+       }});
+  materialRegistry().add(
+      {"neo-hookean",
+       "Compressible neo-Hookean hyperelasticity, finite strain: W = C10 (I1bar - 3) + U(J), "
+       "U = (J - 1)^2 / D1 (Abaqus / code_aster form) or K/4 (J^2 - 1 - 2 ln J). Give either E "
+       "and nu or C10 and D1.",
+       [] {
+         auto p = Teuchos::rcp(new Teuchos::ParameterList("neo-hookean"));
+         p->set("E", 0.0,
+                "Young's modulus (> 0), in the scene's stress unit; with nu it sets C10 = mu / 2 "
+                "and D1 = 2 / K. 0 means not given: then give C10 and D1");
+         p->set("nu", NeoHookean::kDefaultPoissonRatio,
+                "Poisson's ratio, in (-1, 0.5); used only with E");
+         p->set("C10", 0.0,
+                "Coefficient C10 = mu / 2 (> 0), in the scene's stress unit. 0 means not given: "
+                "then give E (and nu)");
+         p->set("D1", 0.0,
+                "Coefficient D1 = 2 / K (> 0), in 1 / (the scene's stress unit); given with C10");
+         p->set("Volumetric Energy", "quadratic",
+                "U(J): 'quadratic' (J - 1)^2 / D1 (Abaqus, code_aster) or 'simo-miehe' "
+                "K/4 (J^2 - 1 - 2 ln J) (Simo & Miehe 1991, deal.II); the same at small strain");
+         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+         return Teuchos::RCP<const Teuchos::ParameterList>(p);
+       },
+       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
+         return std::make_unique<NeoHookean>(NeoHookean::fromParameters(
+             p.get<double>("E"), p.get<double>("nu"), p.get<double>("C10"), p.get<double>("D1"),
+             p.get<double>("density"),
+             NeoHookean::volumetricFromName(p.get<std::string>("Volumetric Energy"))));
+       }});
+  materialRegistry().add(
+      {"j2-small-strain",
+       "Von Mises plasticity, small strain (plane strain in 2D): radial return with linear "
+       "isotropic and linear kinematic (Prager) hardening, consistent tangent.",
+       [] {
+         auto p = Teuchos::rcp(new Teuchos::ParameterList("j2-small-strain"));
+         p->set("E", 1.0, "Young's modulus (> 0), in the scene's stress unit");
+         p->set("nu", 0.3, "Poisson's ratio, in (-1, 0.5)");
+         p->set("Yield Stress", 0.0,
+                "Initial uniaxial yield stress sigma_y0 (> 0, must be given), in the scene's "
+                "stress unit");
+         p->set("Isotropic Hardening Modulus", 0.0,
+                "Linear isotropic hardening H_iso (>= 0), in the scene's stress unit: the yield "
+                "stress is sigma_y0 + H_iso p, p the equivalent plastic strain");
+         p->set("Kinematic Hardening Modulus", 0.0,
+                "Linear kinematic (Prager) hardening H_kin (>= 0), in the scene's stress unit: "
+                "d alpha = (2/3) H_kin d eps_p. In uniaxial stress the plastic modulus is "
+                "H_iso + H_kin");
+         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+         return Teuchos::RCP<const Teuchos::ParameterList>(p);
+       },
+       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
+         J2SmallStrain::Parameters j2;
+         j2.youngModulus = p.get<double>("E");
+         j2.poissonRatio = p.get<double>("nu");
+         j2.yieldStress = p.get<double>("Yield Stress");
+         j2.isotropicHardening = p.get<double>("Isotropic Hardening Modulus");
+         j2.kinematicHardening = p.get<double>("Kinematic Hardening Modulus");
+         j2.density = p.get<double>("density");
+         return std::make_unique<J2SmallStrain>(j2);
        }});
 }
 

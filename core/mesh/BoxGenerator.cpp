@@ -15,6 +15,7 @@ Mesh generateBox(const BoxParams& p) {
     requirePositive("box", std::string("L") + "xyz"[i], p.lengths[i]);
     requireDivisions("box", std::string("n") + "xyz"[i], p.divisions[i]);
   }
+  if (p.xyCorners) requireConvexQuadrilateral("box", *p.xyCorners);
   const std::string source = "generated box (" + p.elementType + ", " +
                              std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
                              "x" + std::to_string(p.divisions[2]) + ")";
@@ -27,7 +28,11 @@ Mesh generateBox(const BoxParams& p) {
       addGroup(2, {b.faces[i]}, faces[i]);
     gmsh::model::mesh::generate(3);
     applyOrder(spec);
-    return meshFromGmshModel(source, source);
+    Mesh mesh = meshFromGmshModel(source, source);
+    if (p.xyCorners)
+      mapOntoQuadrilateral(mesh, {p.origin[0], p.origin[1]}, {p.lengths[0], p.lengths[1]},
+                           *p.xyCorners);
+    return mesh;
   });
 }
 

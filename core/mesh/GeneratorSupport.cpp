@@ -228,4 +228,31 @@ void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy
   }
 }
 
+void requireConvexQuadrilateral(const std::string& generator, const std::array<double, 8>& c) {
+  for (int k = 0; k < 4; ++k) {
+    const int a = k, b = (k + 1) % 4, d = (k + 2) % 4;
+    const double turn = (c[2 * b] - c[2 * a]) * (c[2 * d + 1] - c[2 * b + 1]) -
+                        (c[2 * b + 1] - c[2 * a + 1]) * (c[2 * d] - c[2 * b]);
+    if (!(turn > 0))
+      throw std::invalid_argument(generator +
+                                  ": the corners must list a convex quadrilateral "
+                                  "counter-clockwise (bottom-left, bottom-right, top-right, "
+                                  "top-left)");
+  }
+}
+
+void mapOntoQuadrilateral(Mesh& mesh, const std::array<double, 2>& origin,
+                          const std::array<double, 2>& lengths,
+                          const std::array<double, 8>& corners) {
+  for (std::size_t n = 0; n < mesh.numNodes(); ++n) {
+    double* x = &mesh.coords[3 * n];
+    const double xi = (x[0] - origin[0]) / lengths[0], eta = (x[1] - origin[1]) / lengths[1];
+    const double N[4] = {(1 - xi) * (1 - eta), xi * (1 - eta), xi * eta, (1 - xi) * eta};
+    x[0] = x[1] = 0.0;
+    for (int c = 0; c < 4; ++c)
+      for (int i = 0; i < 2; ++i)
+        x[i] += N[c] * corners[2 * c + i];
+  }
+}
+
 }  // namespace contactlab

@@ -64,6 +64,16 @@ BoxEntities addStructuredBox(const std::array<double, 3>& origin,
 void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& grading,
                     double sizeFactor);
 
+// Throws std::invalid_argument unless corners (x0 y0 ... x3 y3) list a convex quadrilateral
+// counter-clockwise, so that the bilinear map below is one to one.
+void requireConvexQuadrilateral(const std::string& generator, const std::array<double, 8>& corners);
+// Maps every node's (x, y) from the rectangle origin + [0, Lx] x [0, Ly] bilinearly onto the
+// quadrilateral `corners` (z unchanged). Straight grid lines of a structured mesh stay straight
+// and mid-side nodes on them stay in the middle.
+void mapOntoQuadrilateral(Mesh& mesh, const std::array<double, 2>& origin,
+                          const std::array<double, 2>& lengths,
+                          const std::array<double, 8>& corners);
+
 // Rotates the nodes of block `name` about the vertical axis through (cx, cy), in degrees.
 void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees);
 

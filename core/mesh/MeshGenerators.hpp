@@ -8,6 +8,7 @@
 #include "core/mesh/Mesh.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace contactlab {
@@ -22,6 +23,10 @@ struct RectangleParams {
   std::array<int, 2> divisions{1, 1};
   double topShift = 0.0;
   std::string elementType = "quad4";
+  // When set, the rectangle is mapped bilinearly onto this quadrilateral (x0 y0 ... x3 y3 for
+  // the corners bottom-left, bottom-right, top-right, top-left; convex, counter-clockwise):
+  // Cook's membrane. Element sides stay straight; the boundary names keep their corners.
+  std::optional<std::array<double, 8>> corners;
 };
 Mesh generateRectangle(const RectangleParams& p);
 
@@ -33,6 +38,9 @@ struct BoxParams {
   std::array<double, 3> lengths{1.0, 1.0, 1.0};
   std::array<int, 3> divisions{1, 1, 1};
   std::string elementType = "hex8";
+  // When set, (x, y) are mapped bilinearly onto this quadrilateral as in RectangleParams
+  // (a slab of Cook's membrane); z keeps origin[2] + [0, Lz].
+  std::optional<std::array<double, 8>> xyCorners;
 };
 Mesh generateBox(const BoxParams& p);
 

@@ -86,6 +86,18 @@ RCP<const ParameterList> rectangleParameters() {
   return p;
 }
 
+RCP<const ParameterList> quadrilateralParameters() {
+  auto p = Teuchos::rcp(new ParameterList("quadrilateral"));
+  p->set("Corners", arrayOf<double>({0.0, 0.0, 48.0, 44.0, 48.0, 60.0, 0.0, 44.0}),
+         "x y of the corners bottom-left, bottom-right, top-right, top-left (8 numbers, "
+         "counter-clockwise, convex); the default is Cook's membrane");
+  p->set("nx", 4, "Divisions from the left side to the right side");
+  p->set("ny", 4, "Divisions from the bottom side to the top side");
+  p->set("Element", "quad4", "Element type (tri3 splits each quad in two)", oneOf(k2D));
+  addElementLimit(*p);
+  return p;
+}
+
 RCP<const ParameterList> boxParameters() {
   auto p = Teuchos::rcp(new ParameterList("box"));
   p->set("Origin", arrayOf<double>({0.0, 0.0, 0.0}), "Corner with the smallest coordinates");
@@ -96,6 +108,11 @@ RCP<const ParameterList> boxParameters() {
   p->set("ny", 2, "Divisions along y");
   p->set("nz", 2, "Divisions along z");
   p->set("Element", "hex8", "Element type (tets: 6 per hex cell)", oneOf(k3D));
+  p->set("XY Corners", Array<double>(),
+         "Optional: x y of four corners (bottom-left, bottom-right, top-right, top-left; "
+         "convex, counter-clockwise) onto which the box's x-y section is mapped bilinearly, "
+         "e.g. [0, 0, 48, 44, 48, 60, 0, 44] for a slab of Cook's membrane; Lx and Ly then "
+         "only set the grid's proportions. Empty: the box itself");
   addElementLimit(*p);
   return p;
 }
@@ -207,6 +224,18 @@ void registerMeshSources() {
            g.topShift = p.get<double>("Top Shift");
            return std::make_unique<Mesh>(generateRectangle(withinLimit("rectangle", p, g)));
          }});
+  r.add({"quadrilateral",
+         "Structured mesh of a quadrilateral with straight sides (a bilinear map of the unit "
+         "square; Cook's membrane by default). Block 'body'; boundaries 'bottom', 'right', "
+         "'top', 'left' (the sides from each corner to the next), points 'corner-bl', "
+         "'corner-br', 'corner-tr', 'corner-tl'.",
+         quadrilateralParameters, [](const ParameterList& p, const std::string&) {
+           RectangleParams g;
+           g.corners = fixed<8, double>(p, "Corners");
+           g.divisions = {p.get<int>("nx"), p.get<int>("ny")};
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateRectangle(withinLimit("quadrilateral", p, g)));
+         }});
   r.add({"box",
          "Structured box. Block 'body'; faces 'xmin', 'xmax', 'ymin', 'ymax', 'zmin', 'zmax'.",
          boxParameters, [](const ParameterList& p, const std::string&) {
@@ -215,6 +244,8 @@ void registerMeshSources() {
            g.lengths = {p.get<double>("Lx"), p.get<double>("Ly"), p.get<double>("Lz")};
            g.divisions = {p.get<int>("nx"), p.get<int>("ny"), p.get<int>("nz")};
            g.elementType = p.get<std::string>("Element");
+           if (!p.get<Array<double>>("XY Corners").empty())
+             g.xyCorners = fixed<8, double>(p, "XY Corners");
            return std::make_unique<Mesh>(generateBox(withinLimit("box", p, g)));
          }});
   r.add({"half-disc",

@@ -15,6 +15,7 @@ Mesh generateRectangle(const RectangleParams& p) {
   requirePositive("rectangle", "Ly", p.lengths[1]);
   requireDivisions("rectangle", "nx", p.divisions[0]);
   requireDivisions("rectangle", "ny", p.divisions[1]);
+  if (p.corners) requireConvexQuadrilateral("quadrilateral", *p.corners);
   const std::string source = "generated rectangle (" + p.elementType + ", " +
                              std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
                              ")";
@@ -32,8 +33,12 @@ Mesh generateRectangle(const RectangleParams& p) {
     applyOrder(spec);
     Mesh mesh = meshFromGmshModel(source, source);
     // An affine map keeps straight edges straight and mid-side nodes in the middle.
-    for (std::size_t n = 0; n < mesh.numNodes(); ++n)
-      mesh.coords[3 * n] += p.topShift * (mesh.coords[3 * n + 1] - p.origin[1]) / p.lengths[1];
+    if (p.corners) {
+      mapOntoQuadrilateral(mesh, p.origin, p.lengths, *p.corners);
+    } else {
+      for (std::size_t n = 0; n < mesh.numNodes(); ++n)
+        mesh.coords[3 * n] += p.topShift * (mesh.coords[3 * n + 1] - p.origin[1]) / p.lengths[1];
+    }
     return mesh;
   });
 }

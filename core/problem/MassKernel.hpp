@@ -3,7 +3,7 @@
 // rule exact for N_a N_b on affine cells (degree 2 * order). Lumped: HRZ (Hinton, Rock,
 // Zienkiewicz 1976), the consistent diagonal scaled to the element's total mass, positive for
 // quadratic elements too (row sums are not: a tri6 or tet10 corner gets zero or negative mass).
-// Layout: numDofs()^2 row major, dof a * dim + i, as SolidKernel.
+// Layout: numDofs()^2 row major, dof a * dim + i, as SmallStrainKernel.
 #include "core/fem/QuadratureRule.hpp"
 #include "core/mesh/ElementType.hpp"
 

@@ -10,7 +10,17 @@
 
 #include <Teuchos_RCP.hpp>
 
+#include <string>
+
 namespace contactlab {
+
+// Why the last assemble() could not evaluate its iterate (the residual then holds NaN, so every
+// Newton variant stops): a named step failure ("material-update-failed", "inverted-element")
+// and a sentence naming the element. Empty code: the last assembly evaluated everything.
+struct AssemblyFailure {
+  std::string code;
+  std::string message;
+};
 
 class NonlinearSystem {
  public:
@@ -21,6 +31,8 @@ class NonlinearSystem {
   // Assembles R(x, t) into `residual` (if not null) and dR/dx into tangent() when requested.
   virtual void assemble(const Vector& x, double t, Vector* residual, bool withTangent) = 0;
   virtual const Teuchos::RCP<Matrix>& tangent() const = 0;
+  // Same on every rank (collective inside assemble()).
+  virtual AssemblyFailure assemblyFailure() const { return {}; }
   // True when the tangent's sparsity pattern changed since the last call (the linear solver
   // must then redo its symbolic analysis).
   virtual bool takePatternChanged() { return false; }

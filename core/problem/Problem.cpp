@@ -5,13 +5,15 @@
 #include "core/fem/ReferenceElement.hpp"
 #include "core/io/InputError.hpp"
 #include "core/problem/CollectiveError.hpp"
+#include "core/problem/ElementKernel.hpp"
+#include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
-#include "core/problem/SolidKernel.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -24,6 +26,7 @@ struct Problem::LocalElement {
   std::vector<int> nodes;  // overlap node indices
   std::vector<LO> rows;    // overlap-map LIDs of its dofs
   std::vector<double> stateOld, stateNew;
+  bool plastic = false;  // the last converged step increased the plastic strain somewhere
 };
 
 namespace {
@@ -56,13 +59,15 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
     blockMaterial_[b] = model_.materials.at(mesh.blocks[b].name).get();
 
-  std::map<ElementType, int> kernelOf;
+  std::map<std::pair<ElementType, Kinematics>, int> kernelOf;
   const int dim = mesh.dim;
   for (const auto& ref : dofs_->localElements()) {
     const auto& block = mesh.blocks[ref.block];
-    auto [it, inserted] = kernelOf.emplace(block.type, static_cast<int>(kernels_.size()));
+    const Kinematics kinematics = blockMaterial_[ref.block]->kinematics();
+    auto [it, inserted] =
+        kernelOf.emplace(std::make_pair(block.type, kinematics), static_cast<int>(kernels_.size()));
     if (inserted) {
-      kernels_.push_back(std::make_unique<SolidKernel>(block.type));
+      kernels_.push_back(makeElementKernel(block.type, kinematics));
       if (model_.slowDynamics.enabled)
         massKernels_.push_back(std::make_unique<MassKernel>(block.type));
     }
@@ -337,6 +342,8 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   const bool inertiaForce = c > 0 && sd.inertiaInResidual && residual;
   if (inertiaForce) predictInertiaReference(t);
   std::vector<double> x, ue, fe, ke, me;
+  int failureCode = 0;  // 1: material-update-failed, 2: inverted-element
+  std::string failureMessage;
   for (auto& e : elements_) {
     const std::size_t nd = e.rows.size();
     gatherCoordinates(e.nodes, x);
@@ -345,11 +352,22 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
       ue[i] = uo[e.rows[i]];
     fe.assign(nd, 0.0);
     if (withTangent) ke.assign(nd * nd, 0.0);
-    const SolidKernel& kernel = *kernels_[e.kernel];
-    kernel.compute(x.data(), ue.data(), *blockMaterial_[e.block],
-                   e.stateOld.empty() ? nullptr : e.stateOld.data(),
-                   e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
-                   withTangent ? ke.data() : nullptr);
+    try {
+      kernels_[e.kernel]->compute(x.data(), ue.data(), *blockMaterial_[e.block],
+                                  e.stateOld.empty() ? nullptr : e.stateOld.data(),
+                                  e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
+                                  withTangent ? ke.data() : nullptr);
+    } catch (const ElementUpdateError& err) {
+      // Not thrown on: the other ranks are on their way to the collective calls below. The
+      // NaN stops every Newton variant; assemblyFailure() says why.
+      if (failureCode == 0) {
+        failureCode = err.code() == "inverted-element" ? 2 : 1;
+        failureMessage = elementLabel(*model_.mesh, e.block, e.cell) + ", quadrature point " +
+                         std::to_string(err.point()) + ": " + err.what();
+      }
+      fe.assign(nd, std::numeric_limits<double>::quiet_NaN());
+      if (withTangent) ke.assign(nd * nd, 0.0);
+    }
     if (c > 0 && (inertiaForce || withTangent)) {
       me.assign(nd * nd, 0.0);
       massKernels_[e.kernel]->add(x.data(), blockMaterial_[e.block]->density(), sd.lumped,
@@ -371,6 +389,14 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     for (const auto& c : constraints_)
       assembler_->addDiagonal(c.lid, 1.0);
     assembler_->end();
+  }
+  int globalFailure = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, failureCode, Teuchos::outArg(globalFailure));
+  assemblyFailure_ = {};
+  if (globalFailure > 0) {
+    assemblyFailure_.code = globalFailure == 2 ? "inverted-element" : "material-update-failed";
+    assemblyFailure_.message =
+        failureCode == globalFailure ? failureMessage : "an element of another rank failed";
   }
   if (!residual) return;
 
@@ -400,8 +426,46 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
 }
 
 void Problem::commitState() {
-  for (auto& e : elements_)
+  for (auto& e : elements_) {
+    if (e.stateNew.empty()) continue;
+    const Material& material = *blockMaterial_[e.block];
+    const int ss = material.stateSize();
+    e.plastic = false;
+    for (std::size_t q = 0; q * ss < e.stateNew.size(); ++q)
+      e.plastic = e.plastic || material.equivalentPlasticStrain(&e.stateNew[q * ss]) >
+                                   material.equivalentPlasticStrain(&e.stateOld[q * ss]);
     e.stateOld = e.stateNew;
+  }
+}
+
+MaterialStateSummary Problem::materialState() const {
+  std::array<double, 3> local{}, global{};  // max plastic strain, plastic volume, volume
+  int plasticity = 0;
+  std::vector<double> x, w;
+  for (const auto& e : elements_) {
+    if (e.stateOld.empty()) continue;
+    plasticity = 1;
+    const Material& material = *blockMaterial_[e.block];
+    const ElementKernel& kernel = *kernels_[e.kernel];
+    gatherCoordinates(e.nodes, x);
+    w.resize(kernel.numQuadraturePoints());
+    kernel.pointMeasures(x.data(), w.data());
+    for (int q = 0; q < kernel.numQuadraturePoints(); ++q) {
+      const double p = material.equivalentPlasticStrain(&e.stateOld[q * material.stateSize()]);
+      local[0] = std::max(local[0], p);
+      if (p > 0) local[1] += w[q];
+      local[2] += w[q];
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, local.data(), global.data());
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, local.data() + 1, global.data() + 1);
+  int anyPlasticity = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, plasticity, Teuchos::outArg(anyPlasticity));
+  MaterialStateSummary summary;
+  summary.plasticity = anyPlasticity > 0;
+  summary.maxPlasticStrain = global[0];
+  summary.plasticVolumeFraction = global[2] > 0 ? global[1] / global[2] : 0.0;
+  return summary;
 }
 
 void Problem::commitState(const Vector& u, double t) {
@@ -462,6 +526,7 @@ MeshPiece Problem::outputPiece(const Vector& u) const {
   piece.pointData.push_back(std::move(disp));
   FieldData stress{"stress", 6, {}}, vm{"von_mises", 1, {}}, material{"material", 1, {}},
       rank{"rank", 1, {}};
+  std::vector<double> plasticStrain(elements_.size(), 0.0), plastic(elements_.size(), 0.0);
   piece.offsets.push_back(0);
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const auto& e = elements_[i];
@@ -476,8 +541,22 @@ MeshPiece Problem::outputPiece(const Vector& u) const {
     vm.values.push_back(std::sqrt(j2));
     material.values.push_back(e.block);
     rank.values.push_back(comm_->getRank());
+    if (!e.stateOld.empty()) {
+      const Material& law = *blockMaterial_[e.block];
+      const int nq = static_cast<int>(e.stateOld.size()) / law.stateSize();
+      double sum = 0;
+      for (int q = 0; q < nq; ++q)
+        sum += law.equivalentPlasticStrain(&e.stateOld[q * law.stateSize()]);
+      plasticStrain[i] = sum / nq;
+      plastic[i] = e.plastic ? 1.0 : 0.0;
+    }
   }
   piece.cellData = {std::move(stress), std::move(vm), std::move(material), std::move(rank)};
+  // Every rank writes the same fields (a piece without plastic elements writes zeros).
+  if (model_.hasInternalVariables()) {
+    piece.cellData.push_back({"equivalent_plastic_strain", 1, std::move(plasticStrain)});
+    piece.cellData.push_back({"plastic", 1, std::move(plastic)});
+  }
   return piece;
 }
 

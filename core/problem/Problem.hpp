@@ -25,7 +25,7 @@ namespace contactlab {
 
 class MassKernel;
 class MatrixAssembler;
-class SolidKernel;
+class ElementKernel;
 class SurfaceLoadKernel;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
@@ -34,6 +34,13 @@ struct DisplacementErrors {
   double energy = 0;   // |u_h - u|_H1 (seminorm: the energy-norm rate)
   double l2Exact = 0;  // ||u||_L2, for relative errors
   double energyExact = 0;
+};
+
+// The internal variables' state over the model (collective), for summary.json.
+struct MaterialStateSummary {
+  bool plasticity = false;           // some block's material has internal variables
+  double maxPlasticStrain = 0;       // largest equivalent plastic strain at a point
+  double plasticVolumeFraction = 0;  // reference volume where it is > 0, over the total
 };
 
 struct Reaction {
@@ -61,6 +68,7 @@ class Problem : public NonlinearSystem {
   void applyDirichlet(double t, Vector& u) const override;
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
+  AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
   // Reactions of the Dirichlet conditions at the last assemble() with a residual.
   const std::vector<Reaction>& reactions() const { return reactions_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
@@ -70,9 +78,11 @@ class Problem : public NonlinearSystem {
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
 
-  // This rank's elements and nodes with displacement, stress (cell average), von_mises,
-  // material (block index) and rank, for the result writers.
+  // This rank's elements and nodes with displacement, stress (cell average, Cauchy), von_mises,
+  // material (block index) and rank, and with plasticity equivalent_plastic_strain (cell
+  // average) and plastic (1 where the last converged step increased it), for the writers.
   MeshPiece outputPiece(const Vector& u) const;
+  MaterialStateSummary materialState() const;
   // Errors against an exact displacement u(x) and gradient du_i/dx_j (grad[i * 3 + j]),
   // integrated with a rule two degrees above the element's order (collective).
   DisplacementErrors displacementErrors(
@@ -99,7 +109,7 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<const Comm> comm_;
   std::unique_ptr<DofMap> dofs_;
   std::vector<LocalElement> elements_;
-  std::vector<std::unique_ptr<SolidKernel>> kernels_;     // one per element type in use
+  std::vector<std::unique_ptr<ElementKernel>> kernels_;   // one per element type and kinematics
   std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order; slow dynamics only
   // Converged displacements (overlap) of the last two steps and the inertia reference u*.
   struct InertiaState {
@@ -130,6 +140,7 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<Import> importer_;
   std::vector<Reaction> reactions_;
+  AssemblyFailure assemblyFailure_;
 };
 
 }  // namespace contactlab

@@ -21,6 +21,13 @@ struct SolidModel {
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
   SlowDynamics slowDynamics;
+
+  // Some block's material carries internal variables (plasticity): outputs add its fields.
+  bool hasInternalVariables() const {
+    for (const auto& [block, material] : materials)
+      if (material->stateSize() > 0) return true;
+    return false;
+  }
 };
 
 }  // namespace contactlab

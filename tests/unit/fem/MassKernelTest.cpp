@@ -1,7 +1,7 @@
 #include "tests/unit/fem/FemTestSupport.hpp"
 
 #include "core/problem/MassKernel.hpp"
-#include "core/problem/SolidKernel.hpp"
+#include "core/problem/SmallStrainKernel.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@ using test::nameOf;
 
 // Volume with a rule far above what any element needs: the reference for the mass' total.
 double exactVolume(ElementType t, const std::vector<double>& x) {
-  return SolidKernel(t, 8).volume(x.data());
+  return SmallStrainKernel(t, 8).volume(x.data());
 }
 
 TEST(MassKernel, ConsistentMassIsSymmetricPerComponentAndHoldsTheElementMass) {

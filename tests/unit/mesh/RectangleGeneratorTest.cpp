@@ -97,6 +97,26 @@ TEST(RectangleGenerator, TopShiftShearsIntoAParallelogram) {
   }
 }
 
+TEST(RectangleGenerator, CornersMapOntoCooksMembrane) {
+  RectangleParams p;
+  p.divisions = {4, 3};
+  p.elementType = "quad9";
+  p.corners = std::array<double, 8>{0, 0, 48, 44, 48, 60, 0, 44};
+  const Mesh mesh = generateRectangle(p);
+  // Trapezoid with parallel sides 44 and 16, 48 apart; straight sides keep quad9's area exact.
+  EXPECT_NEAR(test::blockMeasure(mesh, "body"), 48.0 * (44.0 + 16.0) / 2.0, 1e-9);
+  EXPECT_GT(test::minJacobian(mesh), 0.0);
+  const auto tr = mesh.boundaryNodes("corner-tr");
+  EXPECT_NEAR(test::node(mesh, tr[0])[0], 48.0, 1e-12);
+  EXPECT_NEAR(test::node(mesh, tr[0])[1], 60.0, 1e-12);
+  for (auto k : mesh.boundaryNodes("bottom")) {
+    const auto x = test::node(mesh, k);
+    EXPECT_NEAR(x[1], 44.0 / 48.0 * x[0], 1e-12);
+  }
+  p.corners = std::array<double, 8>{0, 0, 0, 44, 48, 60, 48, 44};  // clockwise
+  EXPECT_THROW(generateRectangle(p), std::invalid_argument);
+}
+
 TEST(RectangleGeneratorErrors, NameTheParameter) {
   RectangleParams p;
   p.elementType = "hex8";

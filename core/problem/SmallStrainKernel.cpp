@@ -1,7 +1,8 @@
-#include "core/problem/SolidKernel.hpp"
+#include "core/problem/SmallStrainKernel.hpp"
 
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/ReferenceElement.hpp"
+#include "core/problem/ElementUpdateError.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,7 +11,6 @@
 namespace contactlab {
 namespace {
 
-constexpr int kMaxNodes = 27;
 // Voigt index of the tensor component (i, j): full 3D, and 2D within the plane-strain rows.
 constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 constexpr int kVoigt2[2][2] = {{0, 2}, {2, 1}};
@@ -23,53 +23,18 @@ constexpr int voigt(int i, int j) {
 
 }  // namespace
 
-SolidKernel::SolidKernel(ElementType type, int quadratureDegree)
-    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes) {
-  if (dim_ != 2 && dim_ != 3)
-    throw std::invalid_argument(std::string("SolidKernel needs a 2D or 3D cell type, got ") +
-                                info(type).name);
-  rule_ = &quadratureRule(
-      type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type) : quadratureDegree);
-  numPoints_ = rule_->size();
-  const ReferenceElement& ref = ReferenceElement::get(type);
-  N_.resize(numPoints_ * numNodes_);
-  dNdxi_.resize(numPoints_ * numNodes_ * dim_);
-  for (int q = 0; q < numPoints_; ++q) {
-    const double* xi = &rule_->points[q * dim_];
-    ref.shape(xi, &N_[q * numNodes_]);
-    ref.shapeDerivatives(xi, &dNdxi_[q * numNodes_ * dim_]);
-  }
-}
-
-void SolidKernel::initializeState(const Material& material, double* state) const {
-  const int ss = material.stateSize();
-  if (ss == 0) return;
-  for (int q = 0; q < numPoints_; ++q)
-    material.initializeState(state + q * ss);
-}
-
-double SolidKernel::gradients(int q, const double* x, double* dNdx) const {
-  return rule_->weights[q] *
-         physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
-}
-
-double SolidKernel::measure(int q, const double* x) const {
-  double dNdx[kMaxNodes * 3];
-  return gradients(q, x, dNdx);
-}
-
-void SolidKernel::compute(const double* x, const double* u, const Material& material,
-                          const double* stateOld, double* stateNew, double* residual,
-                          double* tangent) const {
+void SmallStrainKernel::compute(const double* x, const double* u, const Material& material,
+                                const double* stateOld, double* stateNew, double* residual,
+                                double* tangent) const {
   if (dim_ == 2)
     computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
   else
     computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
 }
 
-void SolidKernel::stresses(const double* x, const double* u, const Material& material,
-                           const double* stateOld, double* stateNew, double* pointStress,
-                           double* averageStress) const {
+void SmallStrainKernel::stresses(const double* x, const double* u, const Material& material,
+                                 const double* stateOld, double* stateNew, double* pointStress,
+                                 double* averageStress) const {
   if (dim_ == 2)
     computeImpl<2>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
                    averageStress);
@@ -79,17 +44,13 @@ void SolidKernel::stresses(const double* x, const double* u, const Material& mat
 }
 
 template <int D>
-void SolidKernel::computeImpl(const double* x, const double* u, const Material& material,
-                              const double* stateOld, double* stateNew, double* residual,
-                              double* tangent, double* pointStress, double* averageStress) const {
+void SmallStrainKernel::computeImpl(const double* x, const double* u, const Material& material,
+                                    const double* stateOld, double* stateNew, double* residual,
+                                    double* tangent, double* pointStress,
+                                    double* averageStress) const {
   constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
   const int n = numNodes_, nd = D * n, ss = material.stateSize();
-  if (material.kinematics() != Kinematics::SmallStrain)
-    throw std::invalid_argument("SolidKernel is small-strain but material '" + material.name() +
-                                "' is finite-strain");
-  if (ss > 0 && (!stateOld || !stateNew))
-    throw std::invalid_argument("material '" + material.name() +
-                                "' has internal variables: SolidKernel needs state arrays");
+  checkMaterial(material, stateOld, stateNew);
   if (residual)
     for (int k = 0; k < nd; ++k)
       residual[k] = 0.0;
@@ -124,6 +85,7 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
     out.stress.fill(0.0);
     out.tangent.fill(0.0);
     material.evaluate(in, out);
+    if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
 
     if (pointStress)
       for (int k = 0; k < 6; ++k)
@@ -165,8 +127,8 @@ void SolidKernel::computeImpl(const double* x, const double* u, const Material& 
 // added: computeImpl mirrors them to b < a at the end. When C is unsymmetric, the mirror would
 // give B_a^T C^T B_b there instead, so the difference B_a^T (C - C^T) B_b is added now.
 template <int D>
-void SolidKernel::accumulateTangent(const double* C6, double w, const double* dNdx, double* CB,
-                                    double* SB, double* tangent) const {
+void SmallStrainKernel::accumulateTangent(const double* C6, double w, const double* dNdx,
+                                          double* CB, double* SB, double* tangent) const {
   constexpr int V = D == 2 ? 3 : 6;
   const int n = numNodes_, nd = D * n;
   double C[V][V];
@@ -215,40 +177,6 @@ void SolidKernel::accumulateTangent(const double* C6, double w, const double* dN
           row[c] += g[j] * s[c];
       }
     }
-  }
-}
-
-void SolidKernel::quadraturePoints(const double* x, double* points) const {
-  for (int q = 0; q < numPoints_; ++q)
-    interpolatePosition(numNodes_, x, &N_[q * numNodes_], points + 3 * q);
-}
-
-double SolidKernel::volume(const double* x) const {
-  double v = 0.0;
-  for (int q = 0; q < numPoints_; ++q)
-    v += measure(q, x);
-  return v;
-}
-
-void SolidKernel::bodyForce(const double* x, const double* b, double* f) const {
-  bodyForce(
-      x, [&](const double*, double* value) { std::copy(b, b + dim_, value); }, f);
-}
-
-void SolidKernel::bodyForce(const double* x,
-                            const std::function<void(const double* x, double* b)>& b,
-                            double* f) const {
-  for (int k = 0; k < numDofs(); ++k)
-    f[k] = 0.0;
-  for (int q = 0; q < numPoints_; ++q) {
-    const double w = measure(q, x);
-    const double* N = &N_[q * numNodes_];
-    double point[3], value[3] = {0.0, 0.0, 0.0};
-    interpolatePosition(numNodes_, x, N, point);
-    b(point, value);
-    for (int a = 0; a < numNodes_; ++a)
-      for (int i = 0; i < dim_; ++i)
-        f[a * dim_ + i] += w * N[a] * value[i];
   }
 }
 

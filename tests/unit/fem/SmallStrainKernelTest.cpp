@@ -1,7 +1,7 @@
 #include "tests/unit/fem/FemTestSupport.hpp"
 
 #include "core/fem/InvalidElementError.hpp"
-#include "core/problem/SolidKernel.hpp"
+#include "core/problem/SmallStrainKernel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,7 @@ double maxAbs(const std::vector<double>& v) {
 struct Element {
   explicit Element(ElementType t)
       : kernel(t), x(test::distortedNodes(t)), n(kernel.numNodes()), d(kernel.dim()) {}
-  SolidKernel kernel;
+  SmallStrainKernel kernel;
   std::vector<double> x;
   int n, d;
   // u_a = G x_a + c (d components).
@@ -39,7 +39,7 @@ struct Element {
   }
 };
 
-TEST(SolidKernel, RigidBodyMotionsGiveZeroResidual) {
+TEST(SmallStrainKernel, RigidBodyMotionsGiveZeroResidual) {
   const test::IsotropicElastic material(100.0, 0.3);
   for (ElementType t : test::solidTypes()) {
     Element e(t);
@@ -57,7 +57,7 @@ TEST(SolidKernel, RigidBodyMotionsGiveZeroResidual) {
   }
 }
 
-TEST(SolidKernel, ConstantStrainGivesExactStress) {
+TEST(SmallStrainKernel, ConstantStrainGivesExactStress) {
   const test::IsotropicElastic material(100.0, 0.25);
   const double G[3][3] = {{0.01, 0.004, -0.002}, {0.003, -0.02, 0.005}, {0.001, 0.006, 0.015}};
   const double c[3] = {0.1, 0.2, 0.3};
@@ -86,7 +86,7 @@ TEST(SolidKernel, ConstantStrainGivesExactStress) {
   }
 }
 
-TEST(SolidKernel, LinearTangentIsSymmetricAndGivesTheResidual) {
+TEST(SmallStrainKernel, LinearTangentIsSymmetricAndGivesTheResidual) {
   const test::IsotropicElastic material(70.0, 0.33);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> r(-0.01, 0.01);
@@ -115,7 +115,7 @@ TEST(SolidKernel, LinearTangentIsSymmetricAndGivesTheResidual) {
   }
 }
 
-TEST(SolidKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMaterial) {
+TEST(SmallStrainKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMaterial) {
   const test::UnsymmetricNonlinear material;
   std::mt19937 rng(6);
   std::uniform_real_distribution<double> r(-0.05, 0.05);
@@ -152,7 +152,7 @@ TEST(SolidKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMaterial
   }
 }
 
-TEST(SolidKernel, BodyForceAndVolume) {
+TEST(SmallStrainKernel, BodyForceAndVolume) {
   for (ElementType t : test::solidTypes()) {
     Element e(t);
     const double b[3] = {1.0, -2.0, 0.5};
@@ -189,11 +189,11 @@ TEST(SolidKernel, BodyForceAndVolume) {
   }
   // Unit square and cube: exact volumes.
   const std::vector<double> square = {0, 0, 0, 2, 0, 0, 2, 3, 0, 0, 3, 0};
-  EXPECT_NEAR(SolidKernel(ElementType::Quad4).volume(square.data()), 6.0, 1e-14);
+  EXPECT_NEAR(SmallStrainKernel(ElementType::Quad4).volume(square.data()), 6.0, 1e-14);
 }
 
-TEST(SolidKernel, RejectsWrongInputs) {
-  EXPECT_THROW(SolidKernel(ElementType::Line3), std::invalid_argument);
+TEST(SmallStrainKernel, RejectsWrongInputs) {
+  EXPECT_THROW(SmallStrainKernel(ElementType::Line3), std::invalid_argument);
   Element e(ElementType::Hex8);
   std::vector<double> u(24, 0.0), f(24);
   const test::UnsymmetricNonlinear stateful;

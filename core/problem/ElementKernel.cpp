@@ -1,0 +1,108 @@
+#include "core/problem/ElementKernel.hpp"
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/ReferenceElement.hpp"
+#include "core/problem/SmallStrainKernel.hpp"
+#include "core/problem/TotalLagrangianKernel.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace contactlab {
+
+ElementKernel::ElementKernel(ElementType type, int quadratureDegree)
+    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes) {
+  if (dim_ != 2 && dim_ != 3)
+    throw std::invalid_argument(std::string("a solid element kernel needs a 2D or 3D cell type, "
+                                            "got ") +
+                                info(type).name);
+  rule_ = &quadratureRule(
+      type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type) : quadratureDegree);
+  numPoints_ = rule_->size();
+  const ReferenceElement& ref = ReferenceElement::get(type);
+  N_.resize(numPoints_ * numNodes_);
+  dNdxi_.resize(numPoints_ * numNodes_ * dim_);
+  for (int q = 0; q < numPoints_; ++q) {
+    const double* xi = &rule_->points[q * dim_];
+    ref.shape(xi, &N_[q * numNodes_]);
+    ref.shapeDerivatives(xi, &dNdxi_[q * numNodes_ * dim_]);
+  }
+}
+
+void ElementKernel::initializeState(const Material& material, double* state) const {
+  const int ss = material.stateSize();
+  if (ss == 0) return;
+  for (int q = 0; q < numPoints_; ++q)
+    material.initializeState(state + q * ss);
+}
+
+double ElementKernel::gradients(int q, const double* x, double* dNdx) const {
+  return rule_->weights[q] *
+         physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+}
+
+double ElementKernel::measure(int q, const double* x) const {
+  double dNdx[kMaxNodes * 3];
+  return gradients(q, x, dNdx);
+}
+
+void ElementKernel::checkMaterial(const Material& material, const double* stateOld,
+                                  double* stateNew) const {
+  if (material.kinematics() != kinematics())
+    throw std::invalid_argument(
+        "material '" + material.name() + "' is " +
+        (material.kinematics() == Kinematics::SmallStrain ? "small-strain" : "finite-strain") +
+        " but the element kernel is not");
+  if (material.stateSize() > 0 && (!stateOld || !stateNew))
+    throw std::invalid_argument("material '" + material.name() +
+                                "' has internal variables: the kernel needs state arrays");
+}
+
+void ElementKernel::quadraturePoints(const double* x, double* points) const {
+  for (int q = 0; q < numPoints_; ++q)
+    interpolatePosition(numNodes_, x, &N_[q * numNodes_], points + 3 * q);
+}
+
+void ElementKernel::pointMeasures(const double* x, double* measures) const {
+  for (int q = 0; q < numPoints_; ++q)
+    measures[q] = measure(q, x);
+}
+
+double ElementKernel::volume(const double* x) const {
+  double v = 0.0;
+  for (int q = 0; q < numPoints_; ++q)
+    v += measure(q, x);
+  return v;
+}
+
+void ElementKernel::bodyForce(const double* x, const double* b, double* f) const {
+  bodyForce(
+      x, [&](const double*, double* value) { std::copy(b, b + dim_, value); }, f);
+}
+
+void ElementKernel::bodyForce(const double* x,
+                              const std::function<void(const double* x, double* b)>& b,
+                              double* f) const {
+  for (int k = 0; k < numDofs(); ++k)
+    f[k] = 0.0;
+  for (int q = 0; q < numPoints_; ++q) {
+    const double w = measure(q, x);
+    const double* N = &N_[q * numNodes_];
+    double point[3], value[3] = {0.0, 0.0, 0.0};
+    interpolatePosition(numNodes_, x, N, point);
+    b(point, value);
+    for (int a = 0; a < numNodes_; ++a)
+      for (int i = 0; i < dim_; ++i)
+        f[a * dim_ + i] += w * N[a] * value[i];
+  }
+}
+
+std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
+                                                 int quadratureDegree) {
+  if (kinematics == Kinematics::FiniteStrain)
+    return std::make_unique<TotalLagrangianKernel>(type, quadratureDegree);
+  return std::make_unique<SmallStrainKernel>(type, quadratureDegree);
+}
+
+}  // namespace contactlab

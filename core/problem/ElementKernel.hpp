@@ -1,0 +1,95 @@
+#pragma once
+// A solid element kernel: internal force f = dW/du and tangent K = df/du of one 2D (plane
+// strain, per unit thickness) or 3D cell, for one kinematics. The small-strain kernel takes
+// the linearized strain to the material; the total-Lagrangian kernel the deformation gradient.
+// makeElementKernel picks one from the material's kinematics(), so blocks of both kinds live in
+// one model and the next kernel is a new class.
+//
+// Array conventions: x holds 3 reference coordinates per node (z = 0 in 2D); u, residual and
+// body forces hold dim() values per node (dof a * dim() + i); tangent is numDofs()^2 row major;
+// material state is material.stateSize() doubles per quadrature point (nullptr allowed when 0).
+//
+// One kernel per element type and kinematics, shared by all its elements: shape functions at
+// the quadrature points are tabulated at construction, and the const methods use only stack
+// workspace, so one kernel may serve several threads. Invalid reference geometry throws
+// InvalidElementError without the element's identity (the caller adds it with withLabel()); a
+// material that cannot be evaluated or an element turned inside out by u throws
+// ElementUpdateError naming the quadrature point.
+#include "core/fem/QuadratureRule.hpp"
+#include "core/materials/Material.hpp"
+#include "core/mesh/ElementType.hpp"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace contactlab {
+
+class ElementKernel {
+ public:
+  virtual ~ElementKernel() = default;
+
+  ElementType type() const { return type_; }
+  int dim() const { return dim_; }
+  int numNodes() const { return numNodes_; }
+  int numDofs() const { return dim_ * numNodes_; }
+  int numQuadraturePoints() const { return numPoints_; }
+  const QuadratureRule& rule() const { return *rule_; }
+  virtual Kinematics kinematics() const = 0;
+
+  // Calls material.initializeState for every quadrature point.
+  void initializeState(const Material& material, double* state) const;
+
+  // Internal force (the residual's element contribution) and, unless tangent is nullptr, its
+  // derivative with respect to u. The tangent is symmetric when the material's is.
+  virtual void compute(const double* x, const double* u, const Material& material,
+                       const double* stateOld, double* stateNew, double* residual,
+                       double* tangent) const = 0;
+
+  // Cauchy stress (6 Voigt components, sigma_zz included in 2D) at each quadrature point
+  // (6 * numQuadraturePoints(), may be nullptr) and/or its volume average over the reference
+  // cell (6, may be nullptr).
+  virtual void stresses(const double* x, const double* u, const Material& material,
+                        const double* stateOld, double* stateNew, double* pointStress,
+                        double* averageStress) const = 0;
+
+  // Physical coordinates of the quadrature points, 3 per point.
+  void quadraturePoints(const double* x, double* points) const;
+  // Quadrature weight times det J at each point (numQuadraturePoints() values).
+  void pointMeasures(const double* x, double* measures) const;
+  double volume(const double* x) const;
+
+  // Equivalent nodal forces int N b dV of a body force per unit (reference) volume: constant
+  // (dim() components) or a function of the position (x: 3 coordinates; writes dim()
+  // components).
+  void bodyForce(const double* x, const double* b, double* f) const;
+  void bodyForce(const double* x, const std::function<void(const double* x, double* b)>& b,
+                 double* f) const;
+
+ protected:
+  // quadratureDegree < 0 selects stiffnessQuadratureDegree(type). Throws std::invalid_argument
+  // for types that are not 2D or 3D cells.
+  ElementKernel(ElementType type, int quadratureDegree);
+  // Reference gradients at quadrature point q; returns det J times the weight.
+  double gradients(int q, const double* x, double* dNdx) const;
+  double measure(int q, const double* x) const;
+  // Throws std::invalid_argument when the material is not of this kernel's kinematics or has
+  // internal variables but no state arrays were given.
+  void checkMaterial(const Material& material, const double* stateOld, double* stateNew) const;
+
+  static constexpr int kMaxNodes = 27;
+
+  ElementType type_;
+  int dim_;
+  int numNodes_;
+  int numPoints_;
+  const QuadratureRule* rule_;
+  std::vector<double> N_;      // N_[q * numNodes + a]
+  std::vector<double> dNdxi_;  // dNdxi_[(q * numNodes + a) * dim + j]
+};
+
+// The kernel of `type` for materials of `kinematics`.
+std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
+                                                 int quadratureDegree = -1);
+
+}  // namespace contactlab

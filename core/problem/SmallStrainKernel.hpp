@@ -1,0 +1,30 @@
+#pragma once
+// Small-strain solid element: internal force f = int B^T sigma dV and tangent K = int B^T C B dV
+// for 3D cells and 2D plane strain (Voigt rows {0, 1, 3} of Material.hpp). Conventions of
+// ElementKernel.hpp.
+#include "core/problem/ElementKernel.hpp"
+
+namespace contactlab {
+
+class SmallStrainKernel : public ElementKernel {
+ public:
+  explicit SmallStrainKernel(ElementType type, int quadratureDegree = -1)
+      : ElementKernel(type, quadratureDegree) {}
+
+  Kinematics kinematics() const override { return Kinematics::SmallStrain; }
+  void compute(const double* x, const double* u, const Material& material, const double* stateOld,
+               double* stateNew, double* residual, double* tangent) const override;
+  void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
+                double* stateNew, double* pointStress, double* averageStress) const override;
+
+ private:
+  template <int D>
+  void computeImpl(const double* x, const double* u, const Material& material,
+                   const double* stateOld, double* stateNew, double* residual, double* tangent,
+                   double* pointStress, double* averageStress) const;
+  template <int D>
+  void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
+                         double* tangent) const;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,133 @@
+#include "core/problem/TotalLagrangianKernel.hpp"
+
+#include "core/problem/ElementUpdateError.hpp"
+
+#include <sstream>
+
+namespace contactlab {
+namespace {
+
+double determinant3(const double* F) {
+  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+         F[2] * (F[3] * F[7] - F[4] * F[6]);
+}
+
+constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+
+}  // namespace
+
+void TotalLagrangianKernel::compute(const double* x, const double* u, const Material& material,
+                                    const double* stateOld, double* stateNew, double* residual,
+                                    double* tangent) const {
+  if (dim_ == 2)
+    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+  else
+    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+}
+
+void TotalLagrangianKernel::stresses(const double* x, const double* u, const Material& material,
+                                     const double* stateOld, double* stateNew, double* pointStress,
+                                     double* averageStress) const {
+  if (dim_ == 2)
+    computeImpl<2>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+                   averageStress);
+  else
+    computeImpl<3>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+                   averageStress);
+}
+
+template <int D>
+void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const Material& material,
+                                        const double* stateOld, double* stateNew, double* residual,
+                                        double* tangent, double* pointStress,
+                                        double* averageStress) const {
+  const int n = numNodes_, nd = D * n, ss = material.stateSize();
+  checkMaterial(material, stateOld, stateNew);
+  if (residual)
+    for (int k = 0; k < nd; ++k)
+      residual[k] = 0.0;
+  if (tangent)
+    for (int k = 0; k < nd * nd; ++k)
+      tangent[k] = 0.0;
+  double volume = 0.0;
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] = 0.0;
+
+  double dNdX[kMaxNodes * D];
+  // AB[(i D + J) nd + b D + k] = w sum_L dP_iJ/dF_kL dN_b/dX_L: the tangent's rows are then
+  // D fused rows of AB, as in the small-strain kernel.
+  double AB[D * D * kMaxNodes * D];
+  MaterialInput in;
+  MaterialOutput out;
+  for (int q = 0; q < numPoints_; ++q) {
+    const double w = gradients(q, x, dNdX);
+    in.F = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < D; ++i)
+        for (int J = 0; J < D; ++J)
+          in.F[i * 3 + J] += u[a * D + i] * dNdX[a * D + J];
+    const double detF = determinant3(in.F.data());
+    if (!(detF > 0)) {
+      std::ostringstream s;
+      s << "det F = " << detF << " <= 0: the displacement turns the element inside out";
+      throw ElementUpdateError("inverted-element", q, s.str());
+    }
+    in.stateOld = ss ? stateOld + q * ss : nullptr;
+    out.stateNew = ss ? stateNew + q * ss : nullptr;
+    material.evaluate(in, out);
+    if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
+
+    if (pointStress || averageStress) {
+      double sigma[6] = {};
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+          double s = 0.0;
+          for (int K = 0; K < 3; ++K)
+            s += out.P[i * 3 + K] * in.F[j * 3 + K];
+          sigma[kVoigt3[i][j]] = s / detF;
+        }
+      for (int k = 0; k < 6; ++k) {
+        if (pointStress) pointStress[6 * q + k] = sigma[k];
+        if (averageStress) averageStress[k] += w * sigma[k];
+      }
+      volume += w;
+    }
+    if (residual)
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < D; ++i) {
+          double f = 0.0;
+          for (int J = 0; J < D; ++J)
+            f += out.P[i * 3 + J] * dNdX[a * D + J];
+          residual[a * D + i] += w * f;
+        }
+    if (!tangent) continue;
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J) {
+        double* row = &AB[(i * D + J) * nd];
+        const double* A = &out.dPdF[(i * 3 + J) * 9];
+        for (int b = 0; b < n; ++b)
+          for (int k = 0; k < D; ++k) {
+            double s = 0.0;
+            for (int L = 0; L < D; ++L)
+              s += A[k * 3 + L] * dNdX[b * D + L];
+            row[b * D + k] = w * s;
+          }
+      }
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < D; ++i) {
+        double* row = &tangent[(a * D + i) * nd];
+        for (int J = 0; J < D; ++J) {
+          const double g = dNdX[a * D + J];
+          const double* m = &AB[(i * D + J) * nd];
+          for (int c = 0; c < nd; ++c)
+            row[c] += g * m[c];
+        }
+      }
+  }
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,780 @@
+// Constitutive laws: Saint Venant-Kirchhoff, neo-Hookean and J2 small-strain plasticity.
+// Tangents against central finite differences, closed-form stresses, frame invariance, the
+// linear-elastic limit, the J2 return map (uniaxial hardening, Bauschinger, consistency,
+// pressure), parameter validation through the registry, and the neo-Hookean J <= 0 failure.
+#include "core/materials/J2SmallStrain.hpp"
+#include "core/materials/LinearElastic.hpp"
+#include "core/materials/MaterialRegistry.hpp"
+#include "core/materials/NeoHookean.hpp"
+#include "core/materials/SaintVenantKirchhoff.hpp"
+#include "core/materials/Tensor3.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace contactlab {
+namespace {
+
+using tensor3::Mat3;
+using Voigt = std::array<double, 6>;
+using J2State = std::array<double, J2SmallStrain::kStateSize>;
+
+constexpr double kE = 10.0;
+
+double maxAbs(const double* a, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i)
+    m = std::max(m, std::abs(a[i]));
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Finite strain helpers.
+
+MaterialOutput evaluateF(const Material& m, const Mat3& F) {
+  MaterialInput in;
+  in.F = F;
+  MaterialOutput out;
+  m.evaluate(in, out);
+  EXPECT_FALSE(out.failed) << m.name() << ": " << out.failure;
+  return out;
+}
+
+// max |dPdF - central differences of P| / max |dPdF|.
+double dPdFError(const Material& m, const Mat3& F) {
+  const MaterialOutput out = evaluateF(m, F);
+  const double h = 1e-6;
+  double err = 0.0;
+  for (int kL = 0; kL < 9; ++kL) {
+    Mat3 plus = F, minus = F;
+    plus[kL] += h;
+    minus[kL] -= h;
+    const Mat3 Pp = evaluateF(m, plus).P, Pm = evaluateF(m, minus).P;
+    for (int iJ = 0; iJ < 9; ++iJ)
+      err = std::max(err, std::abs(out.dPdF[iJ * 9 + kL] - (Pp[iJ] - Pm[iJ]) / (2.0 * h)));
+  }
+  return err / maxAbs(out.dPdF.data(), 81);
+}
+
+// F = I + G with G random, |G|_Frobenius uniform in [0.05, 0.5] (so det F > 0); plane-strain
+// shaped (only the xy block of G) when planeStrain.
+Mat3 randomF(std::mt19937& gen, bool planeStrain) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), size(0.05, 0.5);
+  Mat3 G{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!planeStrain || (i < 2 && j < 2)) G[i * 3 + j] = entry(gen);
+  const double scale = size(gen) / std::sqrt(tensor3::contract(G, G));
+  Mat3 F = tensor3::identity();
+  for (int a = 0; a < 9; ++a)
+    F[a] += scale * G[a];
+  return F;
+}
+
+// Rotation by `angle` about the (normalized) `axis` (Rodrigues).
+Mat3 rotation(std::array<double, 3> axis, double angle) {
+  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for (double& a : axis)
+    a /= n;
+  const double c = std::cos(angle), s = std::sin(angle);
+  Mat3 Q{};
+  const Mat3 K = {0, -axis[2], axis[1], axis[2], 0, -axis[0], -axis[1], axis[0], 0};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      Q[i * 3 + j] = (i == j ? c : 0.0) + s * K[i * 3 + j] + (1.0 - c) * axis[i] * axis[j];
+  return Q;
+}
+
+Mat3 diagonal(double a, double b, double c) {
+  return {a, 0, 0, 0, b, 0, 0, 0, c};
+}
+
+// Cauchy stress P F^T / J.
+Mat3 cauchy(const Mat3& P, const Mat3& F) {
+  Mat3 sigma = tensor3::multiplyTranspose(P, F);
+  const double J = tensor3::determinant(F);
+  for (double& s : sigma)
+    s /= J;
+  return sigma;
+}
+
+// The finite-strain laws under test, with their Lame constants.
+struct FiniteLaw {
+  std::string label;
+  std::shared_ptr<Material> material;
+  double lambda, mu;
+};
+
+std::vector<FiniteLaw> finiteLaws() {
+  std::vector<FiniteLaw> laws;
+  for (double nu : {0.3, 0.45}) {
+    const double lambda = kE * nu / ((1 + nu) * (1 - 2 * nu)), mu = kE / (2 * (1 + nu));
+    const std::string tag = " nu=" + std::to_string(nu);
+    laws.push_back({"saint-venant-kirchhoff" + tag, std::make_shared<SaintVenantKirchhoff>(kE, nu),
+                    lambda, mu});
+    laws.push_back({"neo-hookean" + tag,
+                    std::make_shared<NeoHookean>(NeoHookean::fromYoungPoisson(kE, nu)), lambda,
+                    mu});
+  }
+  // From C10 and D1: mu = 2 C10 = 3, K = 2 / D1 = 20.
+  laws.push_back(
+      {"neo-hookean C10/D1", std::make_shared<NeoHookean>(1.5, 0.1), 20.0 - 2.0 / 3.0 * 3.0, 3.0});
+  return laws;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Finite strain: tangents, invariance, linear limit.
+
+TEST(FiniteStrainLaws, TangentMatchesCentralDifferences) {
+  for (const auto& law : finiteLaws()) {
+    std::mt19937 gen(20240611);
+    for (int sample = 0; sample < 30; ++sample) {
+      const bool planeStrain = sample >= 20;  // 20 general samples, 10 plane-strain shaped
+      const Mat3 F = randomF(gen, planeStrain);
+      ASSERT_GT(tensor3::determinant(F), 0.0);
+      EXPECT_LT(dPdFError(*law.material, F), 1e-6) << law.label << " sample " << sample;
+    }
+  }
+}
+
+TEST(FiniteStrainLaws, FrameInvariance) {
+  for (const auto& law : finiteLaws()) {
+    std::mt19937 gen(7);
+    for (int sample = 0; sample < 10; ++sample) {
+      const Mat3 F = randomF(gen, sample % 2 == 1);
+      const Mat3 Q = rotation({0.3, -1.0, 0.5 + sample}, 0.4 + 0.5 * sample);
+      const Mat3 P = evaluateF(*law.material, F).P;
+      const Mat3 PofQF = evaluateF(*law.material, tensor3::multiply(Q, F)).P;
+      const Mat3 QP = tensor3::multiply(Q, P);
+      double err = 0.0;
+      for (int a = 0; a < 9; ++a)
+        err = std::max(err, std::abs(PofQF[a] - QP[a]));
+      EXPECT_LT(err, 1e-12 * kE) << law.label << " sample " << sample;
+    }
+  }
+}
+
+TEST(FiniteStrainLaws, IdentityGivesZeroStressAndTheLinearElasticTangent) {
+  for (const auto& law : finiteLaws()) {
+    const MaterialOutput out = evaluateF(*law.material, tensor3::identity());
+    EXPECT_LT(maxAbs(out.P.data(), 9), 1e-14 * kE) << law.label;
+    // Reference: LinearElastic's Voigt matrix as a 4th order tensor. With engineering shears,
+    // C_ijkl = D[voigt(i, j)][voigt(k, l)] (minor symmetry).
+    const double E = law.mu * (3 * law.lambda + 2 * law.mu) / (law.lambda + law.mu);
+    const double nu = law.lambda / (2 * (law.lambda + law.mu));
+    LinearElastic linear(E, nu);
+    MaterialInput in;
+    MaterialOutput lin;
+    linear.evaluate(in, lin);
+    const int voigt[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J)
+        for (int k = 0; k < 3; ++k)
+          for (int L = 0; L < 3; ++L)
+            EXPECT_NEAR(out.dPdF[(i * 3 + J) * 9 + k * 3 + L],
+                        lin.tangent[voigt[i][J] * 6 + voigt[k][L]], 1e-12 * kE)
+                << law.label << " " << i << J << k << L;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Saint Venant-Kirchhoff closed form.
+
+TEST(SaintVenantKirchhoff, UniaxialStressClosedForm) {
+  // S_22 = 0 gives E_22 = -nu E_11, hence the lateral stretch, and S_11 = E E_11:
+  // P_11 = E s (s^2 - 1) / 2.
+  const double nu = 0.3;
+  const SaintVenantKirchhoff svk(kE, nu);
+  for (double s : {0.7, 0.9, 1.05, 1.3, 1.6}) {
+    const double lateral = std::sqrt(1.0 - nu * (s * s - 1.0));
+    const Mat3 P = evaluateF(svk, diagonal(s, lateral, lateral)).P;
+    EXPECT_NEAR(P[0], kE * s * (s * s - 1.0) / 2.0, 1e-12 * kE) << s;
+    for (int a = 1; a < 9; ++a)
+      EXPECT_NEAR(P[a], 0.0, 1e-12 * kE) << s << " component " << a;
+  }
+}
+
+TEST(SaintVenantKirchhoff, SimpleShearClosedForm) {
+  // F = I + g e_x (x) e_y: E = [[0, g/2, 0], [g/2, g^2/2, 0], [0, 0, 0]], tr E = g^2 / 2.
+  const SaintVenantKirchhoff svk(kE, 0.25);
+  const double lambda = svk.lambda(), mu = svk.mu();
+  for (double g : {0.1, 0.5, 1.0}) {
+    const Mat3 F = {1, g, 0, 0, 1, 0, 0, 0, 1};
+    const double tr = g * g / 2;
+    const Mat3 S = {lambda * tr, mu * g, 0, mu * g, lambda * tr + mu * g * g, 0, 0, 0, lambda * tr};
+    const Mat3 expected = tensor3::multiply(F, S);
+    const Mat3 P = evaluateF(svk, F).P;
+    for (int a = 0; a < 9; ++a)
+      EXPECT_NEAR(P[a], expected[a], 1e-12 * kE) << g << " component " << a;
+    // Independent of the product above: P_12 = S_12 + g S_22, P_21 = S_21.
+    EXPECT_NEAR(P[1], mu * g + g * (lambda * tr + mu * g * g), 1e-12 * kE);
+    EXPECT_NEAR(P[3], mu * g, 1e-12 * kE);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Neo-Hookean closed forms and failure.
+
+TEST(NeoHookean, SimpleShearGivesMuTimesDeviatoricLeftCauchyGreen) {
+  // J = 1: sigma = mu dev(b), b = F F^T; sigma_12 = mu g, sigma_11 - sigma_22 = mu g^2.
+  const NeoHookean nh = NeoHookean::fromYoungPoisson(kE, 0.3);
+  const double mu = nh.shearModulus();
+  for (double g : {0.1, 0.5, 2.0}) {
+    const Mat3 F = {1, g, 0, 0, 1, 0, 0, 0, 1};
+    const Mat3 sigma = cauchy(evaluateF(nh, F).P, F);
+    const Mat3 expected = {2 * mu * g * g / 3, mu * g, 0, mu * g, -mu * g * g / 3, 0, 0, 0,
+                           -mu * g * g / 3};
+    for (int a = 0; a < 9; ++a)
+      EXPECT_NEAR(sigma[a], expected[a], 1e-12 * kE * (1 + g * g)) << g << " component " << a;
+  }
+}
+
+TEST(NeoHookean, HydrostaticStretchGivesBulkPressure) {
+  // F = s I: isochoric part is I, sigma = K (J - 1) I with K = E / (3 (1 - 2 nu)).
+  const double nu = 0.3, K = kE / (3 * (1 - 2 * nu));
+  const NeoHookean nh = NeoHookean::fromYoungPoisson(kE, nu);
+  for (double s : {0.6, 0.95, 1.1, 1.5}) {
+    const Mat3 F = diagonal(s, s, s);
+    const Mat3 sigma = cauchy(evaluateF(nh, F).P, F);
+    const double J = s * s * s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        EXPECT_NEAR(sigma[i * 3 + j], i == j ? K * (J - 1) : 0.0, 1e-12 * kE) << s;
+  }
+}
+
+TEST(NeoHookean, UniaxialStressWithLateralStretchSolvedByTheLaw) {
+  const double nu = 0.3;
+  const NeoHookean nh = NeoHookean::fromYoungPoisson(kE, nu);
+  const double mu = nh.shearModulus(), K = nh.bulkModulus();
+  // Lateral stretch l from P_22(diag(s, l, l)) = 0 by Newton with the law's own tangent.
+  auto uniaxial = [&](double s) {
+    double l = 1.0;
+    for (int it = 0; it < 50; ++it) {
+      const MaterialOutput out = evaluateF(nh, diagonal(s, l, l));
+      const double r = out.P[4];
+      if (std::abs(r) < 1e-14 * kE) break;
+      const double drdl = out.dPdF[4 * 9 + 4] + out.dPdF[4 * 9 + 8];
+      l -= r / drdl;
+    }
+    return l;
+  };
+  for (double s : {0.7, 0.9, 1.2, 1.8}) {
+    const double l = uniaxial(s);
+    const MaterialOutput out = evaluateF(nh, diagonal(s, l, l));
+    EXPECT_NEAR(out.P[4], 0.0, 1e-12 * kE);
+    EXPECT_NEAR(out.P[8], 0.0, 1e-12 * kE);
+    // W(s, l) = C10 (J^-2/3 (s^2 + 2 l^2) - 3) + (J - 1)^2 / D1, J = s l^2: P_11 = dW/ds.
+    const double J = s * l * l, I1 = s * s + 2 * l * l;
+    const double P11 = mu * std::pow(J, -2.0 / 3.0) * (s - I1 / (3 * s)) + K * (J - 1) * J / s;
+    EXPECT_NEAR(out.P[0], P11, 1e-12 * kE) << s;
+    EXPECT_GT((out.P[0]) * (s - 1), 0.0) << s;  // tension in extension, compression in shortening
+  }
+  // Small stretch: Young's modulus and Poisson's ratio.
+  const double e = 1e-6, l = uniaxial(1 + e);
+  EXPECT_NEAR(evaluateF(nh, diagonal(1 + e, l, l)).P[0] / e, kE, 1e-4 * kE);
+  EXPECT_NEAR(-(l - 1) / e, nu, 1e-4);
+}
+
+TEST(NeoHookean, NonPositiveJSetsFailedWithoutThrowing) {
+  const NeoHookean nh = NeoHookean::fromYoungPoisson(kE, 0.3);
+  const std::vector<std::pair<Mat3, std::string>> cases = {
+      {diagonal(1, 1, -0.1), "neo-hookean: J = -0.1 <= 0"},
+      {diagonal(1, 0, 1), "neo-hookean: J = 0 <= 0"},
+      {{0, 1, 0, 1, 0, 0, 0, 0, 1}, "neo-hookean: J = -1 <= 0"}};  // a reflection
+  for (const auto& [F, message] : cases) {
+    MaterialInput in;
+    in.F = F;
+    MaterialOutput out;
+    EXPECT_NO_THROW(nh.evaluate(in, out));
+    EXPECT_TRUE(out.failed) << message;
+    EXPECT_EQ(out.failure, message);
+    for (double p : out.P)
+      EXPECT_TRUE(std::isfinite(p)) << message;
+    for (double d : out.dPdF)
+      EXPECT_TRUE(std::isfinite(d)) << message;
+  }
+  // A NaN F fails the same way instead of producing NaN stresses.
+  MaterialInput in;
+  in.F = tensor3::identity();
+  in.F[4] = std::nan("");
+  MaterialOutput out;
+  nh.evaluate(in, out);
+  EXPECT_TRUE(out.failed);
+  EXPECT_EQ(out.failure.rfind("neo-hookean: J = ", 0), 0u) << out.failure;
+}
+
+TEST(NeoHookean, YoungPoissonAndCoefficientsGiveTheSameLaw) {
+  const double E = 210.0, nu = 0.3;
+  const double mu = E / (2 * (1 + nu)), K = E / (3 * (1 - 2 * nu));
+  const NeoHookean a = NeoHookean::fromYoungPoisson(E, nu);
+  EXPECT_NEAR(a.C10(), mu / 2, 1e-12 * E);
+  EXPECT_NEAR(a.D1(), 2 / K, 1e-12 / E);
+  const NeoHookean b(mu / 2, 2 / K);
+  std::mt19937 gen(3);
+  const Mat3 F = randomF(gen, false);
+  const Mat3 Pa = evaluateF(a, F).P, Pb = evaluateF(b, F).P;
+  for (int i = 0; i < 9; ++i)
+    EXPECT_NEAR(Pa[i], Pb[i], 1e-12 * E);
+}
+
+// ---------------------------------------------------------------------------------------------
+// J2 small strain.
+
+struct J2Result {
+  Voigt stress;
+  std::array<double, 36> tangent;
+  J2State state;
+};
+
+J2Result evaluateJ2(const J2SmallStrain& m, const Voigt& strain, const J2State& stateOld) {
+  MaterialInput in;
+  in.strain = strain;
+  in.stateOld = stateOld.data();
+  J2Result r;
+  r.state.fill(std::nan(""));  // the law must write every entry
+  MaterialOutput out;
+  out.stateNew = r.state.data();
+  m.evaluate(in, out);
+  EXPECT_FALSE(out.failed);
+  r.stress = out.stress;
+  r.tangent = out.tangent;
+  for (double s : r.state)
+    EXPECT_TRUE(std::isfinite(s));
+  return r;
+}
+
+J2SmallStrain::Parameters steel(double Hiso, double Hkin) {
+  J2SmallStrain::Parameters p;
+  p.youngModulus = 200e3;
+  p.poissonRatio = 0.3;
+  p.yieldStress = 250.0;
+  p.isotropicHardening = Hiso;
+  p.kinematicHardening = Hkin;
+  return p;
+}
+
+J2State zeroState(const J2SmallStrain& m) {
+  J2State s;
+  s.fill(7.0);
+  m.initializeState(s.data());
+  return s;
+}
+
+// max |tangent - central differences of the stress| / max |tangent|, from the same stateOld.
+double tangentError(const J2SmallStrain& m, const Voigt& strain, const J2State& stateOld) {
+  const J2Result r = evaluateJ2(m, strain, stateOld);
+  const double h = 1e-8;
+  double err = 0.0;
+  for (int b = 0; b < 6; ++b) {
+    Voigt plus = strain, minus = strain;
+    plus[b] += h;
+    minus[b] -= h;
+    const Voigt sp = evaluateJ2(m, plus, stateOld).stress,
+                sm = evaluateJ2(m, minus, stateOld).stress;
+    for (int a = 0; a < 6; ++a)
+      err = std::max(err, std::abs(r.tangent[a * 6 + b] - (sp[a] - sm[a]) / (2 * h)));
+  }
+  return err / maxAbs(r.tangent.data(), 36);
+}
+
+// Von Mises relative stress sqrt(3/2) |dev(sigma) - alpha| and the current yield stress.
+double relativeMises(const Voigt& stress, const J2State& state) {
+  const double p = (stress[0] + stress[1] + stress[2]) / 3;
+  double s2 = 0;
+  for (int a = 0; a < 6; ++a) {
+    const double xi = stress[a] - (a < 3 ? p : 0.0) - state[J2SmallStrain::kBackStress + a];
+    s2 += (a < 3 ? 1.0 : 2.0) * xi * xi;
+  }
+  return std::sqrt(1.5 * s2);
+}
+
+Voigt randomStrain(std::mt19937& gen, double size, bool planeStrain) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  Voigt e;
+  for (int a = 0; a < 6; ++a)
+    e[a] = planeStrain && (a == 2 || a == 4 || a == 5) ? 0.0 : entry(gen);
+  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] +
+                             0.5 * (e[3] * e[3] + e[4] * e[4] + e[5] * e[5]));
+  for (double& x : e)
+    x *= size / n;
+  return e;
+}
+
+Voigt add(const Voigt& a, const Voigt& b, double t = 1.0) {
+  Voigt c;
+  for (int i = 0; i < 6; ++i)
+    c[i] = a[i] + t * b[i];
+  return c;
+}
+
+// One uniaxial stress step: eps_11 is prescribed, the other five strains are found (Newton on
+// the law's tangent) so that the other five stresses vanish. `strain` holds the initial guess
+// and returns the solution.
+J2Result uniaxialStep(const J2SmallStrain& m, double eps11, const J2State& stateOld,
+                      Voigt& strain) {
+  strain[0] = eps11;
+  J2Result r{};
+  for (int it = 0; it < 50; ++it) {
+    r = evaluateJ2(m, strain, stateOld);
+    double residual = 0;
+    for (int a = 1; a < 6; ++a)
+      residual = std::max(residual, std::abs(r.stress[a]));
+    if (residual < 1e-10 * m.parameters().yieldStress) return r;
+    // Solve K x = -sigma on the 5x5 block (rows/columns 1..5), Gauss with partial pivoting.
+    double A[5][6];
+    for (int a = 0; a < 5; ++a) {
+      for (int b = 0; b < 5; ++b)
+        A[a][b] = r.tangent[(a + 1) * 6 + (b + 1)];
+      A[a][5] = -r.stress[a + 1];
+    }
+    for (int c = 0; c < 5; ++c) {
+      int pivot = c;
+      for (int a = c + 1; a < 5; ++a)
+        if (std::abs(A[a][c]) > std::abs(A[pivot][c])) pivot = a;
+      for (int b = 0; b < 6; ++b)
+        std::swap(A[c][b], A[pivot][b]);
+      for (int a = c + 1; a < 5; ++a) {
+        const double factor = A[a][c] / A[c][c];
+        for (int b = c; b < 6; ++b)
+          A[a][b] -= factor * A[c][b];
+      }
+    }
+    double x[5];
+    for (int a = 4; a >= 0; --a) {
+      x[a] = A[a][5];
+      for (int b = a + 1; b < 5; ++b)
+        x[a] -= A[a][b] * x[b];
+      x[a] /= A[a][a];
+    }
+    for (int a = 0; a < 5; ++a)
+      strain[a + 1] += x[a];
+  }
+  ADD_FAILURE() << "uniaxial stress iteration did not converge at eps_11 = " << eps11;
+  return r;
+}
+
+TEST(J2SmallStrain, InitializeStateZeroesAndStateLayout) {
+  const J2SmallStrain m(steel(1e3, 2e3));
+  EXPECT_EQ(m.stateSize(), 13);
+  const J2State s = zeroState(m);
+  for (double v : s)
+    EXPECT_EQ(v, 0.0);
+  J2State t = s;
+  t[12] = 0.25;
+  EXPECT_EQ(m.equivalentPlasticStrain(t.data()), 0.25);
+}
+
+TEST(J2SmallStrain, TangentMatchesCentralDifferencesInElasticSteps) {
+  const J2SmallStrain m(steel(10e3, 5e3));
+  const double yieldStrain = 250.0 / 200e3;
+  std::mt19937 gen(11);
+  for (int sample = 0; sample < 10; ++sample) {
+    const Voigt eps = randomStrain(gen, 0.4 * yieldStrain, sample % 2 == 1);
+    const J2State s0 = zeroState(m);
+    const J2Result r = evaluateJ2(m, eps, s0);
+    EXPECT_EQ(r.state, s0) << "elastic step changed the state";
+    EXPECT_LT(tangentError(m, eps, s0), 1e-6) << sample;
+  }
+}
+
+// A state that has yielded once (both hardenings active) and the strain that produced it.
+struct Yielded {
+  Voigt strain;
+  J2State state;
+};
+
+Yielded yieldOnce(const J2SmallStrain& m, std::mt19937& gen, bool planeStrain) {
+  const double yieldStrain = m.parameters().yieldStress / m.parameters().youngModulus;
+  Yielded y;
+  y.strain = randomStrain(gen, 4 * yieldStrain, planeStrain);
+  y.state = evaluateJ2(m, y.strain, zeroState(m)).state;
+  EXPECT_GT(y.state[J2SmallStrain::kEquivalentPlasticStrain], 0.0);
+  return y;
+}
+
+TEST(J2SmallStrain, TangentMatchesCentralDifferencesInPlasticLoading) {
+  const J2SmallStrain m(steel(10e3, 5e3));
+  const double yieldStrain = 250.0 / 200e3;
+  std::mt19937 gen(12);
+  for (int sample = 0; sample < 12; ++sample) {
+    const bool planeStrain = sample % 3 == 2;
+    const Yielded y = yieldOnce(m, gen, planeStrain);
+    // Continue loading along the previous direction plus a random change of direction.
+    Voigt eps = add(y.strain, y.strain, 0.3);
+    eps = add(eps, randomStrain(gen, yieldStrain, planeStrain));
+    const J2Result r = evaluateJ2(m, eps, y.state);
+    ASSERT_GT(r.state[12], y.state[12] + 1e-5) << sample << ": the step is not plastic";
+    EXPECT_LT(tangentError(m, eps, y.state), 1e-6) << sample;
+  }
+}
+
+TEST(J2SmallStrain, TangentMatchesCentralDifferencesWithoutHardening) {
+  // Perfect plasticity from the virgin state: the first step of every plastic scene.
+  const J2SmallStrain m(steel(0.0, 0.0));
+  const double yieldStrain = 250.0 / 200e3;
+  std::mt19937 gen(14);
+  for (int sample = 0; sample < 12; ++sample) {
+    const bool planeStrain = sample % 2 == 1;
+    const Voigt eps = randomStrain(gen, 5 * yieldStrain, planeStrain);
+    const J2Result r = evaluateJ2(m, eps, zeroState(m));
+    ASSERT_GT(r.state[12], 0.0) << sample << ": the step is not plastic";
+    EXPECT_LT(tangentError(m, eps, zeroState(m)), 1e-6) << sample;
+  }
+}
+
+TEST(J2SmallStrain, TangentMatchesCentralDifferencesInUnloading) {
+  const J2SmallStrain m(steel(10e3, 5e3));
+  const double mu = m.mu();
+  std::mt19937 gen(13);
+  for (int sample = 0; sample < 10; ++sample) {
+    const bool planeStrain = sample % 2 == 1;
+    const Yielded y = yieldOnce(m, gen, planeStrain);
+    const J2Result atYield = evaluateJ2(m, y.strain, y.state);
+    // Strain step -c xi (engineering shears), 2 mu c = 1/2: xi halves, f = -(yield stress) / 2.
+    const double p = (atYield.stress[0] + atYield.stress[1] + atYield.stress[2]) / 3;
+    Voigt eps = y.strain;
+    for (int a = 0; a < 6; ++a) {
+      const double xi = atYield.stress[a] - (a < 3 ? p : 0.0) - y.state[6 + a];
+      eps[a] -= (a < 3 ? 1.0 : 2.0) * xi / (4 * mu);
+    }
+    const J2Result r = evaluateJ2(m, eps, y.state);
+    EXPECT_EQ(r.state, y.state) << sample << ": unloading changed the state";
+    EXPECT_LT(tangentError(m, eps, y.state), 1e-6) << sample;
+    // The unloading tangent is the elastic one.
+    const J2Result e = evaluateJ2(m, Voigt{}, zeroState(m));
+    for (int a = 0; a < 36; ++a)
+      EXPECT_NEAR(r.tangent[a], e.tangent[a], 1e-9 * 200e3);
+  }
+}
+
+TEST(J2SmallStrain, StressStaysOnTheYieldSurfaceAfterAPlasticStep) {
+  const double Hiso = 10e3, Hkin = 5e3;
+  const J2SmallStrain m(steel(Hiso, Hkin));
+  std::mt19937 gen(14);
+  for (int sample = 0; sample < 10; ++sample) {
+    const Yielded y = yieldOnce(m, gen, false);
+    const Voigt eps = add(y.strain, randomStrain(gen, 3 * 250.0 / 200e3, false));
+    const J2Result r = evaluateJ2(m, eps, y.state);
+    const double p = r.state[12];
+    if (p == y.state[12]) continue;  // an elastic step: nothing to check
+    EXPECT_NEAR(relativeMises(r.stress, r.state), 250.0 + Hiso * p, 1e-10 * 250.0) << sample;
+    // Plastic incompressibility, deviatoric back stress, Prager's rule alpha = 2/3 H_kin eps_p
+    // (tensor components: engineering shears halved) from a zero initial state.
+    EXPECT_NEAR(r.state[0] + r.state[1] + r.state[2], 0.0, 1e-15);
+    EXPECT_NEAR(r.state[6] + r.state[7] + r.state[8], 0.0, 1e-9);
+    for (int a = 0; a < 6; ++a)
+      EXPECT_NEAR(r.state[6 + a], 2.0 / 3.0 * Hkin * r.state[a] * (a < 3 ? 1.0 : 0.5), 1e-9);
+  }
+}
+
+TEST(J2SmallStrain, UniaxialStressFollowsTheBilinearClosedFormAndUnloadsWithSlopeE) {
+  const double E = 200e3, sy = 250.0;
+  for (auto [Hiso, Hkin] : {std::pair{20e3, 0.0}, std::pair{15e3, 5e3}}) {
+    const J2SmallStrain m(steel(Hiso, Hkin));
+    const double H = Hiso + Hkin;
+    J2State state = zeroState(m);
+    Voigt strain{};
+    double sigmaMax = 0, epsMax = 0;
+    for (int step = 1; step <= 40; ++step) {
+      const double eps = 0.01 * step / 40;
+      const J2Result r = uniaxialStep(m, eps, state, strain);
+      const double expected = eps <= sy / E ? E * eps : sy + E * H / (E + H) * (eps - sy / E);
+      EXPECT_NEAR(r.stress[0], expected, 1e-9 * sy) << "eps = " << eps;
+      if (eps > sy / E) {
+        EXPECT_NEAR(r.state[12], (r.stress[0] - sy) / H, 1e-10) << "eps = " << eps;
+      }
+      state = r.state;
+      sigmaMax = r.stress[0];
+      epsMax = eps;
+    }
+    // Unloading by 0.001 (elastic range is at least 2 sigma_y wide): slope E, no plastic flow.
+    const J2Result r = uniaxialStep(m, epsMax - 0.001, state, strain);
+    EXPECT_NEAR(r.stress[0], sigmaMax - E * 0.001, 1e-9 * sy);
+    EXPECT_EQ(r.state[12], state[12]);
+  }
+}
+
+TEST(J2SmallStrain, KinematicHardeningReverseYieldIsBauschinger) {
+  const double E = 200e3, sy = 250.0, H = 20e3, epsMax = 0.005;
+  // Reverse yield at sigma_max - 2 sigma_y with kinematic hardening; at -sigma_max with
+  // isotropic hardening (the contrast shows the back stress, not the elastic range, moves).
+  for (bool kinematic : {true, false}) {
+    const J2SmallStrain m(steel(kinematic ? 0.0 : H, kinematic ? H : 0.0));
+    J2State state = zeroState(m);
+    Voigt strain{};
+    J2Result loaded;
+    for (int step = 1; step <= 10; ++step) {
+      loaded = uniaxialStep(m, epsMax * step / 10, state, strain);
+      state = loaded.state;
+    }
+    const double sigmaMax = loaded.stress[0];
+    EXPECT_NEAR(sigmaMax, sy + E * H / (E + H) * (epsMax - sy / E), 1e-9 * sy);
+    const double delta = 1e-3 * sy;
+    // Just short of sigma_max - 2 sigma_y: elastic.
+    Voigt s1 = strain;
+    const J2Result before = uniaxialStep(m, epsMax - (2 * sy - delta) / E, state, s1);
+    EXPECT_NEAR(before.stress[0], sigmaMax - 2 * sy + delta, 1e-9 * sy);
+    EXPECT_EQ(before.state[12], state[12]);
+    // Just past it: plastic with kinematic hardening, still elastic with isotropic hardening.
+    Voigt s2 = strain;
+    const J2Result after = uniaxialStep(m, epsMax - (2 * sy + delta) / E, state, s2);
+    if (kinematic) {
+      EXPECT_GT(after.state[12], state[12]);
+      // Further reverse loading follows the hardening slope from sigma_max - 2 sigma_y.
+      Voigt s3 = strain;
+      const double epsReverse = epsMax - 2 * sy / E;
+      const J2Result further = uniaxialStep(m, epsReverse - 0.002, state, s3);
+      EXPECT_NEAR(further.stress[0], sigmaMax - 2 * sy - E * H / (E + H) * 0.002, 1e-9 * sy);
+    } else {
+      EXPECT_EQ(after.state[12], state[12]);
+      Voigt s3 = strain;
+      const J2Result atMinus = uniaxialStep(m, epsMax - (2 * sigmaMax - delta) / E, state, s3);
+      EXPECT_EQ(atMinus.state[12], state[12]);
+      Voigt s4 = strain;
+      const J2Result pastMinus = uniaxialStep(m, epsMax - (2 * sigmaMax + delta) / E, state, s4);
+      EXPECT_GT(pastMinus.state[12], state[12]);
+    }
+  }
+}
+
+TEST(J2SmallStrain, PurePressureNeverYields) {
+  const J2SmallStrain m(steel(10e3, 5e3));
+  const double K = 200e3 / (3 * (1 - 2 * 0.3));
+  std::mt19937 gen(15);
+  const Yielded y = yieldOnce(m, gen, false);
+  const J2Result atYield = evaluateJ2(m, y.strain, y.state);
+  for (double e : {-0.05, -1e-3, 1e-3, 0.05}) {
+    const Voigt hydrostatic = {e, e, e, 0, 0, 0};
+    // From the virgin state.
+    const J2Result r0 = evaluateJ2(m, hydrostatic, zeroState(m));
+    EXPECT_EQ(r0.state, zeroState(m)) << e;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(r0.stress[a], 3 * K * e, 1e-9 * std::abs(3 * K * e)) << e;
+    // From a state on the yield surface: the pressure changes, nothing else.
+    const J2Result r1 = evaluateJ2(m, add(y.strain, hydrostatic), y.state);
+    EXPECT_EQ(r1.state, y.state) << e;
+    for (int a = 0; a < 6; ++a)
+      EXPECT_NEAR(r1.stress[a], atYield.stress[a] + (a < 3 ? 3 * K * e : 0.0), 1e-8 * 250.0) << e;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Registry entries and parameter validation.
+
+std::unique_ptr<Material> build(const std::string& name,
+                                const std::vector<std::pair<std::string, double>>& values) {
+  registerMaterials();
+  const auto& entry = materialRegistry().get(name);
+  Teuchos::ParameterList p(*entry.validParameters());  // defaults, as the scene reader fills in
+  for (const auto& [key, value] : values)
+    p.set(key, value);
+  return entry.build(p);
+}
+
+// The message of the std::invalid_argument thrown by build(), or "" when none is.
+std::string buildError(const std::string& name,
+                       const std::vector<std::pair<std::string, double>>& values) {
+  try {
+    build(name, values);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MaterialRegistry, NewLawsAreRegisteredWithDocumentedParameters) {
+  registerMaterials();
+  for (const std::string name : {"saint-venant-kirchhoff", "neo-hookean", "j2-small-strain"}) {
+    ASSERT_TRUE(materialRegistry().has(name)) << name;
+    const auto& entry = materialRegistry().get(name);
+    EXPECT_FALSE(entry.doc.empty()) << name;
+    const auto valid = entry.validParameters();
+    for (auto it = valid->begin(); it != valid->end(); ++it)
+      EXPECT_FALSE(valid->entry(it).docString().empty()) << name << ": " << valid->name(it);
+  }
+  const auto svk = build("saint-venant-kirchhoff", {{"E", 3.0}, {"density", 2.0}});
+  EXPECT_EQ(svk->name(), "saint-venant-kirchhoff");
+  EXPECT_EQ(svk->kinematics(), Kinematics::FiniteStrain);
+  EXPECT_EQ(svk->density(), 2.0);
+  const auto nh = build("neo-hookean", {{"C10", 1.0}, {"D1", 0.5}});
+  EXPECT_EQ(nh->kinematics(), Kinematics::FiniteStrain);
+  EXPECT_EQ(dynamic_cast<const NeoHookean&>(*nh).shearModulus(), 2.0);
+  EXPECT_EQ(dynamic_cast<const NeoHookean&>(*nh).bulkModulus(), 4.0);
+  const auto nhE = build("neo-hookean", {{"E", 2.6}, {"nu", 0.3}});
+  EXPECT_NEAR(dynamic_cast<const NeoHookean&>(*nhE).shearModulus(), 1.0, 1e-14);
+  const auto j2 = build("j2-small-strain", {{"Yield Stress", 0.01},
+                                            {"Isotropic Hardening Modulus", 0.1},
+                                            {"Kinematic Hardening Modulus", 0.2}});
+  EXPECT_EQ(j2->kinematics(), Kinematics::SmallStrain);
+  EXPECT_EQ(j2->stateSize(), 13);
+  const auto& params = dynamic_cast<const J2SmallStrain&>(*j2).parameters();
+  EXPECT_EQ(params.yieldStress, 0.01);
+  EXPECT_EQ(params.isotropicHardening, 0.1);
+  EXPECT_EQ(params.kinematicHardening, 0.2);
+}
+
+struct Refusal {
+  std::string law;
+  std::vector<std::pair<std::string, double>> values;
+  std::vector<std::string> expected;  // substrings of the message
+};
+
+TEST(MaterialRegistry, InvalidParametersAreRefusedNamingTheKey) {
+  const std::vector<Refusal> refusals = {
+      {"saint-venant-kirchhoff", {{"E", 0.0}}, {"E must be > 0", "(got 0)"}},
+      {"saint-venant-kirchhoff", {{"E", -2.0}}, {"E must be > 0", "(got -2)"}},
+      {"saint-venant-kirchhoff", {{"nu", 0.5}}, {"nu must lie in (-1, 0.5)", "(got 0.5)"}},
+      {"saint-venant-kirchhoff", {{"nu", -1.0}}, {"nu must lie in (-1, 0.5)", "(got -1)"}},
+      {"saint-venant-kirchhoff", {{"density", -1.0}}, {"density must be >= 0", "(got -1)"}},
+      {"neo-hookean", {{"E", -1.0}}, {"E must be > 0", "(got -1)"}},
+      {"neo-hookean", {{"E", 1.0}, {"nu", 0.5}}, {"nu must lie in (-1, 0.5)", "(got 0.5)"}},
+      {"neo-hookean", {{"E", 1.0}, {"nu", 0.7}}, {"nu must lie in (-1, 0.5)", "(got 0.7)"}},
+      {"neo-hookean", {{"E", 1.0}, {"nu", -1.0}}, {"nu must lie in (-1, 0.5)", "(got -1)"}},
+      {"neo-hookean", {{"C10", -1.0}, {"D1", 0.1}}, {"C10 must be > 0", "(got -1)"}},
+      {"neo-hookean", {{"D1", 0.1}}, {"C10 must be > 0", "(got 0)"}},
+      {"neo-hookean", {{"C10", 1.0}, {"D1", -0.1}}, {"D1 must be > 0", "(got -0.1)"}},
+      {"neo-hookean", {{"C10", 1.0}}, {"D1 must be > 0", "(got 0)"}},
+      {"neo-hookean", {{"E", 1.0}, {"C10", 1.0}, {"D1", 0.1}}, {"not both", "E = 1", "C10 = 1"}},
+      {"neo-hookean", {{"E", 2.0}, {"D1", 0.1}}, {"not both", "E = 2", "D1 = 0.1"}},
+      {"neo-hookean", {}, {"give either E and nu or C10 and D1"}},
+      {"neo-hookean", {{"C10", 1.0}, {"D1", 0.1}, {"nu", 0.25}}, {"nu is used only with E"}},
+      {"neo-hookean", {{"E", 1.0}, {"density", -1.0}}, {"density must be >= 0", "(got -1)"}},
+      {"j2-small-strain", {}, {"Yield Stress must be > 0", "(got 0)"}},
+      {"j2-small-strain", {{"Yield Stress", -1.0}}, {"Yield Stress must be > 0", "(got -1)"}},
+      {"j2-small-strain", {{"Yield Stress", 1.0}, {"E", 0.0}}, {"E must be > 0", "(got 0)"}},
+      {"j2-small-strain", {{"Yield Stress", 1.0}, {"nu", 0.5}}, {"nu must lie in", "(got 0.5)"}},
+      {"j2-small-strain",
+       {{"Yield Stress", 1.0}, {"Isotropic Hardening Modulus", -1.0}},
+       {"Isotropic Hardening Modulus must be >= 0", "(got -1)"}},
+      {"j2-small-strain",
+       {{"Yield Stress", 1.0}, {"Kinematic Hardening Modulus", -1.0}},
+       {"Kinematic Hardening Modulus must be >= 0", "(got -1)"}},
+      {"j2-small-strain",
+       {{"Yield Stress", 1.0}, {"density", -1.0}},
+       {"density must be >= 0", "(got -1)"}},
+  };
+  for (const auto& r : refusals) {
+    const std::string what = buildError(r.law, r.values);
+    ASSERT_FALSE(what.empty()) << r.law << ": no error for " << r.expected.front();
+    EXPECT_EQ(what.rfind(r.law + ": ", 0), 0u) << what;
+    for (const auto& s : r.expected)
+      EXPECT_NE(what.find(s), std::string::npos) << "'" << s << "' not in: " << what;
+  }
+  // The boundaries that are valid.
+  EXPECT_EQ(buildError("j2-small-strain", {{"Yield Stress", 1.0}}), "");
+  EXPECT_EQ(buildError("neo-hookean", {{"E", 1.0}, {"nu", -0.99}}), "");
+  EXPECT_EQ(buildError("neo-hookean", {{"C10", 1.0}, {"D1", 0.1}}), "");
+  EXPECT_EQ(buildError("saint-venant-kirchhoff", {}), "");
+}
+
+}  // namespace
+}  // namespace contactlab
