@@ -155,7 +155,7 @@ MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>&
   m.icntl(18) = 3;  // distributed assembled input: each rank passes its rows
   m.icntl(20) = 0;  // dense right-hand side ...
   m.icntl(21) = 0;  // ... and solution, centralized on the host
-  m.icntl(7) = static_cast<MUMPS_INT>(options.ordering);
+  // ICNTL(7), the ordering, is set before each analysis (setMatrix): it depends on the size.
   m.icntl(28) = 1;  // sequential analysis: the parallel one fails here (INFOG(1) = -38)
   m.icntl(14) = options.memoryRelaxation;
   m.icntl(33) = options.determinant ? 1 : 0;

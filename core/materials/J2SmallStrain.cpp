@@ -1,8 +1,9 @@
 #include "core/materials/J2SmallStrain.hpp"
 
+#include "core/materials/ParameterCheck.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -10,10 +11,7 @@ namespace contactlab {
 namespace {
 
 void require(bool ok, const std::string& what, double got) {
-  if (ok) return;
-  std::ostringstream s;
-  s << "j2-small-strain: " << what << " (got " << got << ")";
-  throw std::invalid_argument(s.str());
+  requireParameter("j2-small-strain", ok, what, got);
 }
 
 // Voigt tensor components: the shear rows count twice in a double contraction.

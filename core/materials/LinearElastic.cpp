@@ -1,22 +1,16 @@
 #include "core/materials/LinearElastic.hpp"
 
-#include <sstream>
+#include "core/materials/ParameterCheck.hpp"
+
 #include <stdexcept>
 
 namespace contactlab {
 
 LinearElastic::LinearElastic(double youngModulus, double poissonRatio, double density)
     : E_(youngModulus), nu_(poissonRatio), density_(density) {
-  if (!(E_ > 0.0)) {
-    std::ostringstream s;
-    s << "linear-elastic: Young's modulus E must be > 0 (got " << E_ << ")";
-    throw std::invalid_argument(s.str());
-  }
-  if (!(nu_ > -1.0 && nu_ < 0.5)) {
-    std::ostringstream s;
-    s << "linear-elastic: Poisson's ratio nu must lie in (-1, 0.5) (got " << nu_ << ")";
-    throw std::invalid_argument(s.str());
-  }
+  requireParameter("linear-elastic", E_ > 0.0, "Young's modulus E must be > 0", E_);
+  requireParameter("linear-elastic", nu_ > -1.0 && nu_ < 0.5,
+                   "Poisson's ratio nu must lie in (-1, 0.5)", nu_);
   if (!(density_ >= 0.0)) throw std::invalid_argument("linear-elastic: density must be >= 0");
   const double lambda = E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_));
   const double mu = E_ / (2.0 * (1.0 + nu_));

@@ -1,5 +1,6 @@
 #include "core/materials/NeoHookean.hpp"
 
+#include "core/materials/ParameterCheck.hpp"
 #include "core/materials/Tensor3.hpp"
 
 #include <cmath>
@@ -11,10 +12,7 @@ namespace contactlab {
 namespace {
 
 void require(bool ok, const std::string& what, double got) {
-  if (ok) return;
-  std::ostringstream s;
-  s << "neo-hookean: " << what << " (got " << got << ")";
-  throw std::invalid_argument(s.str());
+  requireParameter("neo-hookean", ok, what, got);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "core/materials/SaintVenantKirchhoff.hpp"
 
+#include "core/materials/ParameterCheck.hpp"
 #include "core/materials/Tensor3.hpp"
 
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -10,10 +10,7 @@ namespace contactlab {
 namespace {
 
 void require(bool ok, const std::string& what, double got) {
-  if (ok) return;
-  std::ostringstream s;
-  s << "saint-venant-kirchhoff: " << what << " (got " << got << ")";
-  throw std::invalid_argument(s.str());
+  requireParameter("saint-venant-kirchhoff", ok, what, got);
 }
 
 }  // namespace

@@ -42,16 +42,18 @@ class ElementKernel {
 
   // Internal force (the residual's element contribution) and, unless tangent is nullptr, its
   // derivative with respect to u. The tangent is symmetric when the material's is.
-  virtual void compute(const double* x, const double* u, const Material& material,
-                       const double* stateOld, double* stateNew, double* residual,
-                       double* tangent) const = 0;
+  void compute(const double* x, const double* u, const Material& material, const double* stateOld,
+               double* stateNew, double* residual, double* tangent) const {
+    evaluate(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+  }
 
   // Cauchy stress (6 Voigt components, sigma_zz included in 2D) at each quadrature point
   // (6 * numQuadraturePoints(), may be nullptr) and/or its volume average over the reference
   // cell (6, may be nullptr).
-  virtual void stresses(const double* x, const double* u, const Material& material,
-                        const double* stateOld, double* stateNew, double* pointStress,
-                        double* averageStress) const = 0;
+  void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
+                double* stateNew, double* pointStress, double* averageStress) const {
+    evaluate(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress, averageStress);
+  }
 
   // Physical coordinates of the quadrature points, 3 per point.
   void quadraturePoints(const double* x, double* points) const;
@@ -70,6 +72,11 @@ class ElementKernel {
   // quadratureDegree < 0 selects stiffnessQuadratureDegree(type). Throws std::invalid_argument
   // for types that are not 2D or 3D cells.
   ElementKernel(ElementType type, int quadratureDegree);
+  // The kernel's one pass over the quadrature points: each output that is not nullptr is
+  // filled (residual, tangent, pointStress, averageStress as in compute() and stresses()).
+  virtual void evaluate(const double* x, const double* u, const Material& material,
+                        const double* stateOld, double* stateNew, double* residual, double* tangent,
+                        double* pointStress, double* averageStress) const = 0;
   // Reference gradients at quadrature point q; returns det J times the weight.
   double gradients(int q, const double* x, double* dNdx) const;
   double measure(int q, const double* x) const;

@@ -1,12 +1,6 @@
 #include "core/problem/SmallStrainKernel.hpp"
 
-#include "core/fem/IsoparametricMap.hpp"
-#include "core/fem/ReferenceElement.hpp"
 #include "core/problem/ElementUpdateError.hpp"
-
-#include <algorithm>
-#include <stdexcept>
-#include <string>
 
 namespace contactlab {
 namespace {
@@ -23,23 +17,15 @@ constexpr int voigt(int i, int j) {
 
 }  // namespace
 
-void SmallStrainKernel::compute(const double* x, const double* u, const Material& material,
-                                const double* stateOld, double* stateNew, double* residual,
-                                double* tangent) const {
-  if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
-  else
-    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
-}
-
-void SmallStrainKernel::stresses(const double* x, const double* u, const Material& material,
-                                 const double* stateOld, double* stateNew, double* pointStress,
+void SmallStrainKernel::evaluate(const double* x, const double* u, const Material& material,
+                                 const double* stateOld, double* stateNew, double* residual,
+                                 double* tangent, double* pointStress,
                                  double* averageStress) const {
   if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
                    averageStress);
   else
-    computeImpl<3>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
                    averageStress);
 }
 

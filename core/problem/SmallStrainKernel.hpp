@@ -12,10 +12,11 @@ class SmallStrainKernel : public ElementKernel {
       : ElementKernel(type, quadratureDegree) {}
 
   Kinematics kinematics() const override { return Kinematics::SmallStrain; }
-  void compute(const double* x, const double* u, const Material& material, const double* stateOld,
-               double* stateNew, double* residual, double* tangent) const override;
-  void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* pointStress, double* averageStress) const override;
+
+ protected:
+  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
+                double* stateNew, double* residual, double* tangent, double* pointStress,
+                double* averageStress) const override;
 
  private:
   template <int D>

@@ -1,5 +1,6 @@
 #include "core/problem/TotalLagrangianKernel.hpp"
 
+#include "core/materials/Tensor3.hpp"
 #include "core/problem/ElementUpdateError.hpp"
 
 #include <sstream>
@@ -7,32 +8,19 @@
 namespace contactlab {
 namespace {
 
-double determinant3(const double* F) {
-  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-         F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
-
 constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 
 }  // namespace
 
-void TotalLagrangianKernel::compute(const double* x, const double* u, const Material& material,
-                                    const double* stateOld, double* stateNew, double* residual,
-                                    double* tangent) const {
-  if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
-  else
-    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
-}
-
-void TotalLagrangianKernel::stresses(const double* x, const double* u, const Material& material,
-                                     const double* stateOld, double* stateNew, double* pointStress,
+void TotalLagrangianKernel::evaluate(const double* x, const double* u, const Material& material,
+                                     const double* stateOld, double* stateNew, double* residual,
+                                     double* tangent, double* pointStress,
                                      double* averageStress) const {
   if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
                    averageStress);
   else
-    computeImpl<3>(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress,
+    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
                    averageStress);
 }
 
@@ -67,7 +55,7 @@ void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const 
       for (int i = 0; i < D; ++i)
         for (int J = 0; J < D; ++J)
           in.F[i * 3 + J] += u[a * D + i] * dNdX[a * D + J];
-    const double detF = determinant3(in.F.data());
+    const double detF = tensor3::determinant(in.F);
     if (!(detF > 0)) {
       std::ostringstream s;
       s << "det F = " << detF << " <= 0: the displacement turns the element inside out";

@@ -17,11 +17,12 @@ class TotalLagrangianKernel : public ElementKernel {
       : ElementKernel(type, quadratureDegree) {}
 
   Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
-  void compute(const double* x, const double* u, const Material& material, const double* stateOld,
-               double* stateNew, double* residual, double* tangent) const override;
-  // Cauchy stress sigma = P F^T / det F; the average is over the reference cell.
-  void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* pointStress, double* averageStress) const override;
+
+ protected:
+  // Stresses are Cauchy, sigma = P F^T / det F; the average is over the reference cell.
+  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
+                double* stateNew, double* residual, double* tangent, double* pointStress,
+                double* averageStress) const override;
 
  private:
   template <int D>

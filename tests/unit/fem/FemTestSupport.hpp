@@ -5,6 +5,7 @@
 #include "core/materials/Material.hpp"
 #include "core/mesh/ElementType.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -30,6 +31,13 @@ inline std::vector<ElementType> solidTypes() {
 inline bool isSimplex(ElementType t) {
   return t == ElementType::Tri3 || t == ElementType::Tri6 || t == ElementType::Tet4 ||
          t == ElementType::Tet10;
+}
+
+inline double maxAbs(const std::vector<double>& v) {
+  double m = 0;
+  for (double e : v)
+    m = std::max(m, std::abs(e));
+  return m;
 }
 
 inline std::string nameOf(ElementType t) {

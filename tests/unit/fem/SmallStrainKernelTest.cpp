@@ -11,14 +11,8 @@
 namespace contactlab {
 namespace {
 
+using test::maxAbs;
 using test::nameOf;
-
-double maxAbs(const std::vector<double>& v) {
-  double m = 0;
-  for (double e : v)
-    m = std::max(m, std::abs(e));
-  return m;
-}
 
 struct Element {
   explicit Element(ElementType t)

@@ -12,14 +12,8 @@
 namespace contactlab {
 namespace {
 
+using test::maxAbs;
 using test::nameOf;
-
-double maxAbs(const std::vector<double>& v) {
-  double m = 0;
-  for (double e : v)
-    m = std::max(m, std::abs(e));
-  return m;
-}
 
 // Saint Venant-Kirchhoff written out here, so that the kernel's tests do not depend on the
 // materials module: S = lambda tr(E) I + 2 mu E, P = F S,
