@@ -67,16 +67,15 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
 class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
                       public Teuchos::ParameterListAcceptorDefaultBase {
  public:
-  SolverFactory(LinearSolver& solver, NonlinearSystem& system, bool& first)
-      : solver_(solver), system_(system), first_(first) {}
+  SolverFactory(LinearSolver& solver, NonlinearSystem& system) : solver_(solver), system_(system) {}
   bool isCompatible(const Thyra::LinearOpSourceBase<double>&) const override { return true; }
   RCP<Thyra::LinearOpWithSolveBase<double>> createOp() const override { return rcp(new SolverOp); }
   void initializeOp(const RCP<const Thyra::LinearOpSourceBase<double>>& source,
                     Thyra::LinearOpWithSolveBase<double>* op,
                     const Thyra::ESupportSolveUse) const override {
     // The system's current tangent (with geometry in Newton a re-pairing may have replaced it).
-    solver_.setMatrix(system_.tangent(), first_ || system_.takePatternChanged());
-    first_ = false;
+    // The solver analyses on its first matrix by itself.
+    solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
     dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_);
   }
   void uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
@@ -103,7 +102,6 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
  private:
   LinearSolver& solver_;
   NonlinearSystem& system_;
-  bool& first_;  // no factorization yet: a full analysis (owned by NoxNewton, across solves)
 };
 
 // The system's tangent as it is now: re-pairing replaces the matrix (and its graph) during a
@@ -162,11 +160,11 @@ class IterateObserver : public NOX::Observer {
 // R(x, t) = 0 at a fixed time t as a Thyra model: f = R, W = dR/dx.
 class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
  public:
-  SystemModel(NonlinearSystem& system, LinearSolver& solver, const RCP<const Map>& map, bool& first,
+  SystemModel(NonlinearSystem& system, LinearSolver& solver, const RCP<const Map>& map,
               bool geometryInNewton)
       : system_(system),
         space_(Thyra::createVectorSpace<Scalar, LO, GO, Node>(map)),
-        factory_(rcp(new SolverFactory(solver, system, first))),
+        factory_(rcp(new SolverFactory(solver, system))),
         geometryInNewton_(geometryInNewton) {
     Thyra::ModelEvaluatorBase::InArgsSetup<double> in;
     in.setModelEvalDescription("contactlab::SystemModel");
@@ -227,7 +225,7 @@ NoxNewton::NoxNewton(NonlinearSystem& system, LinearSolver& solver, const Contac
 
 NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Observer& observer) {
   NewtonOutcome out;
-  auto model = rcp(new SystemModel(system_, solver_, x.getMap(), first_, request.geometryInNewton));
+  auto model = rcp(new SystemModel(system_, solver_, x.getMap(), request.geometryInNewton));
   model->setTime(request.time);
   auto trial = system_.createVector();
   trial->assign(x);

@@ -26,7 +26,6 @@ class NoxNewton : public NewtonMethod {
   const ContactControls* controls_;
   const std::string lineSearch_;
   const Teuchos::ParameterList noxParameters_;
-  bool first_ = true;
 };
 
 }  // namespace contactlab

@@ -60,9 +60,8 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     }
     t0 = clock::now();
     try {
-      const bool patternChanged = system_.takePatternChanged();
-      solver_.setMatrix(system_.tangent(), !factored_ || patternChanged);
-      factored_ = true;
+      // The solver analyses on its first matrix by itself.
+      solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
       residual->scale(-1.0);
       increment->putScalar(0.0);
       solver_.solve(*residual, *increment);

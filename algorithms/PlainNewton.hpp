@@ -16,7 +16,6 @@ class PlainNewton : public NewtonMethod {
   NonlinearSystem& system_;
   LinearSolver& solver_;
   const ContactControls* controls_;
-  bool factored_ = false;
 };
 
 }  // namespace contactlab

@@ -16,7 +16,7 @@ RunReport runStatic(NonlinearSystem& system, ContactControls* controls, LinearSo
     newton = std::make_unique<NoxNewton>(system, solver, controls, options.lineSearch, options.nox);
   else
     newton = std::make_unique<PlainNewton>(system, solver, controls);
-  return StaticSolver(system, controls, *newton, options).run(u, onStep, onIteration);
+  return StaticSolver(system, controls, *newton, options, &solver).run(u, onStep, onIteration);
 }
 
 }  // namespace contactlab

@@ -61,6 +61,15 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          choices({"plain", "nox"}));
   p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
          choices({"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}));
+  p->set("Predictor", "tangent",
+         "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
+         "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
+         "body with the last converged tangent (code_aster's PREDICTION='TANGENTE'; one linear "
+         "solve, counted as an iteration); 'none' starts Newton from u_n with the new prescribed "
+         "values, so the whole increment first strains the elements along the constrained "
+         "boundary (plastic or inverted elements there can make Newton fail). Steps driven by "
+         "loads alone start from u_n either way",
+         choices({"tangent", "none"}));
   p->set("Max Geometry Iterations", 10,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
@@ -144,6 +153,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
+  o.tangentPredictor = newton.get<std::string>("Predictor") == "tangent";
   if (o.driver == "plain" && o.lineSearch != "Full Step")
     throw std::invalid_argument("Newton/Line Search '" + o.lineSearch +
                                 "' needs Newton/Driver: nox (the plain Newton takes full steps)");
@@ -198,11 +208,12 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
 }
 
 StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
-                           NewtonMethod& newton, StaticSolverOptions options)
+                           NewtonMethod& newton, StaticSolverOptions options, LinearSolver* solver)
     : problem_(problem),
       controls_(controls),
       newton_(newton),
       options_(std::move(options)),
+      solver_(solver),
       detector_(options_.grazingTolerance) {
   if (controls_)
     controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
@@ -238,6 +249,62 @@ bool StaticSolver::forcedStateHolds(const Vector& x, double t, double target, Ve
   return !statusesMoved && forcedResidual_ <= target;
 }
 
+StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepReport& sr,
+                                               RunReport& report) {
+  Prediction p;
+  if (!options_.tangentPredictor || solver_ == nullptr) return p;
+  auto increment = problem_.createVector();  // du_D: nonzero on the prescribed dofs only
+  increment->update(1.0, x, -1.0, u, 0.0);
+  const double size = increment->normInf();
+  if (size == 0) return p;
+  p.done = true;
+  using clock = std::chrono::steady_clock;
+  const double t = sr.time;
+  auto t0 = clock::now();
+  // The tangent's prescribed columns are eliminated, so K(u)_{.D} du_D is taken as the
+  // derivative of R along du_D: a forward difference of two residuals, exact for a linear
+  // solid up to round-off. The step h du_D is a millionth of the increment.
+  constexpr double h = 1e-6;
+  auto rhs = problem_.createVector();
+  problem_.assemble(u, t, rhs.get(), true);
+  AssemblyFailure failure = problem_.assemblyFailure();
+  if (failure.code.empty()) {
+    auto shifted = problem_.createVector();
+    shifted->update(1.0, u, h, *increment, 0.0);
+    auto shiftedResidual = problem_.createVector();
+    problem_.assemble(*shifted, t, shiftedResidual.get(), false);
+    failure = problem_.assemblyFailure();
+    shiftedResidual->update(-1.0, *rhs, 1.0);  // R(u + h du_D) - R(u)
+    rhs->update(-1.0 / h, *shiftedResidual, -1.0);
+  }
+  sr.seconds.assembly += std::chrono::duration<double>(clock::now() - t0).count();
+  if (!failure.code.empty()) {
+    p.failure = failure.code;
+    p.message = failure.message + " (tangent predictor, at the last converged state)";
+    return p;
+  }
+  p.residual = rhs->norm2();
+  if (!std::isfinite(p.residual)) {
+    p.failure = "nan-detected";
+    p.message = "the tangent predictor's residual is not finite";
+    return p;
+  }
+  t0 = clock::now();
+  try {
+    solver_->setMatrix(problem_.tangent(), problem_.takePatternChanged());
+    auto du = problem_.createVector();
+    solver_->solve(*rhs, *du);
+    x.update(1.0, *du, 1.0);
+  } catch (const LinearSolverError& e) {
+    p.failure = "linear-solver-failed";
+    p.message = std::string("tangent predictor: ") + e.what();
+  }
+  sr.seconds.linearSolve += std::chrono::duration<double>(clock::now() - t0).count();
+  ++sr.iterations;
+  ++report.linearSolves;
+  return p;
+}
+
 bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
                              const IterationCallback& onIteration) {
   const double t = sr.time;
@@ -254,9 +321,11 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     detector_.reset();
   }
   problem_.updateGeometry(x, t);
+  const Prediction prediction = predict(u, x, sr, report);
+  if (prediction.done) problem_.updateGeometry(x, t);
   auto residual = problem_.createVector();
   problem_.assemble(x, t, residual.get(), false);
-  const double reference = residual->norm2();
+  const double reference = prediction.done ? prediction.residual : residual->norm2();
   // The fixed points start from the statuses and thresholds of the predictor.
   if (statusFixedPoint) controls_->freezeStatuses(true);
   if (thresholdFixedPoint) controls_->freezeThresholds(true);
@@ -286,7 +355,9 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     }
     return false;
   };
-  int solves = 0;
+  if (!prediction.failure.empty()) return fail(prediction.failure, prediction.message);
+  int solves = prediction.done ? 1 : 0;
+  if (prediction.done && onIteration) onIteration(sr.step, t, 0, prediction.residual);
   const NewtonMethod::Observer observer = [&](int iteration, double norm) {
     if (const int signal = interruptionAgreed(mpiComm_)) throw Interrupted{signal};
     sr.residual = norm;

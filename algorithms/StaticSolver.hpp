@@ -1,9 +1,10 @@
 #pragma once
 // Quasi-static load stepping with the seed's nested algorithms (DESIGN.md §6 "Algorithms").
 //
-// Per load step: prescribed values at the new time, the geometry paired at the predictor, then
-// a Newton solve (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to
-// them, innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
+// Per load step: prescribed values at the new time (spread through the body by the tangent
+// predictor when they moved), the geometry paired at the predictor, then a Newton solve
+// (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to them,
+// innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
 // Newton" follows the iterate instead (statuses and thresholds through the formulation's
 // generalized Jacobian; the geometry re-paired at every iterate, its derivatives in the tangent
 // as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
@@ -18,6 +19,7 @@
 #include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SlowDynamics.hpp"
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -39,6 +41,8 @@ struct StaticSolverOptions {
   std::string driver = "plain";          // "plain" (PlainNewton) or "nox" (NoxNewton)
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
   Teuchos::ParameterList nox;            // passed through to NOX
+  // A step whose prescribed values move starts from the tangent predictor (doc/algorithms.md).
+  bool tangentPredictor = true;
   // Algorithm.
   std::string method = "partial-newton";
   bool geometryInNewton = false, thresholdsInNewton = true, statusesInNewton = true;
@@ -105,9 +109,10 @@ class StaticSolver {
   using IterationCallback =
       std::function<void(int step, double time, int iteration, double residual)>;
 
-  // `controls` is the system's contact seam, or null for a system without contact.
+  // `controls` is the system's contact seam, or null for a system without contact. `solver`
+  // solves the tangent predictor's system (null: no predictor, whatever the options say).
   StaticSolver(NonlinearSystem& problem, ContactControls* controls, NewtonMethod& newton,
-               StaticSolverOptions options);
+               StaticSolverOptions options, LinearSolver* solver = nullptr);
 
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
   // solution and onStep runs (results are written there). Never throws on a numerical failure:
@@ -118,6 +123,16 @@ class StaticSolver {
   // One attempt at the step to time t from the converged state u; x holds the result.
   bool solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
                  const IterationCallback& onIteration);
+  // The tangent predictor from the converged state u to the step's time, when the prescribed
+  // values moved: x (u with the new prescribed values on entry) becomes u + du with
+  // K(u) du = -R(u, t) - K(u)_{.D} du_D.
+  struct Prediction {
+    bool done = false;    // false: the prescribed values did not move (or no predictor)
+    double residual = 0;  // ||R(u, t) + K(u)_{.D} du_D||, the linearized start's residual
+    std::string failure;  // a named reason when the system could not be evaluated or solved
+    std::string message;
+  };
+  Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
   void treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
@@ -127,6 +142,7 @@ class StaticSolver {
   ContactControls* controls_;
   NewtonMethod& newton_;
   const StaticSolverOptions options_;
+  LinearSolver* solver_;
   CyclingDetector detector_;
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
