@@ -4,6 +4,9 @@
 #include "core/materials/LinearElastic.hpp"
 #include "core/materials/NeoHookean.hpp"
 #include "core/materials/SaintVenantKirchhoff.hpp"
+#include "core/materials/SimoMiehe.hpp"
+
+#include <Teuchos_Array.hpp>
 
 namespace contactlab {
 
@@ -100,6 +103,46 @@ void registerMaterials() {
          j2.kinematicHardening = p.get<double>("Kinematic Hardening Modulus");
          j2.density = p.get<double>("density");
          return std::make_unique<J2SmallStrain>(j2);
+       }});
+  materialRegistry().add(
+      {"simo-miehe",
+       "Von Mises plasticity, finite strain (plane strain in 2D): F = Fe Fp, Hencky elasticity "
+       "in logarithmic strains, exponential-map radial return (Simo 1992; de Souza Neto et al. "
+       "ch. 14), isotropic hardening linear or tabulated, consistent tangent.",
+       [] {
+         auto p = Teuchos::rcp(new Teuchos::ParameterList("simo-miehe"));
+         p->set("E", 1.0,
+                "Young's modulus (> 0), in the scene's stress unit; with nu the Hencky bulk and "
+                "shear moduli K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu))");
+         p->set("nu", 0.3, "Poisson's ratio, in (0, 0.5)");
+         p->set("Yield Stress", 0.0,
+                "Initial uniaxial yield stress sigma_y0 (> 0, must be given), in the scene's "
+                "stress unit: the von Mises Kirchhoff stress at first yield");
+         p->set("Isotropic Hardening Modulus", 0.0,
+                "Linear isotropic hardening H (>= 0), in the scene's stress unit: the yield "
+                "stress is sigma_y0 + H alpha, alpha the equivalent plastic strain; 0 is "
+                "perfectly plastic. Leave at 0 when a hardening curve is given");
+         p->set("Hardening Strains", Teuchos::Array<double>(),
+                "Optional tabulated hardening: equivalent plastic strains alpha_i of the curve's "
+                "points, starting at 0 and strictly increasing, e.g. [0, 0.02, 0.1]; with "
+                "Hardening Stresses. The yield stress is piecewise linear in alpha and continues "
+                "beyond the last point with the last segment's slope. Empty: linear hardening");
+         p->set("Hardening Stresses", Teuchos::Array<double>(),
+                "Yield stresses sigma_i at Hardening Strains (as many entries), starting at the "
+                "Yield Stress and never decreasing, e.g. [250, 300, 340]");
+         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+         return Teuchos::RCP<const Teuchos::ParameterList>(p);
+       },
+       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
+         SimoMiehe::Parameters sm;
+         sm.youngModulus = p.get<double>("E");
+         sm.poissonRatio = p.get<double>("nu");
+         sm.yieldStress = p.get<double>("Yield Stress");
+         sm.isotropicHardening = p.get<double>("Isotropic Hardening Modulus");
+         sm.hardeningStrains = p.get<Teuchos::Array<double>>("Hardening Strains").toVector();
+         sm.hardeningStresses = p.get<Teuchos::Array<double>>("Hardening Stresses").toVector();
+         sm.density = p.get<double>("density");
+         return std::make_unique<SimoMiehe>(sm);
        }});
 }
 

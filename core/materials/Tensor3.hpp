@@ -3,6 +3,7 @@
 // std::array<double, 9>: A[i * 3 + j] = A_ij (the layout of MaterialInput::F and
 // MaterialOutput::P).
 #include <array>
+#include <cmath>
 
 namespace contactlab::tensor3 {
 
@@ -72,6 +73,57 @@ inline double contract(const Mat3& A, const Mat3& B) {
   for (int i = 0; i < 9; ++i)
     s += A[i] * B[i];
   return s;
+}
+
+// Eigenvalues and orthonormal eigenvectors of a symmetric A (its upper triangle is read), by
+// cyclic Jacobi rotations: A = Q diag(values) Q^T, eigenvector a in column a (Q[i * 3 + a]).
+// Accurate to round-off for equal and near-equal eigenvalues as well (then Q is some
+// orthonormal basis of the eigenspace). Returns false when A is not finite or the rotations do
+// not annihilate the off-diagonal part within 50 sweeps.
+inline bool symmetricEigen(const Mat3& A, std::array<double, 3>& values, Mat3& Q) {
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      a[i][j] = i <= j ? A[i * 3 + j] : A[j * 3 + i];
+  Q = identity();
+  constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    const double off = std::abs(a[0][1]) + std::abs(a[0][2]) + std::abs(a[1][2]);
+    if (!std::isfinite(off + a[0][0] + a[1][1] + a[2][2])) return false;
+    if (off == 0.0) {
+      values = {a[0][0], a[1][1], a[2][2]};
+      return true;
+    }
+    for (const auto& pq : kPairs) {
+      const int p = pq[0], q = pq[1], r = 3 - p - q;
+      const double apq = a[p][q];
+      if (apq == 0.0) continue;
+      const double g = 100.0 * std::abs(apq);
+      if (sweep > 3 && std::abs(a[p][p]) + g == std::abs(a[p][p]) &&
+          std::abs(a[q][q]) + g == std::abs(a[q][q])) {
+        a[p][q] = a[q][p] = 0.0;  // below round-off of both diagonal entries
+        continue;
+      }
+      // The rotation in the (p, q) plane that zeroes a_pq: t = tan(phi), cot(2 phi) = theta.
+      const double theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+      double t = std::abs(theta) > 1e150 ? 0.5 / std::abs(theta)
+                                         : 1.0 / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+      if (theta < 0.0) t = -t;
+      const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+      a[p][p] -= t * apq;
+      a[q][q] += t * apq;
+      a[p][q] = a[q][p] = 0.0;
+      const double arp = a[r][p], arq = a[r][q];
+      a[r][p] = a[p][r] = c * arp - s * arq;
+      a[r][q] = a[q][r] = s * arp + c * arq;
+      for (int k = 0; k < 3; ++k) {
+        const double qkp = Q[k * 3 + p], qkq = Q[k * 3 + q];
+        Q[k * 3 + p] = c * qkp - s * qkq;
+        Q[k * 3 + q] = s * qkp + c * qkq;
+      }
+    }
+  }
+  return false;
 }
 
 }  // namespace contactlab::tensor3

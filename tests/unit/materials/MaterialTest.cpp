@@ -2,6 +2,8 @@
 // Tangents against central finite differences, closed-form stresses, frame invariance, the
 // linear-elastic limit, the J2 return map (uniaxial hardening, Bauschinger, consistency,
 // pressure), parameter validation through the registry, and the neo-Hookean J <= 0 failure.
+#include "tests/unit/materials/MaterialTestSupport.hpp"
+
 #include "core/materials/J2SmallStrain.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/materials/MaterialRegistry.hpp"
@@ -23,88 +25,12 @@
 namespace contactlab {
 namespace {
 
+using namespace test;
 using tensor3::Mat3;
 using Voigt = std::array<double, 6>;
 using J2State = std::array<double, J2SmallStrain::kStateSize>;
 
 constexpr double kE = 10.0;
-
-double maxAbs(const double* a, int n) {
-  double m = 0.0;
-  for (int i = 0; i < n; ++i)
-    m = std::max(m, std::abs(a[i]));
-  return m;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Finite strain helpers.
-
-MaterialOutput evaluateF(const Material& m, const Mat3& F) {
-  MaterialInput in;
-  in.F = F;
-  MaterialOutput out;
-  m.evaluate(in, out);
-  EXPECT_FALSE(out.failed) << m.name() << ": " << out.failure;
-  return out;
-}
-
-// max |dPdF - central differences of P| / max |dPdF|.
-double dPdFError(const Material& m, const Mat3& F) {
-  const MaterialOutput out = evaluateF(m, F);
-  const double h = 1e-6;
-  double err = 0.0;
-  for (int kL = 0; kL < 9; ++kL) {
-    Mat3 plus = F, minus = F;
-    plus[kL] += h;
-    minus[kL] -= h;
-    const Mat3 Pp = evaluateF(m, plus).P, Pm = evaluateF(m, minus).P;
-    for (int iJ = 0; iJ < 9; ++iJ)
-      err = std::max(err, std::abs(out.dPdF[iJ * 9 + kL] - (Pp[iJ] - Pm[iJ]) / (2.0 * h)));
-  }
-  return err / maxAbs(out.dPdF.data(), 81);
-}
-
-// F = I + G with G random, |G|_Frobenius uniform in [0.05, 0.5] (so det F > 0); plane-strain
-// shaped (only the xy block of G) when planeStrain.
-Mat3 randomF(std::mt19937& gen, bool planeStrain) {
-  std::uniform_real_distribution<double> entry(-1.0, 1.0), size(0.05, 0.5);
-  Mat3 G{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (!planeStrain || (i < 2 && j < 2)) G[i * 3 + j] = entry(gen);
-  const double scale = size(gen) / std::sqrt(tensor3::contract(G, G));
-  Mat3 F = tensor3::identity();
-  for (int a = 0; a < 9; ++a)
-    F[a] += scale * G[a];
-  return F;
-}
-
-// Rotation by `angle` about the (normalized) `axis` (Rodrigues).
-Mat3 rotation(std::array<double, 3> axis, double angle) {
-  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-  for (double& a : axis)
-    a /= n;
-  const double c = std::cos(angle), s = std::sin(angle);
-  Mat3 Q{};
-  const Mat3 K = {0, -axis[2], axis[1], axis[2], 0, -axis[0], -axis[1], axis[0], 0};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      Q[i * 3 + j] = (i == j ? c : 0.0) + s * K[i * 3 + j] + (1.0 - c) * axis[i] * axis[j];
-  return Q;
-}
-
-Mat3 diagonal(double a, double b, double c) {
-  return {a, 0, 0, 0, b, 0, 0, 0, c};
-}
-
-// Cauchy stress P F^T / J.
-Mat3 cauchy(const Mat3& P, const Mat3& F) {
-  Mat3 sigma = tensor3::multiplyTranspose(P, F);
-  const double J = tensor3::determinant(F);
-  for (double& s : sigma)
-    s /= J;
-  return sigma;
-}
 
 // The finite-strain laws under test, with their Lame constants.
 struct FiniteLaw {

@@ -1,0 +1,99 @@
+#pragma once
+// Helpers shared by the constitutive-law tests: a finite-strain evaluation and its tangent
+// against central differences, random deformation gradients, rotations, diagonal stretches,
+// the Cauchy stress of P.
+#include "core/materials/Material.hpp"
+#include "core/materials/Tensor3.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <random>
+#include <vector>
+
+namespace contactlab::test {
+
+using tensor3::Mat3;
+
+inline double maxAbs(const double* a, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i)
+    m = std::max(m, std::abs(a[i]));
+  return m;
+}
+
+// P and dP/dF of F from stateOld (nullptr for a law without internal variables); the trial
+// state is discarded.
+inline MaterialOutput evaluateF(const Material& m, const Mat3& F,
+                                const double* stateOld = nullptr) {
+  std::vector<double> stateNew(m.stateSize());
+  MaterialInput in;
+  in.F = F;
+  in.stateOld = stateOld;
+  MaterialOutput out;
+  out.stateNew = stateNew.empty() ? nullptr : stateNew.data();
+  m.evaluate(in, out);
+  EXPECT_FALSE(out.failed) << m.name() << ": " << out.failure;
+  return out;
+}
+
+// max |dPdF - central differences of P| / max |dPdF|, every evaluation from the same stateOld.
+inline double dPdFError(const Material& m, const Mat3& F, const double* stateOld = nullptr) {
+  const MaterialOutput out = evaluateF(m, F, stateOld);
+  const double h = 1e-6;
+  double err = 0.0;
+  for (int kL = 0; kL < 9; ++kL) {
+    Mat3 plus = F, minus = F;
+    plus[kL] += h;
+    minus[kL] -= h;
+    const Mat3 Pp = evaluateF(m, plus, stateOld).P, Pm = evaluateF(m, minus, stateOld).P;
+    for (int iJ = 0; iJ < 9; ++iJ)
+      err = std::max(err, std::abs(out.dPdF[iJ * 9 + kL] - (Pp[iJ] - Pm[iJ]) / (2.0 * h)));
+  }
+  return err / maxAbs(out.dPdF.data(), 81);
+}
+
+// F = I + G with G random, |G|_Frobenius uniform in [0.05, 0.5] (so det F > 0); plane-strain
+// shaped (only the xy block of G) when planeStrain.
+inline Mat3 randomF(std::mt19937& gen, bool planeStrain) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), size(0.05, 0.5);
+  Mat3 G{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!planeStrain || (i < 2 && j < 2)) G[i * 3 + j] = entry(gen);
+  const double scale = size(gen) / std::sqrt(tensor3::contract(G, G));
+  Mat3 F = tensor3::identity();
+  for (int a = 0; a < 9; ++a)
+    F[a] += scale * G[a];
+  return F;
+}
+
+// Rotation by `angle` about the (normalized) `axis` (Rodrigues).
+inline Mat3 rotation(std::array<double, 3> axis, double angle) {
+  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for (double& a : axis)
+    a /= n;
+  const double c = std::cos(angle), s = std::sin(angle);
+  Mat3 Q{};
+  const Mat3 K = {0, -axis[2], axis[1], axis[2], 0, -axis[0], -axis[1], axis[0], 0};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      Q[i * 3 + j] = (i == j ? c : 0.0) + s * K[i * 3 + j] + (1.0 - c) * axis[i] * axis[j];
+  return Q;
+}
+
+inline Mat3 diagonal(double a, double b, double c) {
+  return {a, 0, 0, 0, b, 0, 0, 0, c};
+}
+
+// Cauchy stress P F^T / J.
+inline Mat3 cauchy(const Mat3& P, const Mat3& F) {
+  Mat3 sigma = tensor3::multiplyTranspose(P, F);
+  const double J = tensor3::determinant(F);
+  for (double& s : sigma)
+    s /= J;
+  return sigma;
+}
+
+}  // namespace contactlab::test
