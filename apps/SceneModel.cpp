@@ -37,10 +37,13 @@ LoadFunction loadFunction(const ParameterList& p, double endTime, const std::str
   LoadFunction f;
   f.kind = p.get<std::string>("Function") == "constant" ? LoadFunction::Kind::Constant
                                                         : LoadFunction::Kind::Ramp;
-  f.endTime = endTime;
+  const double stop = p.get<double>("Stop Time");
+  f.endTime = stop > 0 ? stop : endTime;
   f.startTime = p.get<double>("Start Time");
-  if (!(f.startTime >= 0 && f.startTime < endTime))
-    throw InputError(where + ": " + path + "/Start Time must be in [0, End Time)");
+  if (!(stop >= 0 && stop <= endTime))
+    throw InputError(where + ": " + path + "/Stop Time must be in [0, End Time] (0: End Time)");
+  if (!(f.startTime >= 0 && f.startTime < f.endTime))
+    throw InputError(where + ": " + path + "/Start Time must be in [0, Stop Time)");
   return f;
 }
 

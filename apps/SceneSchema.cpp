@@ -79,10 +79,13 @@ ParameterList dirichletItem() {
         choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
   p.set("Value", 0.0, "Prescribed displacement at the end of the load");
   p.set("Function", "ramp",
-        "Time scaling: 'ramp' = Value * (t - Start Time) / (End Time - Start Time) after Start "
-        "Time (0 before), 'constant' = Value at every step",
+        "Time scaling: 'ramp' = Value * (t - Start Time) / (Stop Time - Start Time) between "
+        "Start Time and Stop Time (0 before, Value after), 'constant' = Value at every step",
         choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
+  p.set("Stop Time", 0.0,
+        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
+        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
   return p;
 }
 
@@ -99,7 +102,10 @@ ParameterList loadItem() {
         "Force per unit area (traction) or volume (body-force) at the end of the load");
   p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",
         choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
+  p.set("Stop Time", 0.0,
+        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
+        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
   return p;
 }
 
@@ -131,7 +137,10 @@ ParameterList obstacleItem() {
         "Rigid translation of the obstacle at the end of the load");
   p.set("Function", "ramp", "Time scaling of Displacement: 'ramp' or 'constant'",
         choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at End Time");
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
+  p.set("Stop Time", 0.0,
+        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
+        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
   return p;
 }
 

@@ -10,7 +10,8 @@
 namespace contactlab {
 
 // Scale factor of a load at time t: `ramp` is 0 until startTime, then grows linearly to 1 at
-// t = endTime (sequenced loading: press first, then shift); `constant` is 1 at every time.
+// t = endTime and holds 1 after it (sequenced loading: press first, then shift); `constant` is
+// 1 at every time.
 struct LoadFunction {
   enum class Kind { Ramp, Constant };
   Kind kind = Kind::Ramp;
@@ -18,7 +19,8 @@ struct LoadFunction {
   double startTime = 0.0;
   double operator()(double t) const {
     if (kind == Kind::Constant) return 1.0;
-    return t <= startTime ? 0.0 : (t - startTime) / (endTime - startTime);
+    if (t <= startTime) return 0.0;
+    return t >= endTime ? 1.0 : (t - startTime) / (endTime - startTime);
   }
 };
 
