@@ -88,6 +88,20 @@ int reportInputError(const std::exception& e, bool root) {
   return 2;
 }
 
+// A follower pressure's load stiffness is not symmetric: a solver that assumes symmetry would
+// solve another system (MUMPS reads one triangle, CG loses its guarantees). Refused before
+// anything runs, the same on every rank (both sides are).
+void checkSymmetry(const Problem& problem, const LinearSolver& solver, const std::string& where) {
+  const std::string assumption = solver.symmetryAssumption();
+  if (problem.followerLoads().empty() || assumption.empty()) return;
+  throw InputError(where + ": Linear Solver/" + solver.name() + ": " + assumption + ", but load '" +
+                   problem.followerLoads().front() +
+                   "' is a pressure that follows the deformation of a finite-strain body, and "
+                   "its load stiffness makes the tangent not symmetric; use a setting that takes "
+                   "any matrix, or Follower: false on the load (a dead pressure on the reference "
+                   "facets)");
+}
+
 }  // namespace
 
 // The status pattern of the converged state x at time t: its critical friction factor, and the
@@ -211,6 +225,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       }
     }
     solver = buildLinearSolver(*sm.scene.params, comm);
+    checkSymmetry(*problem, *solver, sm.scene.path);
     if (options.validateOnly) {
       if (root)
         std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "

@@ -267,8 +267,16 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       sm.model.bodyForces.push_back(b);
       continue;
     }
+    const std::string follower = l.get<std::string>("Follower");
+    if (type != "pressure" && follower != "automatic")
+      throw InputError(where + ": " + path +
+                       "/Follower: only a pressure follows the deformation (a " + type +
+                       " is a dead load); remove the key");
     SurfaceLoad s;
     s.name = name;
+    s.follower = follower == "true"    ? SurfaceLoad::Follower::Yes
+                 : follower == "false" ? SurfaceLoad::Follower::No
+                                       : SurfaceLoad::Follower::Automatic;
     s.group = l.get<std::string>("Group");
     if (s.group.empty()) throw InputError(where + ": " + path + "/Group is empty");
     s.kind = type == "pressure" ? SurfaceLoad::Kind::Pressure : SurfaceLoad::Kind::Traction;

@@ -98,6 +98,14 @@ ParameterList loadItem() {
   p.set("Group", "", "Boundary physical group (pressure, traction)");
   p.set("Block", "", "Element block (body-force); empty means every block");
   p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
+  p.set("Follower", "automatic",
+        "pressure: 'true' makes it follow the deformation (p on the current facets, "
+        "-p n da by Nanson's formula, its load stiffness in the tangent, which is then not "
+        "symmetric: the linear solver must take any matrix), for finite-strain blocks only; "
+        "'false' keeps it on the reference facets (a dead load); 'automatic' follows on "
+        "finite-strain blocks and not on small-strain ones. Tractions and body forces are dead "
+        "loads",
+        choices({"automatic", "true", "false"}));
   p.set("Vector", Teuchos::Array<double>(3, 0.0),
         "Force per unit area (traction) or volume (body-force) at the end of the load");
   p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",

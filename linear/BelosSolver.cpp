@@ -199,6 +199,12 @@ BelosSolver::BelosSolver(const Options& options, const Teuchos::RCP<const Comm>&
 
 BelosSolver::~BelosSolver() = default;
 
+std::string BelosSolver::symmetryAssumption() const {
+  if (options_.method != Method::cg) return {};
+  return "Method 'cg' (the default) needs a symmetric positive definite matrix (Method: gmres "
+         "takes any)";
+}
+
 void BelosSolver::setNearNullSpace(const Teuchos::RCP<const MultiVector>& nullSpace) {
   impl_->nullSpace = nullSpace;
 }

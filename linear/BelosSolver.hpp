@@ -35,6 +35,7 @@ class BelosSolver : public LinearSolver {
   ~BelosSolver() override;
 
   std::string name() const override { return "belos"; }
+  std::string symmetryAssumption() const override;
   void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;
   void solve(const MultiVector& b, MultiVector& x) override;
   void setNearNullSpace(const Teuchos::RCP<const MultiVector>& nullSpace) override;

@@ -45,6 +45,11 @@ class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
   virtual std::string name() const = 0;
+  // Empty when the solver takes any square matrix. Otherwise the setting that makes it assume
+  // a symmetric matrix and the one that does not, as a sentence fragment (e.g. "Mode
+  // 'symmetric' reads only the lower triangle (Mode: general does not)"): a system whose
+  // tangent is not symmetric must not be given to such a solver.
+  virtual std::string symmetryAssumption() const { return {}; }
   // Called after A's values changed. patternChanged = true forces a new symbolic analysis.
   virtual void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) = 0;
   // Solves A x = b. b and x live on A's range / domain maps. x's input values are ignored.

@@ -164,6 +164,14 @@ MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>&
 
 MumpsSolver::~MumpsSolver() = default;  // Impl's destructor frees MUMPS (collective)
 
+std::string MumpsSolver::symmetryAssumption() const {
+  if (options_.mode == Mode::general) return {};
+  return std::string("Mode '") +
+         (options_.mode == Mode::symmetric ? "symmetric" : "symmetric-indefinite") +
+         "' reads only the lower triangle of a matrix it takes as symmetric (Mode: general "
+         "takes any)";
+}
+
 void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) {
   Impl& m = *impl_;
   if (A.is_null()) throw LinearSolverError("MUMPS was given a null matrix");

@@ -52,6 +52,7 @@ class MumpsSolver : public LinearSolver {
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
   std::string name() const override { return "mumps"; }
+  std::string symmetryAssumption() const override;
   // The pattern is compared with the analysed one even when patternChanged = false: a changed
   // pattern always gets a new analysis (it costs one reduction and an O(nnz) comparison).
   void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;

@@ -108,8 +108,11 @@ bool coerce(ParameterEntry& entry, const ParameterEntry& valid) {
     if (!isString || !parseBool(text, v)) return false;
     entry.setValue(v);
   } else if (valid.isType<std::string>()) {
+    // YAML reads `true` as a bool: a choice among strings may still be "true" or "false".
     if (entry.isType<int>())
       entry.setValue(std::to_string(Teuchos::getValue<int>(entry)));
+    else if (entry.isType<bool>())
+      entry.setValue(std::string(Teuchos::getValue<bool>(entry) ? "true" : "false"));
     else
       return false;
   } else if (valid.isType<Array<double>>()) {

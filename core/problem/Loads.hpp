@@ -35,10 +35,16 @@ struct DirichletCondition {
 
 struct SurfaceLoad {
   enum class Kind { Pressure, Traction };
+  // A pressure either follows the deformation (on the current facet, with its load stiffness
+  // in the tangent: a follower load) or acts on the reference facet (a dead load). Automatic:
+  // follower where the facet's element is finite-strain, dead where it is small-strain.
+  // Tractions are dead loads.
+  enum class Follower { Automatic, Yes, No };
   std::string name;
   std::string group;
   Kind kind = Kind::Pressure;
-  double pressure = 0.0;                      // acts against the outward normal
+  double pressure = 0.0;  // acts against the outward normal
+  Follower follower = Follower::Automatic;
   std::array<double, 3> traction{{0, 0, 0}};  // force per unit area
   LoadFunction function;
   std::function<void(const double* x, double t, double* traction)> field;  // optional

@@ -125,36 +125,55 @@ void MatrixAssembler::begin() {
   rowStart_ = local.graph.row_map.data();
 }
 
-void MatrixAssembler::add(std::size_t e, const double* ke, const std::vector<char>& constrained) {
+template <class Local>
+void MatrixAssembler::addRows(std::size_t e, int m, Local local, const double* k,
+                              const std::vector<char>& constrained) {
   const auto& nodes = elementNodes_[e];
   const int n = static_cast<int>(nodes.size());
-  const int nd = n * dim_;
+  const int md = m * dim_;
   const int* offsets = offsets_[e].data();
-  for (int a = 0; a < n; ++a) {
+  for (int a = 0; a < m; ++a) {
+    const int la = local(a);
     for (int c = 0; c < dim_; ++c) {
       const int i = a * dim_ + c;
-      const LO row = nodes[a] * dim_ + c;
+      const LO row = nodes[la] * dim_ + c;
       if (constrained[row]) continue;
-      const double* kRow = ke + static_cast<std::size_t>(i) * nd;
-      if (offsets[a * n] < 0) {  // ghost row
+      const double* kRow = k + static_cast<std::size_t>(i) * md;
+      if (offsets[la * n] < 0) {  // ghost row
         thread_local std::vector<double> filtered;
-        filtered.assign(kRow, kRow + nd);
-        for (int b = 0; b < n; ++b)
-          for (int k = 0; k < dim_; ++k)
-            if (constrained[nodes[b] * dim_ + k]) filtered[b * dim_ + k] = 0.0;
-        ghostMatrix_->sumIntoLocalValues(row - ownedDofs_, nd, filtered.data(),
-                                         ghostColumns_[e].data());
+        thread_local std::vector<LO> columns;
+        filtered.assign(kRow, kRow + md);
+        columns.resize(md);
+        for (int b = 0; b < m; ++b)
+          for (int kk = 0; kk < dim_; ++kk) {
+            const int lb = local(b);
+            columns[b * dim_ + kk] = ghostColumns_[e][lb * dim_ + kk];
+            if (constrained[nodes[lb] * dim_ + kk]) filtered[b * dim_ + kk] = 0.0;
+          }
+        ghostMatrix_->sumIntoLocalValues(row - ownedDofs_, md, filtered.data(), columns.data());
         continue;
       }
       double* rowValues = values_ + rowStart_[row];
-      for (int b = 0; b < n; ++b) {
-        double* target = rowValues + offsets[a * n + b];
-        const int colNode = nodes[b] * dim_;
-        for (int k = 0; k < dim_; ++k)
-          if (!constrained[colNode + k]) target[k] += kRow[b * dim_ + k];
+      for (int b = 0; b < m; ++b) {
+        const int lb = local(b);
+        double* target = rowValues + offsets[la * n + lb];
+        const int colNode = nodes[lb] * dim_;
+        for (int kk = 0; kk < dim_; ++kk)
+          if (!constrained[colNode + kk]) target[kk] += kRow[b * dim_ + kk];
       }
     }
   }
+}
+
+void MatrixAssembler::add(std::size_t e, const double* ke, const std::vector<char>& constrained) {
+  addRows(
+      e, static_cast<int>(elementNodes_[e].size()), [](int a) { return a; }, ke, constrained);
+}
+
+void MatrixAssembler::add(std::size_t e, const std::vector<int>& nodes, const double* k,
+                          const std::vector<char>& constrained) {
+  addRows(
+      e, static_cast<int>(nodes.size()), [&nodes](int a) { return nodes[a]; }, k, constrained);
 }
 
 void MatrixAssembler::addDiagonal(LO row, double value) {

@@ -28,12 +28,22 @@ class MatrixAssembler {
   // Adds element e's matrix (row major, dim * nodes squared), skipping the rows and columns of
   // dofs flagged in `constrained` (indexed by overlap LID).
   void add(std::size_t e, const double* ke, const std::vector<char>& constrained);
+  // Same for a matrix over some of element e's nodes (a facet of it: its entries are in e's
+  // graph pattern): node a of the matrix is node nodes[a] of the element's list, k is row
+  // major, (nodes.size() * dim)^2.
+  void add(std::size_t e, const std::vector<int>& nodes, const double* k,
+           const std::vector<char>& constrained);
   // Adds `value` to the diagonal of an owned row.
   void addDiagonal(LO row, double value);
   // Sends ghost rows to their owners and closes the matrix.
   void end();
 
  private:
+  // add() over the element's nodes local(0), ..., local(m - 1).
+  template <class Local>
+  void addRows(std::size_t e, int m, Local local, const double* k,
+               const std::vector<char>& constrained);
+
   int dim_;
   LO ownedDofs_;
   std::vector<std::vector<int>> elementNodes_;

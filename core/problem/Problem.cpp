@@ -9,13 +9,12 @@
 #include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
-#include "core/problem/SurfaceLoadKernel.hpp"
+#include "core/problem/SurfaceLoadAssembler.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 
 namespace contactlab {
 
@@ -114,7 +113,9 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   for (std::size_t d = 0; d < reactions_.size(); ++d)
     reactions_[d].name = model_.dirichlet[d].name;
 
-  collectively(*comm, [&] { locateSurfaceLoads(partition); });
+  collectively(*comm, [&] {
+    surfaceLoads_ = std::make_unique<SurfaceLoadAssembler>(model_, *dofs_, partition);
+  });
   buildGraph();
 }
 
@@ -194,51 +195,6 @@ void Problem::checkModel() const {
             "the mass)");
 }
 
-void Problem::locateSurfaceLoads(const std::vector<int>& partition) {
-  // A facet is integrated by the rank that assembles an element containing all its nodes, so
-  // that every facet node is in that rank's overlap map. The lowest such element decides.
-  const Mesh& mesh = *model_.mesh;
-  const int rank = comm_->getRank();
-  if (model_.surfaceLoads.empty()) return;
-  std::vector<std::vector<int>> elementsOfNode(mesh.numNodes());
-  const auto refs = allElements(mesh);
-  std::set<std::int64_t> loadedNodes;
-  for (const auto& load : model_.surfaceLoads)
-    for (auto n : mesh.boundaryNodes(load.group))
-      loadedNodes.insert(n);
-  for (std::size_t e = 0; e < refs.size(); ++e) {
-    const auto& block = mesh.blocks[refs[e].block];
-    const int npc = block.nodesPerCell();
-    for (int a = 0; a < npc; ++a) {
-      const auto n = block.nodes[refs[e].cell * npc + a];
-      if (loadedNodes.count(n)) elementsOfNode[n].push_back(static_cast<int>(e));
-    }
-  }
-  for (int l = 0; l < static_cast<int>(model_.surfaceLoads.size()); ++l) {
-    for (const auto* g : mesh.findBoundaries(model_.surfaceLoads[l].group)) {
-      const int npc = g->nodesPerCell();
-      for (std::size_t f = 0; f < g->size(); ++f) {
-        std::vector<int> candidates = elementsOfNode[g->nodes[f * npc]];
-        for (int a = 1; a < npc && !candidates.empty(); ++a) {
-          const auto& other = elementsOfNode[g->nodes[f * npc + a]];
-          std::vector<int> common;
-          std::set_intersection(candidates.begin(), candidates.end(), other.begin(), other.end(),
-                                std::back_inserter(common));
-          candidates.swap(common);
-        }
-        if (candidates.empty())
-          throw InputError("facet " + std::to_string(g->tags[f]) + " of group '" + g->name +
-                           "' belongs to no element of the mesh " + mesh.source);
-        if (partition[candidates.front()] != rank) continue;
-        LoadedFacet facet{l, g->type, {}};
-        for (int a = 0; a < npc; ++a)
-          facet.overlapNodes.push_back(dofs_->overlapNodeIndex(g->nodes[f * npc + a]));
-        facets_.push_back(std::move(facet));
-      }
-    }
-  }
-}
-
 void Problem::buildGraph() {
   std::vector<std::vector<int>> elementNodes;
   elementNodes.reserve(elements_.size());
@@ -253,10 +209,8 @@ const Teuchos::RCP<Matrix>& Problem::tangent() const {
   return assembler_->matrix();
 }
 
-const SurfaceLoadKernel& Problem::facetKernel(ElementType type) const {
-  auto& kernel = facetKernels_[type];
-  if (!kernel) kernel = std::make_unique<SurfaceLoadKernel>(type, dim());
-  return *kernel;
+const std::vector<std::string>& Problem::followerLoads() const {
+  return surfaceLoads_->followerLoads();
 }
 
 Teuchos::RCP<Vector> Problem::createVector() const {
@@ -279,37 +233,10 @@ void Problem::applyDirichlet(double t, Vector& u) const {
   }
 }
 
-void Problem::addExternalForces(double t, std::vector<double>& f) const {
+void Problem::addExternalForces(double t, const double* u, std::vector<double>& f) const {
   const Mesh& mesh = *model_.mesh;
-  const int dim = this->dim();
+  surfaceLoads_->addForces(t, u, f);
   std::vector<double> x, fe;
-  for (const auto& facet : facets_) {
-    const auto& load = model_.surfaceLoads[facet.load];
-    gatherCoordinates(facet.overlapNodes, x);
-    fe.assign(facet.overlapNodes.size() * dim, 0.0);
-    const double scale = load.function(t);
-    const SurfaceLoadKernel& kernel = facetKernel(facet.type);
-    if (load.field) {
-      kernel.traction(
-          x.data(), [&](const double* p, double* tr) { load.field(p, t, tr); }, fe.data());
-    } else if (load.kind == SurfaceLoad::Kind::Pressure) {
-      kernel.pressure(x.data(), load.pressure * scale, fe.data());
-    } else {
-      std::array<double, 3> tr{};
-      for (int i = 0; i < 3; ++i)
-        tr[i] = load.traction[i] * scale;
-      kernel.traction(
-          x.data(),
-          [&](const double*, double* out) {
-            for (int i = 0; i < 3; ++i)
-              out[i] = tr[i];
-          },
-          fe.data());
-    }
-    for (std::size_t a = 0; a < facet.overlapNodes.size(); ++a)
-      for (int c = 0; c < dim; ++c)
-        f[facet.overlapNodes[a] * dim + c] += fe[a * dim + c];
-  }
   for (const auto& body : model_.bodyForces) {
     const double scale = body.function(t);
     for (const auto& e : elements_) {
@@ -386,6 +313,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     if (withTangent) assembler_->add(&e - elements_.data(), ke.data(), constrained_);
   }
   if (withTangent) {
+    surfaceLoads_->addStiffness(t, uo.getRawPtr(), *assembler_, constrained_);
     for (const auto& c : constraints_)
       assembler_->addDiagonal(c.lid, 1.0);
     assembler_->end();
@@ -402,7 +330,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
 
   // R = f_int - f_ext, summed over ranks into owned entries.
   std::vector<double> fext(r.size(), 0.0);
-  addExternalForces(t, fext);
+  addExternalForces(t, uo.getRawPtr(), fext);
   Vector rOverlap(dofs_->overlapMap());
   {
     auto data = rOverlap.getDataNonConst(0);

@@ -1,12 +1,14 @@
 #pragma once
 // The discrete solid problem on Tpetra: partition, dof maps, matrix graph (built once), and
-// assembly of the residual R(u, t) = f_int(u) - f_ext(t) and its tangent K = dR/du.
+// assembly of the residual R(u, t) = f_int(u) - f_ext(u, t) and its tangent K = dR/du.
 //
 // Dirichlet conditions are imposed by setting the prescribed values in u (applyDirichlet)
 // and eliminating the constrained dofs element by element: their rows and columns of K are
-// zero but for a unit diagonal and their residual entries are zero, so K stays symmetric and a
-// Newton increment never changes a prescribed value. The residual a constrained dof would have
-// carried is kept as the reaction of its condition.
+// zero but for a unit diagonal and their residual entries are zero, so K stays symmetric when
+// the element matrices are (a follower pressure's load stiffness is not) and a Newton increment
+// never changes a prescribed value. The residual a constrained dof would have carried is kept
+// as the reaction of its condition. External forces depend on u only through follower
+// pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/DofMap.hpp"
 #include "core/problem/LinearAlgebra.hpp"
@@ -16,7 +18,6 @@
 #include <Teuchos_RCP.hpp>
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,7 +27,7 @@ namespace contactlab {
 class MassKernel;
 class MatrixAssembler;
 class ElementKernel;
-class SurfaceLoadKernel;
+class SurfaceLoadAssembler;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
 struct DisplacementErrors {
@@ -77,6 +78,10 @@ class Problem : public NonlinearSystem {
   void commitState(const Vector& u, double t) override;
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
+  // Names of the pressure loads that follow the deformation (on finite-strain elements, see
+  // SurfaceLoadAssembler.hpp), the same on every rank. Their load stiffness makes the tangent
+  // unsymmetric: a linear solver that assumes symmetry must not solve it.
+  const std::vector<std::string>& followerLoads() const;
 
   // This rank's elements and nodes with displacement, stress (cell average, Cauchy), von_mises,
   // material (block index) and rank, and with plasticity equivalent_plastic_strain (cell
@@ -97,11 +102,10 @@ class Problem : public NonlinearSystem {
   struct LocalElement;
   void checkModel() const;
   void checkElementGeometry() const;
-  const SurfaceLoadKernel& facetKernel(ElementType type) const;
   void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;
   void buildGraph();
-  void locateSurfaceLoads(const std::vector<int>& partition);
-  void addExternalForces(double t, std::vector<double>& f) const;
+  // f += surface loads (follower pressures at the overlap displacement u) and body forces.
+  void addExternalForces(double t, const double* u, std::vector<double>& f) const;
   std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap) const;
   Teuchos::RCP<Vector> overlapCopy(const Vector& u) const;
 
@@ -127,15 +131,7 @@ class Problem : public NonlinearSystem {
     std::int64_t node;
   };
   std::vector<Constraint> constraints_;
-  // Facets of surface loads assembled on this rank (their parent element is local).
-  struct LoadedFacet {
-    int load;
-    ElementType type;
-    std::vector<int> overlapNodes;
-  };
-  std::vector<LoadedFacet> facets_;
-  // One surface kernel per facet type, built on first use (they tabulate shape functions).
-  mutable std::map<ElementType, std::unique_ptr<SurfaceLoadKernel>> facetKernels_;
+  std::unique_ptr<SurfaceLoadAssembler> surfaceLoads_;
   std::unique_ptr<MatrixAssembler> assembler_;
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<Import> importer_;

@@ -85,4 +85,45 @@ void SurfaceLoadKernel::pressure(const double* x, const std::function<double(con
   });
 }
 
+void SurfaceLoadKernel::followerPressure(const double* x, const double* u, double p, double* f,
+                                         double* dfdu) const {
+  const int n = numNodes_, D = spaceDim_, refDim = D - 1, nd = numDofs();
+  std::fill(f, f + nd, 0.0);
+  if (dfdu) std::fill(dfdu, dfdu + nd * nd, 0.0);
+  for (int q = 0; q < rule_->size(); ++q) {
+    const double* N = &N_[q * n];
+    const double* dN = &dNdxi_[q * n * refDim];
+    // Current tangents g_j = d(x + u)/dxi_j; in 2D the second is e_z, so that n da / dxi =
+    // g_0 x g_1 in both cases.
+    double g[2][3] = {{0, 0, 0}, {0, 0, D == 2 ? 1.0 : 0.0}};
+    for (int a = 0; a < n; ++a)
+      for (int j = 0; j < refDim; ++j)
+        for (int i = 0; i < D; ++i)
+          g[j][i] += (x[3 * a + i] + u[a * D + i]) * dN[a * refDim + j];
+    const double m[3] = {g[0][1] * g[1][2] - g[0][2] * g[1][1],
+                         g[0][2] * g[1][0] - g[0][0] * g[1][2],
+                         g[0][0] * g[1][1] - g[0][1] * g[1][0]};
+    const double s = -p * rule_->weights[q];
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < D; ++i)
+        f[a * D + i] += s * N[a] * m[i];
+    if (!dfdu) continue;
+    for (int b = 0; b < n; ++b) {
+      // dm/dx_(b k) = dN_b/dxi_0 (e_k x g_1) + dN_b/dxi_1 (g_0 x e_k) = e_k x c (in 2D only
+      // the first term: g_1 = e_z does not move), so dm_i/dx_(b k) = eps_ikl c_l = A[i][k].
+      const double d0 = dN[b * refDim], d1 = refDim > 1 ? dN[b * refDim + 1] : 0.0;
+      double c[3];
+      for (int l = 0; l < 3; ++l)
+        c[l] = d0 * g[1][l] - d1 * g[0][l];
+      const double A[3][3] = {{0, c[2], -c[1]}, {-c[2], 0, c[0]}, {c[1], -c[0], 0}};
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < D; ++i) {
+          double* row = dfdu + (a * D + i) * nd + b * D;
+          for (int k = 0; k < D; ++k)
+            row[k] += s * N[a] * A[i][k];
+        }
+    }
+  }
+}
+
 }  // namespace contactlab

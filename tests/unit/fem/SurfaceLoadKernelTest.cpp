@@ -3,6 +3,7 @@
 #include "core/problem/SurfaceLoadKernel.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
 #include <stdexcept>
 
@@ -136,6 +137,94 @@ TEST(SurfaceLoadKernel, PositionDependentLoads) {
   EXPECT_NEAR(f[0], 2.0 / 3, 1e-14);
   EXPECT_NEAR(f[2], 4.0 / 3, 1e-14);
   EXPECT_NEAR(f[1], 0.0, 1e-14);
+}
+
+// A facet of `type` in spaceDim = dim + 1 with curved reference nodes, and a random
+// displacement of its nodes of size `amplitude` (a finite deformation of the facet).
+struct DeformedFacet {
+  std::vector<double> x, u;
+};
+DeformedFacet deformedFacet(ElementType type, std::mt19937& rng, double amplitude) {
+  const int D = info(type).dim + 1;
+  DeformedFacet d;
+  const auto base = test::distortedNodes(type, 0.08);  // z = 0 for lines, 3D for surfaces
+  d.x = base;
+  if (D == 3)  // lift the surface out of its plane so that every normal component varies
+    for (std::size_t a = 0; a < base.size() / 3; ++a)
+      d.x[3 * a + 2] += 0.3 * base[3 * a] - 0.2 * base[3 * a + 1] * base[3 * a + 1];
+  std::uniform_real_distribution<double> r(-amplitude, amplitude);
+  d.u.resize(base.size() / 3 * D);
+  for (double& v : d.u)
+    v = r(rng);
+  return d;
+}
+
+TEST(SurfaceLoadKernel, FollowerPressureStiffnessMatchesFiniteDifferences) {
+  // Central differences of the follower force against the load stiffness, at random deformed
+  // positions. The force is a polynomial in u of degree spaceDim - 1 (<= 2), so central
+  // differences are exact but for round-off: the tolerance is round-off's.
+  const ElementType types[] = {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
+                               ElementType::Tri6,  ElementType::Quad4, ElementType::Quad8,
+                               ElementType::Quad9};
+  std::mt19937 rng(7);
+  const double p = 3.7, h = 1e-5;
+  for (ElementType t : types) {
+    const int D = info(t).dim + 1;
+    SurfaceLoadKernel kernel(t, D);
+    const int nd = kernel.numDofs();
+    for (int sample = 0; sample < 3; ++sample) {
+      const auto facet = deformedFacet(t, rng, 0.4);
+      std::vector<double> f(nd), K(nd * nd), fp(nd), fm(nd), u = facet.u;
+      kernel.followerPressure(facet.x.data(), u.data(), p, f.data(), K.data());
+      double maxError = 0, maxEntry = test::maxAbs(K);
+      for (int j = 0; j < nd; ++j) {
+        u[j] = facet.u[j] + h;
+        kernel.followerPressure(facet.x.data(), u.data(), p, fp.data(), nullptr);
+        u[j] = facet.u[j] - h;
+        kernel.followerPressure(facet.x.data(), u.data(), p, fm.data(), nullptr);
+        u[j] = facet.u[j];
+        for (int i = 0; i < nd; ++i)
+          maxError = std::max(maxError, std::abs((fp[i] - fm[i]) / (2 * h) - K[i * nd + j]));
+      }
+      EXPECT_LT(maxError, 1e-8 * maxEntry) << nameOf(t) << " sample " << sample;
+      if (sample == 0)
+        std::printf("follower load stiffness %-6s: max |FD - K| / max |K| = %.2e\n",
+                    nameOf(t).c_str(), maxError / maxEntry);
+      // Not symmetric in general.
+      double asymmetry = 0;
+      for (int i = 0; i < nd; ++i)
+        for (int j = 0; j < nd; ++j)
+          asymmetry = std::max(asymmetry, std::abs(K[i * nd + j] - K[j * nd + i]));
+      EXPECT_GT(asymmetry, 1e-3 * maxEntry) << nameOf(t);
+    }
+  }
+}
+
+TEST(SurfaceLoadKernel, FollowerPressureIsTheDeadPressureOnTheDeformedFacet) {
+  // At u = 0 it is the dead pressure; at any u, the dead pressure on the moved nodes x + u.
+  const ElementType types[] = {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
+                               ElementType::Tri6,  ElementType::Quad4, ElementType::Quad8,
+                               ElementType::Quad9};
+  std::mt19937 rng(11);
+  for (ElementType t : types) {
+    const int D = info(t).dim + 1;
+    SurfaceLoadKernel kernel(t, D);
+    const int nd = kernel.numDofs(), n = kernel.numNodes();
+    const auto facet = deformedFacet(t, rng, 0.3);
+    std::vector<double> zero(nd, 0.0), f(nd), g(nd);
+    kernel.followerPressure(facet.x.data(), zero.data(), 2.0, f.data(), nullptr);
+    kernel.pressure(facet.x.data(), 2.0, g.data());
+    for (int k = 0; k < nd; ++k)
+      EXPECT_NEAR(f[k], g[k], 1e-13) << nameOf(t);
+    std::vector<double> moved = facet.x;
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < D; ++i)
+        moved[3 * a + i] += facet.u[a * D + i];
+    kernel.followerPressure(facet.x.data(), facet.u.data(), 2.0, f.data(), nullptr);
+    kernel.pressure(moved.data(), 2.0, g.data());
+    for (int k = 0; k < nd; ++k)
+      EXPECT_NEAR(f[k], g[k], 1e-12) << nameOf(t);
+  }
 }
 
 TEST(SurfaceLoadKernel, RejectsNonFacets) {

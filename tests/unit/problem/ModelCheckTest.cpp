@@ -47,6 +47,23 @@ TEST(ModelCheck, BlockWithoutMaterial) {
   EXPECT_NE(m.find("no material"), std::string::npos) << m;
 }
 
+TEST(ModelCheck, SmallStrainBlocksKeepTheDeadPressureAndRefuseAFollower) {
+  auto model = elasticModel(unitMesh("quad4", 2), 1.0, 0.3, zero, {});
+  model.dirichlet.pop_back();
+  SurfaceLoad load;
+  load.name = "p";
+  load.group = "top";
+  load.pressure = 1.0;
+  model.surfaceLoads.push_back(load);
+  EXPECT_TRUE(Problem(model, Tpetra::getDefaultComm()).followerLoads().empty());
+  model.surfaceLoads[0].follower = SurfaceLoad::Follower::Yes;
+  const std::string m = messageOf(model);
+  EXPECT_NE(m.find("load 'p'"), std::string::npos) << m;
+  EXPECT_NE(m.find("Follower: true"), std::string::npos) << m;
+  EXPECT_NE(m.find("block 'body'"), std::string::npos) << m;
+  EXPECT_NE(m.find("small-strain"), std::string::npos) << m;
+}
+
 TEST(ModelCheck, LinearElasticRejectsBadConstants) {
   EXPECT_THROW(LinearElastic(0.0, 0.3), std::invalid_argument);
   EXPECT_THROW(LinearElastic(1.0, 0.5), std::invalid_argument);
