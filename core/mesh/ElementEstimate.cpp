@@ -100,6 +100,10 @@ double estimateElements(const RectangleParams& p) {
   return structured(p.elementType, double(p.divisions[0]) * p.divisions[1], 2);
 }
 
+double estimateElements(const RingSectorParams& p) {
+  return structured(p.elementType, double(p.radialDivisions) * p.circumferentialDivisions, 2);
+}
+
 double estimateElements(const BoxParams& p) {
   return structured(p.elementType, double(p.divisions[0]) * p.divisions[1] * p.divisions[2], 3);
 }

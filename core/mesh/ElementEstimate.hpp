@@ -18,6 +18,7 @@ constexpr int kDefaultMaxElements = 2000000;
 
 double estimateElements(const RectangleParams& p);
 double estimateElements(const BoxParams& p);
+double estimateElements(const RingSectorParams& p);
 double estimateElements(const HalfDiscParams& p);
 double estimateElements(const RollerOnBaseParams& p);
 double estimateElements(const HalfSphereParams& p);

@@ -1,5 +1,8 @@
 #include "core/mesh/GeneratorSupport.hpp"
 
+#include "core/mesh/GmshExtract.hpp"
+#include "core/mesh/GmshModel.hpp"
+
 #include <gmsh.h>
 
 #include <algorithm>
@@ -157,6 +160,25 @@ RectangleEntities addStructuredRectangle(const std::array<double, 2>& origin,
   gmsh::model::mesh::setTransfiniteSurface(r.surface);
   if (recombine) gmsh::model::mesh::setRecombine(2, r.surface);
   return r;
+}
+
+Mesh meshStructuredRectangle(const ElementSpec& spec, const std::array<double, 2>& origin,
+                             const std::array<double, 2>& lengths,
+                             const std::array<int, 2>& divisions,
+                             const std::array<const char*, 4>& sides,
+                             const std::array<const char*, 4>& corners, const std::string& source) {
+  return inGmshModel("gmsh could not generate the " + source, [&] {
+    resetMeshOptions();
+    const auto r = addStructuredRectangle(origin, lengths, divisions, !spec.simplex);
+    addGroup(2, {r.surface}, "body");
+    for (int i = 0; i < 4; ++i)
+      addGroup(1, {r.sides[i]}, sides[i]);
+    for (int i = 0; i < 4; ++i)
+      addGroup(0, {r.corners[i]}, corners[i]);
+    gmsh::model::mesh::generate(2);
+    applyOrder(spec);
+    return meshFromGmshModel(source, source);
+  });
 }
 
 BoxEntities addStructuredBox(const std::array<double, 3>& origin,

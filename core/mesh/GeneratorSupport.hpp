@@ -50,6 +50,15 @@ RectangleEntities addStructuredRectangle(const std::array<double, 2>& origin,
                                          const std::array<double, 2>& lengths,
                                          const std::array<int, 2>& divisions, bool recombine);
 
+// The whole gmsh run of a structured rectangle generator: block "body", the sides (bottom,
+// right, top, left) and corners (bottom-left, bottom-right, top-right, top-left) as named
+// boundary groups, cells of spec's type. Runs in its own scratch model (inGmshModel).
+Mesh meshStructuredRectangle(const ElementSpec& spec, const std::array<double, 2>& origin,
+                             const std::array<double, 2>& lengths,
+                             const std::array<int, 2>& divisions,
+                             const std::array<const char*, 4>& sides,
+                             const std::array<const char*, 4>& corners, const std::string& source);
+
 // Transfinite box, synchronised; hexes with recombine, else 6 tets per hex.
 struct BoxEntities {
   int volume;

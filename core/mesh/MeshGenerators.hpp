@@ -10,6 +10,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -29,6 +30,32 @@ struct RectangleParams {
   std::optional<std::array<double, 8>> corners;
 };
 Mesh generateRectangle(const RectangleParams& p);
+
+// The annular sector a <= r <= b, 0 <= theta <= Angle (degrees, counter-clockwise from +x) about
+// `centre`: nr x nt structured quads (tri: each split in two, 2 nr nt cells), radial grid lines
+// on rays, circumferential ones on circles; order-2 nodes sit at the rays' midpoints and
+// exactly on the arcs (the arc's angular midpoint). radialGrading is the ratio of the
+// outermost ring's radial size to the innermost's (1: uniform, > 1: finer at the inner radius;
+// sizes in geometric progression). Types: tri3 tri6 quad4 quad8 quad9. Block "body";
+// boundaries "inner" (r = a), "outer" (r = b), "start" (theta = 0), "end" (theta = Angle);
+// points "corner-inner-start", "corner-outer-start", "corner-outer-end", "corner-inner-end".
+// Angle = 360 closes the ring: the seam's nodes are shared and "start", "end" and the "-end"
+// corners do not exist. An element spans at most 90 degrees (nt >= Angle / 90).
+struct RingSectorParams {
+  std::array<double, 2> centre{0.0, 0.0};
+  double innerRadius = 1.0;
+  double outerRadius = 2.0;
+  double angle = 90.0;
+  int radialDivisions = 4;
+  int circumferentialDivisions = 4;
+  double radialGrading = 1.0;
+  std::string elementType = "quad8";
+};
+Mesh generateRingSector(const RingSectorParams& p);
+// The nr + 1 radii of the grid's circles, a to b, sizes in geometric progression with
+// last / first = grading.
+std::vector<double> ringSectorRadii(double innerRadius, double outerRadius, int divisions,
+                                    double grading);
 
 // Box origin + [0,Lx]x[0,Ly]x[0,Lz], nx*ny*nz hexes (tet: each hex split into 6 tets of a
 // transfinite volume, 6*nx*ny*nz cells). Types: tet4 tet10 hex8 hex20 hex27. Block "body";

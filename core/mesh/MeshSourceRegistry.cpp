@@ -98,6 +98,26 @@ RCP<const ParameterList> quadrilateralParameters() {
   return p;
 }
 
+RCP<const ParameterList> ringSectorParameters() {
+  auto p = Teuchos::rcp(new ParameterList("ring-sector"));
+  RingSectorParams d;
+  p->set("Centre", arrayOf<double>({d.centre[0], d.centre[1]}), "Centre of the circles");
+  p->set("Inner Radius", d.innerRadius, "Inner radius a (> 0)");
+  p->set("Outer Radius", d.outerRadius, "Outer radius b (> Inner Radius)");
+  p->set("Angle", d.angle,
+         "Opening angle in degrees, in (0, 360], counter-clockwise from the +x axis; 360 closes "
+         "the ring (no 'start', 'end')");
+  p->set("Radial Divisions", d.radialDivisions, "Divisions from the inner to the outer radius");
+  p->set("Circumferential Divisions", d.circumferentialDivisions,
+         "Divisions along the arcs (at least Angle / 90: an element spans at most 90 degrees)");
+  p->set("Radial Grading", d.radialGrading,
+         "Ratio of the outermost element's radial size to the innermost's (> 0; 1: uniform, "
+         "> 1: finer at the inner radius), sizes in geometric progression");
+  p->set("Element", d.elementType, "Element type (tri3 splits each quad in two)", oneOf(k2D));
+  addElementLimit(*p);
+  return p;
+}
+
 RCP<const ParameterList> boxParameters() {
   auto p = Teuchos::rcp(new ParameterList("box"));
   p->set("Origin", arrayOf<double>({0.0, 0.0, 0.0}), "Corner with the smallest coordinates");
@@ -235,6 +255,23 @@ void registerMeshSources() {
            g.divisions = {p.get<int>("nx"), p.get<int>("ny")};
            g.elementType = p.get<std::string>("Element");
            return std::make_unique<Mesh>(generateRectangle(withinLimit("quadrilateral", p, g)));
+         }});
+  r.add({"ring-sector",
+         "Structured annular sector a <= r <= b, 0 <= theta <= Angle (a thick tube's section), "
+         "mid-side nodes on the arcs. Block 'body'; boundaries 'inner', 'outer', 'start' "
+         "(theta = 0), 'end' (theta = Angle), points 'corner-inner-start', "
+         "'corner-outer-start', 'corner-outer-end', 'corner-inner-end'.",
+         ringSectorParameters, [](const ParameterList& p, const std::string&) {
+           RingSectorParams g;
+           g.centre = fixed<2, double>(p, "Centre");
+           g.innerRadius = p.get<double>("Inner Radius");
+           g.outerRadius = p.get<double>("Outer Radius");
+           g.angle = p.get<double>("Angle");
+           g.radialDivisions = p.get<int>("Radial Divisions");
+           g.circumferentialDivisions = p.get<int>("Circumferential Divisions");
+           g.radialGrading = p.get<double>("Radial Grading");
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateRingSector(withinLimit("ring-sector", p, g)));
          }});
   r.add({"box",
          "Structured box. Block 'body'; faces 'xmin', 'xmax', 'ymin', 'ymax', 'zmin', 'zmax'.",

@@ -1,9 +1,5 @@
 #include "core/mesh/GeneratorSupport.hpp"
-#include "core/mesh/GmshExtract.hpp"
-#include "core/mesh/GmshModel.hpp"
 #include "core/mesh/MeshGenerators.hpp"
-
-#include <gmsh.h>
 
 namespace contactlab {
 
@@ -19,28 +15,17 @@ Mesh generateRectangle(const RectangleParams& p) {
   const std::string source = "generated rectangle (" + p.elementType + ", " +
                              std::to_string(p.divisions[0]) + "x" + std::to_string(p.divisions[1]) +
                              ")";
-  return inGmshModel("gmsh could not generate the " + source, [&] {
-    resetMeshOptions();
-    const auto r = addStructuredRectangle(p.origin, p.lengths, p.divisions, !spec.simplex);
-    addGroup(2, {r.surface}, "body");
-    const char* sides[] = {"bottom", "right", "top", "left"};
-    const char* corners[] = {"corner-bl", "corner-br", "corner-tr", "corner-tl"};
-    for (int i = 0; i < 4; ++i)
-      addGroup(1, {r.sides[i]}, sides[i]);
-    for (int i = 0; i < 4; ++i)
-      addGroup(0, {r.corners[i]}, corners[i]);
-    gmsh::model::mesh::generate(2);
-    applyOrder(spec);
-    Mesh mesh = meshFromGmshModel(source, source);
-    // An affine map keeps straight edges straight and mid-side nodes in the middle.
-    if (p.corners) {
-      mapOntoQuadrilateral(mesh, p.origin, p.lengths, *p.corners);
-    } else {
-      for (std::size_t n = 0; n < mesh.numNodes(); ++n)
-        mesh.coords[3 * n] += p.topShift * (mesh.coords[3 * n + 1] - p.origin[1]) / p.lengths[1];
-    }
-    return mesh;
-  });
+  Mesh mesh = meshStructuredRectangle(spec, p.origin, p.lengths, p.divisions,
+                                      {"bottom", "right", "top", "left"},
+                                      {"corner-bl", "corner-br", "corner-tr", "corner-tl"}, source);
+  // An affine map keeps straight edges straight and mid-side nodes in the middle.
+  if (p.corners) {
+    mapOntoQuadrilateral(mesh, p.origin, p.lengths, *p.corners);
+  } else {
+    for (std::size_t n = 0; n < mesh.numNodes(); ++n)
+      mesh.coords[3 * n] += p.topShift * (mesh.coords[3 * n + 1] - p.origin[1]) / p.lengths[1];
+  }
+  return mesh;
 }
 
 }  // namespace contactlab

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numeric>
 #include <unistd.h>
 
@@ -105,6 +106,27 @@ double minJacobian(const Mesh& mesh) {
     for (std::size_t c = 0; c < g.size(); ++c)
       m = std::min(m, minCornerJacobian(mesh, g, c));
   return m;
+}
+
+std::vector<GeneratorCase> generatorCases2D(std::size_t quads, std::size_t linearNodes,
+                                            std::size_t serendipityNodes,
+                                            std::size_t completeNodes) {
+  using ET = ElementType;
+  return {{"tri3", ET::Tri3, ET::Line2, 2 * quads, linearNodes},
+          {"tri6", ET::Tri6, ET::Line3, 2 * quads, completeNodes},
+          {"quad4", ET::Quad4, ET::Line2, quads, linearNodes},
+          {"quad8", ET::Quad8, ET::Line3, quads, serendipityNodes},
+          {"quad9", ET::Quad9, ET::Line3, quads, completeNodes}};
+}
+
+void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c) {
+  EXPECT_EQ(mesh.dim, 2);
+  EXPECT_EQ(mesh.numNodes(), c.nodes);
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "body");
+  EXPECT_EQ(mesh.blocks[0].type, c.cellType);
+  EXPECT_EQ(mesh.numElements(), c.cells);
+  EXPECT_GT(minJacobian(mesh), 0.0);
 }
 
 std::set<std::int64_t> blockNodes(const Mesh& mesh, const std::string& name) {

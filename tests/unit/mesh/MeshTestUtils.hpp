@@ -3,6 +3,7 @@
 #include "core/mesh/Mesh.hpp"
 
 #include <array>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,6 +24,29 @@ double minJacobian(const Mesh& mesh);
 std::array<double, 3> node(const Mesh& mesh, std::int64_t n);
 std::set<std::int64_t> blockNodes(const Mesh& mesh, const std::string& name);
 std::size_t cellCount(const std::vector<const CellGroup*>& groups);
+
+// One element type of a parameterized 2D generator test: the cell and facet types it makes and
+// the cell and node counts expected for the test's divisions.
+struct GeneratorCase {
+  std::string type;
+  ElementType cellType;
+  ElementType lineType;
+  std::size_t cells;
+  std::size_t nodes;
+};
+inline void PrintTo(const GeneratorCase& c, std::ostream* os) {
+  *os << c.type;
+}
+// tri3, tri6, quad4, quad8, quad9 on a structured grid of `quads` cells (triangles: two per
+// cell) with `linearNodes` grid points at order 1, `serendipityNodes` for quad8 and
+// `completeNodes` for tri6 and quad9.
+std::vector<GeneratorCase> generatorCases2D(std::size_t quads, std::size_t linearNodes,
+                                            std::size_t serendipityNodes,
+                                            std::size_t completeNodes);
+
+// Expects a 2D mesh of one block "body" of c.cellType with c's node and cell counts and no
+// inverted cell (gtest EXPECTs).
+void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c);
 
 // Writes `mesh` through gmsh's API ("2.2" or "4.1"), one discrete entity and one physical
 // group per CellGroup; node i gets tag i + 1, cells keep their tags.

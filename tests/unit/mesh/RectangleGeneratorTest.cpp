@@ -8,19 +8,8 @@
 namespace contactlab {
 namespace {
 
-struct RectangleCase {
-  std::string type;
-  ElementType cellType;
-  ElementType lineType;
-  std::size_t cells;  // for 3 x 2 divisions
-  std::size_t nodes;
-};
-
-void PrintTo(const RectangleCase& c, std::ostream* os) {
-  *os << c.type;
-}
-
-class RectangleGenerator : public ::testing::TestWithParam<RectangleCase> {};
+// Cell and node counts for 3 x 2 divisions.
+class RectangleGenerator : public ::testing::TestWithParam<test::GeneratorCase> {};
 
 TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {
   const auto& tc = GetParam();
@@ -31,14 +20,8 @@ TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {
   p.elementType = tc.type;
   const Mesh mesh = generateRectangle(p);
 
-  EXPECT_EQ(mesh.dim, 2);
-  EXPECT_EQ(mesh.numNodes(), tc.nodes);
-  ASSERT_EQ(mesh.blocks.size(), 1u);
-  EXPECT_EQ(mesh.blocks[0].name, "body");
-  EXPECT_EQ(mesh.blocks[0].type, tc.cellType);
-  EXPECT_EQ(mesh.numElements(), tc.cells);
+  test::expectGeneratedBlock(mesh, tc);
   EXPECT_NEAR(test::blockMeasure(mesh, "body"), 6.0, 1e-12);
-  EXPECT_GT(test::minJacobian(mesh), 0.0);
 
   const std::vector<std::string> names{"bottom",    "right",     "top",       "left",
                                        "corner-bl", "corner-br", "corner-tr", "corner-tl"};
@@ -67,14 +50,9 @@ TEST_P(RectangleGenerator, CountsGroupsAreaAndBoundaries) {
 }
 
 // 3 x 2 divisions: 7*5 = 35 grid points at order 2, 4*3 = 12 at order 1.
-INSTANTIATE_TEST_SUITE_P(
-    AllTypes, RectangleGenerator,
-    ::testing::Values(RectangleCase{"tri3", ElementType::Tri3, ElementType::Line2, 12, 12},
-                      RectangleCase{"tri6", ElementType::Tri6, ElementType::Line3, 12, 35},
-                      RectangleCase{"quad4", ElementType::Quad4, ElementType::Line2, 6, 12},
-                      RectangleCase{"quad8", ElementType::Quad8, ElementType::Line3, 6, 29},
-                      RectangleCase{"quad9", ElementType::Quad9, ElementType::Line3, 6, 35}),
-    [](const auto& info) { return info.param.type; });
+INSTANTIATE_TEST_SUITE_P(AllTypes, RectangleGenerator,
+                         ::testing::ValuesIn(test::generatorCases2D(6, 12, 29, 35)),
+                         [](const auto& info) { return info.param.type; });
 
 // Top Shift: a parallelogram of the same area, corners moved, mid-side nodes still halfway.
 TEST(RectangleGenerator, TopShiftShearsIntoAParallelogram) {
