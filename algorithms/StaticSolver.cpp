@@ -61,16 +61,18 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          choices({"plain", "nox"}));
   p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
          choices({"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}));
-  p->set("Predictor", "tangent",
+  p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
          "body with the last converged tangent (code_aster's PREDICTION='TANGENTE'; one linear "
          "solve, counted as an iteration); 'none' starts Newton from u_n with the new prescribed "
          "values, so the whole increment first strains the elements along the constrained "
-         "boundary (plastic or inverted elements there can make Newton fail). Steps driven by "
-         "loads alone start from u_n either way",
-         choices({"tangent", "none"}));
-  p->set("Max Geometry Iterations", 10,
+         "boundary (plastic or inverted elements there can make Newton fail); 'automatic': "
+         "tangent for a model without contact, none with contact (where the predictor moves a "
+         "body into its obstacle: measured in doc/algorithms.md). Steps driven by loads alone "
+         "start from u_n either way",
+         choices({"automatic", "tangent", "none"}));
+  p->set("Max Geometry Iterations", 30,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
   markPassThrough(p->sublist("NOX", false,
@@ -153,7 +155,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
-  o.tangentPredictor = newton.get<std::string>("Predictor") == "tangent";
+  o.predictor = newton.get<std::string>("Predictor");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
     throw std::invalid_argument("Newton/Line Search '" + o.lineSearch +
                                 "' needs Newton/Driver: nox (the plain Newton takes full steps)");
@@ -252,7 +254,9 @@ bool StaticSolver::forcedStateHolds(const Vector& x, double t, double target, Ve
 StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepReport& sr,
                                                RunReport& report) {
   Prediction p;
-  if (!options_.tangentPredictor || solver_ == nullptr) return p;
+  const bool wanted = options_.predictor == "tangent" ||
+                      (options_.predictor == "automatic" && controls_ == nullptr);
+  if (!wanted || solver_ == nullptr) return p;
   auto increment = problem_.createVector();  // du_D: nonzero on the prescribed dofs only
   increment->update(1.0, x, -1.0, u, 0.0);
   const double size = increment->normInf();

@@ -36,13 +36,14 @@ struct StaticSolverOptions {
   int maxIterations = 20;
   double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
-  int maxGeometryIterations = 10;
+  int maxGeometryIterations = 30;
   double geometryTolerance = 1e-6;
   std::string driver = "plain";          // "plain" (PlainNewton) or "nox" (NoxNewton)
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
   Teuchos::ParameterList nox;            // passed through to NOX
-  // A step whose prescribed values move starts from the tangent predictor (doc/algorithms.md).
-  bool tangentPredictor = true;
+  // Whether a step whose prescribed values move starts from the tangent predictor
+  // (doc/algorithms.md): "tangent", "none", or "automatic" (tangent without contact).
+  std::string predictor = "automatic";
   // Algorithm.
   std::string method = "partial-newton";
   bool geometryInNewton = false, thresholdsInNewton = true, statusesInNewton = true;

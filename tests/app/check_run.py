@@ -5,7 +5,8 @@ result.pvd and its pieces readable by VTK, steps.csv, summary.json with probes.
 usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [key=expected ...]
 A scene file states its own expectations in lines "# expect: key=value@tol ...".
 An expectation `probes.tip.value.1=-0.0123@1e-3` compares a summary.json value (dotted path,
-list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute."""
+list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute. A key `A/B` compares
+the ratio of two values (e.g. a friction force over the normal force)."""
 import csv, json, os, shutil, subprocess, sys
 
 import vtk
@@ -72,7 +73,10 @@ assert scene == "-" or specs, "a shipped scene must state at least one expectati
 for spec in specs:
     key, rest = spec.split("=", 1)
     value, tol = (rest.split("@") + ["1e-9"])[:2]
-    got = float(lookup(summary, key))
+    parts = key.split("/")
+    got = float(lookup(summary, parts[0]))
+    if len(parts) == 2:
+        got /= float(lookup(summary, parts[1]))
     want = float(value)
     bound = float(tol[1:]) if tol.startswith("a") else float(tol) * abs(want)
     assert abs(got - want) <= bound, f"{key}: got {got}, want {want} +- {bound}"

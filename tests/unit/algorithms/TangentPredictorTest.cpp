@@ -91,7 +91,7 @@ Outcome run(double cubic, bool predictor, double endTime) {
   RecordingNewton newton(chain, solver);
   StaticSolverOptions options;
   options.endTime = endTime;
-  options.tangentPredictor = predictor;
+  options.predictor = predictor ? "tangent" : "none";
   StaticSolver stepper(chain, nullptr, newton, options, &solver);
   auto u = chain.createVector();
   Outcome out;
