@@ -328,8 +328,13 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   const Prediction prediction = predict(u, x, sr, report);
   if (prediction.done) problem_.updateGeometry(x, t);
   auto residual = problem_.createVector();
-  problem_.assemble(x, t, residual.get(), false);
-  const double reference = prediction.done ? prediction.residual : residual->norm2();
+  // The step's reference residual, and the statuses the fixed points start from: a predicted
+  // step has its reference already, and without contact nothing else reads this assembly.
+  double reference = prediction.residual;
+  if (!prediction.done || controls_) {
+    problem_.assemble(x, t, residual.get(), false);
+    if (!prediction.done) reference = residual->norm2();
+  }
   // The fixed points start from the statuses and thresholds of the predictor.
   if (statusFixedPoint) controls_->freezeStatuses(true);
   if (thresholdFixedPoint) controls_->freezeThresholds(true);
