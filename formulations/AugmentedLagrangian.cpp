@@ -43,10 +43,11 @@ void AugmentedLagrangian::evaluate(const LawInput& in, LawOutput& out) const {
   const double tau = thresholdFrozen ? in.frozenThreshold : in.mu * pHat;
   const double dTauDp = thresholdFrozen ? 0.0 : in.mu;
   const double dTauDg = thresholdFrozen ? 0.0 : -in.mu * rn;
-  // A closed point with a zero threshold (p^ = 0, e.g. surfaces just touching) transmits no
-  // friction and Lambda = lambda_t / (mu lambda_n) is undefined there: its friction rows take
-  // the open branch (Lambda = 0), a piece of the generalized Jacobian that stays regular.
-  if (!(tau > 0)) {
+  // A closed point with a zero threshold (p^ = 0, e.g. surfaces just touching, up to the
+  // round-off of their gap) transmits no friction and Lambda = lambda_t / (mu lambda_n) is
+  // undefined there: its friction rows take the open branch (Lambda = 0), a piece of the
+  // generalized Jacobian that stays regular.
+  if (frictionThresholdIsRoundoff(tau, in, rn)) {
     for (int k = 0; k < nt; ++k) {
       out.r[lam + k] = w * in.Lambda[k];
       J(lam + k, lam + k) = w;

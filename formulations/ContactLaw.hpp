@@ -18,6 +18,7 @@
 // -p-hat, and the seed's weak forms F = 0 are our residuals with R_u = -(F_cont + F_frot)
 // (R_u = f_int - f_ext + contact), R_p = F~_cont, R_Lambda = F~_frot.
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace contactlab {
@@ -65,6 +66,22 @@ struct LawOutput {
   // the law's projection on its friction ball); 0 without friction.
   double frictionIndicator = 0.0;
 };
+
+// Friction thresholds at or below the pressure of a penetration of kTouchingGap times the
+// point's size are a touching point's, not a pressure: the round-off of its gap, or the margin
+// `Initial Contact` seeds (ContactProblem::seedInitialStatuses, a tenth of this). Such a point
+// carries no friction. Its multiplier Lambda (a direction scaled by 1 / threshold) would
+// otherwise enter the tangent through a column of size w * threshold only: at a mortar point
+// whose weighted gap is -3e-33 instead of 0, the first Newton update put 4e29 into Lambda
+// (issue 15). The friction force dropped is below mu w c 1e-8 h, about 1e-8 mu E w with the
+// usual c ~ E / h.
+constexpr double kTouchingGap = 1e-8;
+inline bool frictionThresholdIsRoundoff(double threshold, const LawInput& in,
+                                        double normalCoefficient) {
+  // The point's size: w is a length in 2D (nt = 1) and an area in 3D.
+  const double size = in.nt == 2 ? std::sqrt(in.weight) : in.weight;
+  return !(threshold > kTouchingGap * in.mu * normalCoefficient * size);
+}
 
 class ContactLaw {
  public:

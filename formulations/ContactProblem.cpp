@@ -337,10 +337,11 @@ void ContactProblem::seedInitialStatuses(Vector& x, double t) {
     if (lid == Teuchos::OrdinalTraits<LO>::invalid()) continue;
     // The laws with multipliers close a point when p - c g >= 0: put p just inside the asked
     // status. The margin only picks the cone Newton starts in; the first iterate's pressure
-    // comes from equilibrium.
+    // comes from equilibrium. Below the touching threshold (ContactLaw.hpp), it carries no
+    // friction.
     const double c = zones_[pt.zone].law->normalCoefficient() * pt.coefficientScale;
     const double length = dim_ == 3 ? std::sqrt(pt.weight) : pt.weight;
-    const double margin = 1e-9 * c * length;
+    const double margin = 0.1 * kTouchingGap * c * length;
     values[lid] = c * pt.result.gap + (initial == InitialContact::all ? margin : -margin);
   }
 }

@@ -42,9 +42,10 @@ void Lagrange::evaluate(const LawInput& in, LawOutput& out) const {
   // Threshold mu (p - c_n g): equal to mu p at convergence (g = 0 on active points), and
   // already positive on a first iterate that starts in contact with p = 0.
   const double tau = thresholdFrozen ? in.frozenThreshold : in.mu * pHat;
-  // Zero threshold (p = 0 on a closed point): no friction, and Lambda (a direction) is
-  // undefined; its rows take the open branch Lambda = 0 so the Jacobian stays regular.
-  if (!closed || !(tau > 0)) {
+  // Zero threshold (p = 0 on a closed point, up to round-off): no friction, and Lambda (a
+  // direction) is undefined; its rows take the open branch Lambda = 0 so the Jacobian stays
+  // regular.
+  if (!closed || frictionThresholdIsRoundoff(tau, in, cn)) {
     for (int k = 0; k < nt; ++k) {
       out.r[lam + k] = w * in.Lambda[k];
       J(lam + k, lam + k) = w;

@@ -376,6 +376,45 @@ TEST(ContactLaw, PenaltyTouchingPointIsClosedWithItsStiffness) {
   EXPECT_DOUBLE_EQ(out.J[0], kWeight * 100.0);
 }
 
+// A touching point whose gap is round-off (a mortar weighted gap of -3e-33 instead of 0) has a
+// threshold of ~1e-28, not a pressure. The stick piece then put Lambda into the tangent through
+// a column w * threshold wide, and the first Newton update of a frictional mortar Hertz roller
+// set Lambda = 4e29 ("diverged"). Such a point takes the zero-threshold piece: its friction
+// rows are w Lambda = 0, regular, as at an exact zero gap.
+TEST(ContactLaw, RoundoffThresholdOfATouchingPointCarriesNoFriction) {
+  for (const char* name : {"lagrange", "augmented-lagrangian"}) {
+    const auto law = makeLaw(name);
+    for (int nt : {1, 2}) {
+      for (double gap : {0.0, -3.3e-33, -1e-20}) {
+        SCOPED_TRACE(std::string(name) + " nt=" + std::to_string(nt) +
+                     " gap=" + std::to_string(gap));
+        LawInput in;
+        in.weight = kWeight;
+        in.nt = nt;
+        in.mu = kMu;
+        in.gap = gap;
+        LawOutput out;
+        law->evaluate(in, out);
+        const int n = law->size(nt), lam = 2 + nt;
+        EXPECT_NE(out.status, ContactStatus::Free);
+        for (int k = 0; k < nt; ++k) {
+          EXPECT_EQ(out.J[(lam + k) * n + lam + k], kWeight) << "friction row " << k;
+          EXPECT_EQ(out.tangentialTraction[k], 0.0);
+        }
+      }
+    }
+    // A real (small) penetration keeps its friction: the cutoff is round-off, not physics.
+    LawInput in;
+    in.weight = kWeight;
+    in.nt = 1;
+    in.mu = kMu;
+    in.gap = -1e-6;
+    LawOutput out;
+    law->evaluate(in, out);
+    EXPECT_GT(out.threshold, 0.0) << name;
+  }
+}
+
 TEST(ContactLaw, ClosedPointUnderCompressionTransmitsThePressure) {
   for (const char* name : {"lagrange", "augmented-lagrangian"}) {
     const auto law = makeLaw(name);
