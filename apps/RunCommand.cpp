@@ -510,10 +510,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   };
   const MaterialStateSummary materialState = problem->materialState();  // collective
   if (root) {
-    JsonValue reactions = JsonValue::object();
-    for (const auto& r : problem->reactions())
-      reactions.set(r.name, JsonValue::array(std::vector<double>(
-                                r.force.begin(), r.force.begin() + problem->dim())));
+    auto forces = [&](const std::vector<Reaction>& list) {
+      JsonValue byName = JsonValue::object();
+      for (const auto& r : list)
+        byName.set(r.name, JsonValue::array(std::vector<double>(r.force.begin(),
+                                                                r.force.begin() + problem->dim())));
+      return byName;
+    };
     JsonValue summary = JsonValue::object();
     summary.set("scene", sm.scene.name)
         .set("scene_file", sm.scene.path)
@@ -577,7 +580,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         .set("contact", convergedContact)
         .set("failed_iterate",
              report.converged || !contact ? JsonValue() : contactSummary(contact->resultants()))
-        .set("reactions", reactions)
+        .set("reactions", forces(problem->reactions()))
+        // The force each spring exerts on the body (-sum k u).
+        .set("springs", forces(problem->springForces()))
         .set("probes", probes)
         .set("result_pvd", vtk ? JsonValue(vtk->pvdPath()) : JsonValue());
     if (materialState.plasticity)

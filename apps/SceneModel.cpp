@@ -15,6 +15,8 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 namespace contactlab {
 namespace {
@@ -61,6 +63,66 @@ std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
   for (int i = 0; i < dim; ++i)
     out[i] = v[i];
   return out;
+}
+
+// Components: 'xyz' is "every component"; a z named on its own in 2D would act on nothing.
+std::vector<int> componentList(const ParameterList& p, int dim, const std::string& where,
+                               const std::string& path) {
+  const std::string components = p.get<std::string>("Components");
+  if (dim == 2 && components != "xyz" && components.find('z') != std::string::npos)
+    throw InputError(where + ": " + path + "/Components: '" + components +
+                     "' names z in a 2D model, which has x and y only");
+  std::vector<int> list;
+  for (char c : components)
+    if (c - 'x' < dim) list.push_back(c - 'x');
+  return list;
+}
+
+// The mesh node closest to `point` among those with usable[n] != 0 (every node when `usable`
+// is empty), and its distance.
+std::pair<std::int64_t, double> nearestNode(const Mesh& mesh, const std::array<double, 3>& point,
+                                            const std::vector<char>& usable) {
+  double best = std::numeric_limits<double>::max();
+  std::int64_t node = -1;
+  for (std::size_t n = 0; n < mesh.numNodes(); ++n) {
+    if (!usable.empty() && !usable[n]) continue;
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i)
+      d2 += std::pow(mesh.coords[3 * n + i] - point[i], 2);
+    if (d2 < best) best = d2, node = static_cast<std::int64_t>(n);
+  }
+  return {node, std::sqrt(best)};
+}
+
+// Point Groups/<name>: a boundary group of one point cell on the element node nearest to
+// Point, added to the mesh (every rank holds the same mesh, so every rank adds the same).
+void addPointGroups(const ParameterList& groups, Mesh& mesh, const std::string& where) {
+  std::vector<char> elementNode(mesh.numNodes(), 0);
+  for (const auto& block : mesh.blocks)
+    for (auto n : block.nodes)
+      elementNode[n] = 1;
+  for (auto it = groups.begin(); it != groups.end(); ++it) {
+    const std::string& name = groups.name(it);
+    const std::string path = "Point Groups/" + name;
+    const ParameterList& g = groups.sublist(name);
+    if (!mesh.findBoundaries(name).empty() || !mesh.findBlocks(name).empty())
+      throw InputError(where + ": " + path + ": the mesh already has a group named '" + name +
+                       "'; choose another name");
+    const double tolerance = g.get<double>("Tolerance");
+    if (!(tolerance > 0)) throw InputError(where + ": " + path + "/Tolerance must be > 0");
+    const auto point = vector3(g, "Point", where, path, mesh.dim);
+    const auto [node, distance] = nearestNode(mesh, point, elementNode);
+    if (!(distance <= tolerance))
+      throw InputError(where + ": " + path + "/Point: the nearest mesh node (" +
+                       std::to_string(node + 1) + ") is " + std::to_string(distance) +
+                       " away, farther than Tolerance " + std::to_string(tolerance));
+    CellGroup group;
+    group.name = name;
+    group.type = ElementType::Point1;
+    group.nodes = {node};
+    group.tags = {0};
+    mesh.boundaries.push_back(std::move(group));
+  }
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -215,6 +277,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
         }
       },
       comm);
+  addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
   sm.model.slowDynamics = sm.solverOptions.slowDynamics;
   const int dim = mesh->dim;
@@ -239,17 +302,27 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     DirichletCondition bc;
     bc.name = dirichlet.name(it);
     bc.group = d.get<std::string>("Group");
-    const std::string components = d.get<std::string>("Components");
-    // 'xyz' is "every component"; a z named on its own in 2D would constrain nothing.
-    if (dim == 2 && components != "xyz" && components.find('z') != std::string::npos)
-      throw InputError(where + ": Dirichlet/" + bc.name + "/Components: '" + components +
-                       "' names z in a 2D model, which has x and y only");
-    for (char c : components)
-      if (c - 'x' < dim) bc.components.push_back(c - 'x');
+    bc.components = componentList(d, dim, where, "Dirichlet/" + bc.name);
     bc.value = d.get<double>("Value");
     bc.function = loadFunction(d, endTime, where, "Dirichlet/" + bc.name);
     if (bc.group.empty()) throw InputError(where + ": Dirichlet/" + bc.name + "/Group is empty");
     sm.model.dirichlet.push_back(bc);
+  }
+
+  const ParameterList& springs = p.sublist("Springs");
+  for (auto it = springs.begin(); it != springs.end(); ++it) {
+    const std::string path = "Springs/" + springs.name(it);
+    const ParameterList& k = springs.sublist(springs.name(it));
+    NodalSpring spring;
+    spring.name = springs.name(it);
+    spring.group = k.get<std::string>("Group");
+    if (spring.group.empty()) throw InputError(where + ": " + path + "/Group is empty");
+    spring.components = componentList(k, dim, where, path);
+    spring.stiffness = k.get<double>("Stiffness");
+    if (!(spring.stiffness > 0) || !std::isfinite(spring.stiffness))
+      throw InputError(where + ": " + path + "/Stiffness must be a finite number > 0 (got " +
+                       std::to_string(spring.stiffness) + ")");
+    sm.model.springs.push_back(spring);
   }
 
   const ParameterList& loads = p.sublist("Loads");
@@ -265,6 +338,22 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       b.value = vector3(l, "Vector", where, path, dim);
       b.function = loadFunction(l, endTime, where, path);
       sm.model.bodyForces.push_back(b);
+      continue;
+    }
+    if (type != "point-load" && l.get<std::string>("Distribution") != "total")
+      throw InputError(where + ": " + path + "/Distribution applies to a point-load only (a " +
+                       type + " is spread by its facets or volume); remove the key");
+    if (type == "point-load") {
+      PointLoad load;
+      load.name = name;
+      load.group = l.get<std::string>("Group");
+      if (load.group.empty()) throw InputError(where + ": " + path + "/Group is empty");
+      load.force = vector3(l, "Vector", where, path, dim);
+      load.distribution = l.get<std::string>("Distribution") == "per-node"
+                              ? PointLoad::Distribution::PerNode
+                              : PointLoad::Distribution::Total;
+      load.function = loadFunction(l, endTime, where, path);
+      sm.model.pointLoads.push_back(load);
       continue;
     }
     const std::string follower = l.get<std::string>("Follower");
@@ -321,14 +410,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     probe.name = probes.name(it);
     probe.field = pr.get<std::string>("Field");
     probe.point = vector3(pr, "Point", where, "Output/Probes/" + probe.name, dim);
-    double best = std::numeric_limits<double>::max();
-    for (std::size_t n = 0; n < mesh->numNodes(); ++n) {
-      double d2 = 0;
-      for (int i = 0; i < 3; ++i)
-        d2 += std::pow(mesh->coords[3 * n + i] - probe.point[i], 2);
-      if (d2 < best) best = d2, probe.node = static_cast<std::int64_t>(n);
-    }
-    probe.distance = std::sqrt(best);
+    std::tie(probe.node, probe.distance) = nearestNode(*mesh, probe.point, {});
     sm.probes.push_back(probe);
   }
   sm.scene = std::move(scene);

@@ -89,13 +89,42 @@ ParameterList dirichletItem() {
   return p;
 }
 
+ParameterList springItem() {
+  ParameterList p;
+  p.set("Group", "",
+        "Boundary physical group (or Point Group) whose nodes are each tied to ground by a "
+        "spring");
+  p.set("Components", "xyz",
+        "Components the springs act in: any of x, y, z (e.g. 'y', 'xy'); 'xyz' means all (x "
+        "and y in 2D, where z alone is refused). For a different stiffness per component, give "
+        "one entry per component",
+        choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
+  p.set("Stiffness", 0.0,
+        "Stiffness k > 0 of each node's spring in each component (force per unit length): "
+        "the node feels -k u, so the group's total stiffness is k times its node count");
+  return p;
+}
+
+ParameterList pointGroupItem() {
+  ParameterList p;
+  p.set("Point", Teuchos::Array<double>(3, 0.0),
+        "Location; the group is the one mesh node of an element closest to it");
+  p.set("Tolerance", 1e-6,
+        "Largest distance allowed between Point and that node (> 0, length units): a farther "
+        "node is refused");
+  return p;
+}
+
 ParameterList loadItem() {
   ParameterList p;
   p.set("Type", "pressure",
         "'pressure' (Value, against the outward normal of Group's facets), 'traction' (Vector "
-        "per unit area on Group's facets) or 'body-force' (Vector per unit volume in Block)",
-        choices({"pressure", "traction", "body-force"}));
-  p.set("Group", "", "Boundary physical group (pressure, traction)");
+        "per unit area on Group's facets), 'body-force' (Vector per unit volume in Block) or "
+        "'point-load' (Vector, a force on Group's nodes, see Distribution)",
+        choices({"pressure", "traction", "body-force", "point-load"}));
+  p.set("Group", "",
+        "Boundary physical group (pressure, traction, point-load; point-load also takes a "
+        "Point Group)");
   p.set("Block", "", "Element block (body-force); empty means every block");
   p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
   p.set("Follower", "automatic",
@@ -107,7 +136,12 @@ ParameterList loadItem() {
         "loads",
         choices({"automatic", "true", "false"}));
   p.set("Vector", Teuchos::Array<double>(3, 0.0),
-        "Force per unit area (traction) or volume (body-force) at the end of the load");
+        "Force per unit area (traction), per unit volume (body-force) or force (point-load) at "
+        "the end of the load");
+  p.set("Distribution", "total",
+        "point-load: 'total' (Vector is the group's total force, shared equally by its nodes) "
+        "or 'per-node' (every node gets Vector)",
+        choices({"total", "per-node"}));
   p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",
         choices({"ramp", "constant"}));
   p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
@@ -232,6 +266,10 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Description", "", "Free text, copied to summary.json");
   valid.set("Mesh", typedSection(meshSourceRegistry(), userSublist(&scene, "Mesh"), "rectangle",
                                  where, "Mesh"));
+  valid.set("Point Groups", namedSection(userSublist(&scene, "Point Groups"), "Point Groups", where,
+                                         [](const ParameterList&, const std::string&) {
+                                           return pointGroupItem();
+                                         }));
   valid.set("Materials", namedSection(userSublist(&scene, "Materials"), "Materials", where,
                                       [&](const ParameterList& user, const std::string& path) {
                                         return typedSection(materialRegistry(), &user,
@@ -240,6 +278,9 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Dirichlet",
             namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,
                          [](const ParameterList&, const std::string&) { return dirichletItem(); }));
+  valid.set("Springs",
+            namedSection(userSublist(&scene, "Springs"), "Springs", where,
+                         [](const ParameterList&, const std::string&) { return springItem(); }));
   valid.set("Loads",
             namedSection(userSublist(&scene, "Loads"), "Loads", where,
                          [](const ParameterList&, const std::string&) { return loadItem(); }));
@@ -332,8 +373,12 @@ std::string sceneReference() {
   std::ostringstream out;
   out << "## Sections\n\n";
   ParameterList dirichlet = dirichletItem(), load = loadItem(), probe = probeItem();
-  out << "### Dirichlet/<name>\n\n";
+  out << "### Point Groups/<name>\n\n";
+  describeList(out, pointGroupItem(), "");
+  out << "\n### Dirichlet/<name>\n\n";
   describeList(out, dirichlet, "");
+  out << "\n### Springs/<name>\n\n";
+  describeList(out, springItem(), "");
   out << "\n### Loads/<name>\n\n";
   describeList(out, load, "");
   out << "\n### Contact/<zone>\n\n";

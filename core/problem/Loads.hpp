@@ -59,4 +59,25 @@ struct BodyForce {
   std::function<void(const double* x, double t, double* force)> field;
 };
 
+// A discrete spring from each node of a group to ground: in every listed component, a force
+// -stiffness * u on the node (residual +k u, tangent +k on the diagonal). The stiffness is per
+// node and per component, so the group's total stiffness in a component is k times its nodes.
+struct NodalSpring {
+  std::string name;
+  std::string group;            // boundary physical group (any dimension: points too)
+  std::vector<int> components;  // 0 = x, 1 = y, 2 = z
+  double stiffness = 0.0;       // force per unit length, > 0
+};
+
+// A force on the nodes of a group: `force` is either the group's total, shared equally by its
+// nodes (Total), or what each node gets (PerNode). A dead load.
+struct PointLoad {
+  enum class Distribution { Total, PerNode };
+  std::string name;
+  std::string group;
+  std::array<double, 3> force{{0, 0, 0}};
+  Distribution distribution = Distribution::Total;
+  LoadFunction function;
+};
+
 }  // namespace contactlab

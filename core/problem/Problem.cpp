@@ -9,6 +9,7 @@
 #include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
+#include "core/problem/NodalAssembler.hpp"
 #include "core/problem/SurfaceLoadAssembler.hpp"
 
 #include <algorithm>
@@ -112,10 +113,13 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   reactions_.resize(model_.dirichlet.size());
   for (std::size_t d = 0; d < reactions_.size(); ++d)
     reactions_[d].name = model_.dirichlet[d].name;
+  for (const auto& spring : model_.springs)
+    springForces_.push_back({spring.name, {}});
 
   collectively(*comm, [&] {
     surfaceLoads_ = std::make_unique<SurfaceLoadAssembler>(model_, *dofs_, partition);
   });
+  nodal_ = std::make_unique<NodalAssembler>(model_, *dofs_);
   buildGraph();
 }
 
@@ -165,13 +169,26 @@ void Problem::checkModel() const {
       throw InputError(kind + " '" + name + "': " + e.what());
     }
   };
+  auto checkComponents = [&](const std::string& kind, const std::string& name,
+                             const std::vector<int>& components) {
+    for (int c : components)
+      if (c < 0 || c >= mesh.dim)
+        throw InputError(kind + " '" + name + "' acts on component " + std::to_string(c) +
+                         " of a " + std::to_string(mesh.dim) + "D model");
+  };
   for (const auto& bc : model_.dirichlet) {
     checkGroup("Dirichlet condition", bc.name, bc.group);
-    for (int c : bc.components)
-      if (c < 0 || c >= mesh.dim)
-        throw InputError("Dirichlet condition '" + bc.name + "' constrains component " +
-                         std::to_string(c) + " of a " + std::to_string(mesh.dim) + "D model");
+    checkComponents("Dirichlet condition", bc.name, bc.components);
   }
+  for (const auto& spring : model_.springs) {
+    checkGroup("spring", spring.name, spring.group);
+    checkComponents("spring", spring.name, spring.components);
+    if (!(spring.stiffness > 0) || !std::isfinite(spring.stiffness))
+      throw InputError("spring '" + spring.name + "' has stiffness " +
+                       std::to_string(spring.stiffness) + ": it must be a finite number > 0");
+  }
+  for (const auto& load : model_.pointLoads)
+    checkGroup("point load", load.name, load.group);
   for (const auto& load : model_.surfaceLoads) {
     checkGroup("load", load.name, load.group);
     for (const auto* g : mesh.findBoundaries(load.group))
@@ -236,6 +253,7 @@ void Problem::applyDirichlet(double t, Vector& u) const {
 void Problem::addExternalForces(double t, const double* u, std::vector<double>& f) const {
   const Mesh& mesh = *model_.mesh;
   surfaceLoads_->addForces(t, u, f);
+  nodal_->addPointLoads(t, f);
   std::vector<double> x, fe;
   for (const auto& body : model_.bodyForces) {
     const double scale = body.function(t);
@@ -314,6 +332,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   }
   if (withTangent) {
     surfaceLoads_->addStiffness(t, uo.getRawPtr(), *assembler_, constrained_);
+    nodal_->addSpringStiffness(*assembler_, constrained_);
     for (const auto& c : constraints_)
       assembler_->addDiagonal(c.lid, 1.0);
     assembler_->end();
@@ -328,7 +347,12 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   }
   if (!residual) return;
 
-  // R = f_int - f_ext, summed over ranks into owned entries.
+  // R = f_int + k u - f_ext, summed over ranks into owned entries.
+  nodal_->addSpringForces(uo.getRawPtr(), r);
+  const auto springs = nodal_->localSpringForces(uo.getRawPtr());
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, springs[s].data(),
+                       springForces_[s].force.data());
   std::vector<double> fext(r.size(), 0.0);
   addExternalForces(t, uo.getRawPtr(), fext);
   Vector rOverlap(dofs_->overlapMap());

@@ -7,8 +7,9 @@
 // zero but for a unit diagonal and their residual entries are zero, so K stays symmetric when
 // the element matrices are (a follower pressure's load stiffness is not) and a Newton increment
 // never changes a prescribed value. The residual a constrained dof would have carried is kept
-// as the reaction of its condition. External forces depend on u only through follower
-// pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
+// as the reaction of its condition. Springs to ground add k u to the residual and k to the
+// diagonal of the tangent at their nodes (NodalAssembler.hpp). External forces depend on u only
+// through follower pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/DofMap.hpp"
 #include "core/problem/LinearAlgebra.hpp"
@@ -27,6 +28,7 @@ namespace contactlab {
 class MassKernel;
 class MatrixAssembler;
 class ElementKernel;
+class NodalAssembler;
 class SurfaceLoadAssembler;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
@@ -45,7 +47,7 @@ struct MaterialStateSummary {
 };
 
 struct Reaction {
-  std::string name;               // the Dirichlet condition's name
+  std::string name;               // the Dirichlet condition's (or spring's) name
   std::array<double, 3> force{};  // sum of reactions over its nodes (global)
 };
 
@@ -72,6 +74,8 @@ class Problem : public NonlinearSystem {
   AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
   // Reactions of the Dirichlet conditions at the last assemble() with a residual.
   const std::vector<Reaction>& reactions() const { return reactions_; }
+  // Force each spring exerts on the body (-sum k u over its nodes), at the same assembly.
+  const std::vector<Reaction>& springForces() const { return springForces_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
   void commitState();
   // Same, and u at time t becomes the reference of the slow-dynamics inertia (when enabled).
@@ -132,10 +136,11 @@ class Problem : public NonlinearSystem {
   };
   std::vector<Constraint> constraints_;
   std::unique_ptr<SurfaceLoadAssembler> surfaceLoads_;
+  std::unique_ptr<NodalAssembler> nodal_;  // springs and point loads
   std::unique_ptr<MatrixAssembler> assembler_;
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<Import> importer_;
-  std::vector<Reaction> reactions_;
+  std::vector<Reaction> reactions_, springForces_;
   AssemblyFailure assemblyFailure_;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // Everything that defines a solid model independently of how it is solved: the mesh, one
-// material per element block, boundary conditions and loads (and, when asked, the inertia
-// of the slow-dynamics regularization).
+// material per element block, boundary conditions, springs to ground and loads (and, when asked,
+// the inertia of the slow-dynamics regularization).
 #include "core/materials/Material.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/Loads.hpp"
@@ -20,6 +20,8 @@ struct SolidModel {
   std::vector<DirichletCondition> dirichlet;
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
+  std::vector<PointLoad> pointLoads;
+  std::vector<NodalSpring> springs;
   SlowDynamics slowDynamics;
 
   // Some block's material carries internal variables (plasticity): outputs add its fields.

@@ -6,7 +6,8 @@ usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [key=expected ...]
 A scene file states its own expectations in lines "# expect: key=value@tol ...".
 An expectation `probes.tip.value.1=-0.0123@1e-3` compares a summary.json value (dotted path,
 list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute. A key `A/B` compares
-the ratio of two values (e.g. a friction force over the normal force)."""
+the ratio of two values (e.g. a friction force over the normal force), `A+B` their sum (e.g. a
+contact force and a spring force whose sum the load fixes)."""
 import csv, json, os, shutil, subprocess, sys
 
 import vtk
@@ -74,7 +75,8 @@ for spec in specs:
     key, rest = spec.split("=", 1)
     value, tol = (rest.split("@") + ["1e-9"])[:2]
     parts = key.split("/")
-    got = float(lookup(summary, parts[0]))
+    terms = parts[0].split("+")
+    got = sum(float(lookup(summary, term)) for term in terms)
     if len(parts) == 2:
         got /= float(lookup(summary, parts[1]))
     want = float(value)
