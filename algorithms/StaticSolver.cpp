@@ -97,19 +97,23 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm()
   p->set("Contact Statuses", "method",
          "Overrides Method for the contact statuses (free, stick, slip)", perLoop);
   p->set("Max Status Iterations", 30,
-         "Status fixed point: updates allowed per step that still change a status (>= 0)");
+         "Status fixed point: updates allowed per geometry update (per step with the geometry "
+         "in Newton) that still change a status (>= 0)");
   p->set("Max Threshold Iterations", 30,
-         "Threshold fixed point: updates allowed per step that still move a threshold (>= 0)");
+         "Threshold fixed point: updates allowed per geometry update (per step with the "
+         "geometry in Newton) that still move a threshold (>= 0)");
   p->set("Threshold Tolerance", 1e-6,
          "Threshold fixed point: converged when no threshold moved by more than this times the "
          "largest threshold (> 0)");
-  p->set("Cycling Treatment", "none",
+  p->set("Cycling Treatment", "combined",
          "What to do at a point detected cycling (doc/algorithms.md): 'none' (count it), "
          "'automatic' (multiply its coefficients by 10, within [1e-2, 1e2] times the local "
          "stiffness E/h; refused for penalty, whose coefficients are the model), 'forced' "
          "(impose its status for the rest of the step: closed for contact cycles, slip for "
-         "stick-slip, stick for slip reversal)",
-         choices({"none", "automatic", "forced"}));
+         "stick-slip, stick for slip reversal), 'combined' ('forced' for the friction cycles, "
+         "'automatic' for the contact cycles, 'forced' for them too with the geometry in "
+         "Newton). A forced state is checked against the model's law before a step is accepted",
+         choices({"none", "automatic", "forced", "combined"}));
   p->set("Grazing Tolerance", 1e-6,
          "Grazing contact is a 2-3-2-3 cycle with |g^N| + |g^N+1| below this times the point's "
          "size (> 0)");
@@ -226,14 +230,24 @@ void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
   for (const CyclingEvent& e : events) {
     ++sr.cycling[static_cast<int>(e.kind)];
     controls_->markCycling(e.point, static_cast<int>(e.kind));
-    if (!treating_) continue;
-    if (options_.cyclingTreatment == "forced") {
+    if (!treating_ || options_.cyclingTreatment == "none") continue;
+    const bool frictionCycle =
+        e.kind == CyclingKind::StickSlip || e.kind == CyclingKind::SlipReversal;
+    // 'combined': no coefficient breaks a friction cycle (in 2D the slip piece has no
+    // tangential stiffness whatever r_t), so those are forced; a contact cycle has its
+    // coefficients scaled, except with the geometry in Newton, where a scaled r_n also scales
+    // the geometric terms and the cycles multiplied (Cattaneo-Mindlin, generalized Newton: 148
+    // sub-cycling events and no convergence): forced there too (doc/algorithms.md, "Cycling").
+    const bool force =
+        options_.cyclingTreatment == "forced" ||
+        (options_.cyclingTreatment == "combined" && (frictionCycle || options_.geometryInNewton));
+    if (force) {
       forcedPoints_.push_back(e.point);
       const int status = e.kind == CyclingKind::StickSlip      ? 2
                          : e.kind == CyclingKind::SlipReversal ? 1
                                                                : kForcedClosed;
       controls_->forceStatus(e.point, status);
-    } else if (options_.cyclingTreatment == "automatic") {
+    } else {
       controls_->scaleCoefficients(e.point, 10.0);
     }
   }
@@ -378,6 +392,10 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
+  // The status and threshold fixed points are capped per geometry update: each update moves
+  // the pairing and restarts them (a sliding step of ironing-2d needs ~6 threshold updates per
+  // geometry update and 60 in all; a cap on the step's total failed it).
+  int statusUpdates = 0, thresholdUpdates = 0;
   for (;;) {
     const NewtonOutcome outcome = newton_.solve(x, request, observer);
     solves += outcome.iterations;
@@ -395,19 +413,20 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     if (statusFixedPoint && controls_->updateStatuses(x, t) > 0) {
       // A status that flips from one fixed-point update to the next cycles too.
       treatCycling(detector_.observe(controls_->pointStates()), sr);
-      if (sr.statusIterations == options_.maxStatusIterations)
+      if (statusUpdates == options_.maxStatusIterations)
         return fail("statuses-not-converged",
-                    "contact statuses still changed after " + std::to_string(sr.statusIterations) +
+                    "contact statuses still changed after " + std::to_string(statusUpdates) +
                         " fixed-point updates (Algorithm/Max Status Iterations)");
+      ++statusUpdates;
       ++sr.statusIterations;
       continue;
     }
     if (thresholdFixedPoint && controls_->updateThresholds(x, t) > options_.thresholdTolerance) {
-      if (sr.thresholdIterations == options_.maxThresholdIterations)
+      if (thresholdUpdates == options_.maxThresholdIterations)
         return fail("thresholds-not-converged",
-                    "friction thresholds still moved after " +
-                        std::to_string(sr.thresholdIterations) +
+                    "friction thresholds still moved after " + std::to_string(thresholdUpdates) +
                         " fixed-point updates (Algorithm/Max Threshold Iterations)");
+      ++thresholdUpdates;
       ++sr.thresholdIterations;
       continue;
     }
@@ -417,6 +436,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
                                                   std::to_string(sr.geometryIterations) +
                                                   " updates (Newton/Max Geometry Iterations)");
       ++sr.geometryIterations;
+      statusUpdates = thresholdUpdates = 0;
       // Newton converged at a geometry frozen at this very iterate: when the update changes
       // the residual by less than the geometry tolerance, the fixed point has converged too.
       problem_.assemble(x, t, residual.get(), false);

@@ -2,7 +2,7 @@
 """Runs a scene with the contactlab command and checks the results contract (DESIGN.md §5):
 result.pvd and its pieces readable by VTK, steps.csv, summary.json with probes.
 
-usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [key=expected ...]
+usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [--set key/path=value ...] [key=expected ...]
 A scene file states its own expectations in lines "# expect: key=value@tol ...".
 An expectation `probes.tip.value.1=-0.0123@1e-3` compares a summary.json value (dotted path,
 list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute. A key `A/B` compares
@@ -13,8 +13,15 @@ import csv, json, os, shutil, subprocess, sys
 import vtk
 
 exe, scene, out, ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+sets, expectations = [], []
+args = iter(sys.argv[5:])
+for arg in args:
+    if arg == "--set":
+        sets += ["--set", next(args)]
+    else:
+        expectations.append(arg)
 shutil.rmtree(out, ignore_errors=True)
-cmd = [exe, "run"] + ([scene] if scene != "-" else []) + ["--out", out]
+cmd = [exe, "run"] + ([scene] if scene != "-" else []) + ["--out", out] + sets
 if ranks > 1:
     cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -65,7 +72,7 @@ def lookup(obj, path):
     return obj
 
 # Expectations: command-line arguments, plus "# expect: key=value@tol" lines in the scene file.
-specs = list(sys.argv[5:])
+specs = expectations
 if scene != "-":
     for line in open(scene):
         if line.startswith("# expect:"):
