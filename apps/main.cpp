@@ -7,6 +7,7 @@
 //   contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]
 //   contactlab list
 //   contactlab --version
+//   contactlab help [COMMAND], contactlab COMMAND --help
 #include "contactlab/Version.hpp"
 
 #include "apps/RunCommand.hpp"
@@ -44,13 +45,89 @@ const char* kUsage =
     "                      and plots (doc/studies.md)\n"
     "  list                every registry with its parameters, defaults and doc strings\n"
     "  --version           print the version\n"
+    "  help [COMMAND]      this text, or a command's (also COMMAND --help)\n"
     "\n"
     "--set takes a '/'-separated key path, e.g. --set Mesh/rectangle/nx=20\n"
     "--set 'Linear Solver/Type=belos'\n";
 
+// Per command: `contactlab help COMMAND`, `contactlab COMMAND --help`.
+const char* commandHelp(const std::string& command) {
+  if (command == "run")
+    return "usage: contactlab run [SCENE] [--out DIR] [--set key/path=value ...]\n"
+           "\n"
+           "Solves SCENE (a YAML file; without one, a small built-in scene) and writes\n"
+           "result.pvd (ParaView), steps.csv, contact.csv and summary.json to DIR (default: a\n"
+           "folder named after the scene). --set overrides one scene key, e.g.\n"
+           "  --set Mesh/rectangle/nx=20 --set 'Algorithm/Method=fixed-point'\n"
+           "Exit code 0 converged, 1 a numerical failure (named in summary.json), 2 bad input,\n"
+           "128 + signal when interrupted. Scene keys: `contactlab list`, doc/scenes.md.\n";
+  if (command == "validate")
+    return "usage: contactlab validate SCENE [--set key/path=value ...]\n"
+           "\n"
+           "Checks SCENE, its mesh and every parameter without solving; prints the model's\n"
+           "size. Exit code 0 valid, 2 invalid (one sentence naming the key).\n";
+  if (command == "critical-mu")
+    return "usage: contactlab critical-mu SCENE [--out DIR] [--set key/path=value ...]\n"
+           "\n"
+           "Runs SCENE, then the critical friction coefficient of the last converged state's\n"
+           "contact statuses: whether the solution is locally unique, and above which mu it\n"
+           "may not be (summary.json 'critical_mu'; doc/algorithms.md, Uniqueness).\n";
+  if (command == "study")
+    return "usage: contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
+           "\n"
+           "Runs a scene over the product of a study's axes, each run its own process with a\n"
+           "time limit (resumable), then study.csv, study.md and plots (doc/studies.md).\n";
+  if (command == "list")
+    return "usage: contactlab list\n"
+           "\n"
+           "Prints every registry (meshes, materials, loads, formulations, algorithms, linear\n"
+           "solvers) with its parameters, defaults and doc strings, as in doc/scenes.md.\n";
+  return nullptr;
+}
+
 int usageError(const std::string& message) {
   std::cerr << "contactlab: error: " << message << "\n\n" << kUsage;
   return 2;
+}
+
+bool isHelp(const std::string& a) {
+  return a == "--help" || a == "-h" || a == "help";
+}
+
+// What needs neither MPI nor Kokkos is answered before they start: help (Kokkos would print
+// its own options first), the version and the reference (start-up costs about a second).
+// Returns -1 when the command needs the parallel start-up.
+int answerBeforeStartup(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) return usageError("no command given");
+  const std::string& command = args[0];
+  if (command == "--version" || command == "version") {
+    std::cout << "contactlab " << CONTACTLAB_VERSION << "\n";
+    return 0;
+  }
+  if (isHelp(command)) {
+    if (args.size() == 1) {
+      std::cout << kUsage;
+      return 0;
+    }
+    const char* help = commandHelp(args[1]);
+    if (!help) return usageError("no help for unknown command '" + args[1] + "'");
+    std::cout << help;
+    return 0;
+  }
+  const char* help = commandHelp(command);
+  for (std::size_t i = 1; i < args.size(); ++i)
+    if (help && (args[i] == "--help" || args[i] == "-h")) {
+      std::cout << help;
+      return 0;
+    }
+  if (command == "list") {
+    contactlab::registerAll();
+    std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
+    return 0;
+  }
+  if (!help) return usageError("unknown command '" + command + "'");
+  return -1;
 }
 
 // `contactlab study`: the study scripts run each case as a `contactlab run` of its own, so
@@ -81,19 +158,6 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
   if (args.empty()) return root ? usageError("no command given") : 2;
   const std::string command = args[0];
 
-  if (command == "--version" || command == "version") {
-    if (root) std::cout << "contactlab " << CONTACTLAB_VERSION << "\n";
-    return 0;
-  }
-  if (command == "--help" || command == "-h" || command == "help") {
-    if (root) std::cout << kUsage;
-    return 0;
-  }
-  if (command == "list") {
-    contactlab::registerAll();
-    if (root) std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
-    return 0;
-  }
   if (command == "run" || command == "validate" || command == "critical-mu") {
     contactlab::installInterruptionHandlers();
     contactlab::RunOptions options;
@@ -132,7 +196,8 @@ int escaped(const Teuchos::Comm<int>& comm, const std::string& what, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc >= 2 && std::string(argv[1]) == "study") return study(argc, argv);
+  if (const int code = answerBeforeStartup(argc, argv); code != -1) return code;
+  if (std::string(argv[1]) == "study") return study(argc, argv);
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   try {
