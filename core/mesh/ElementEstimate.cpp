@@ -11,8 +11,16 @@
 namespace contactlab {
 namespace {
 
-bool simplex(const std::string& type) {
-  return type.rfind("tri", 0) == 0 || type.rfind("tet", 0) == 0;
+// Triangles and tetrahedra, by the element's own type (a name the generator has not checked
+// yet counts as not simplex: the generator refuses it with its own sentence).
+bool simplex(const std::string& name) {
+  try {
+    const ElementType type = elementTypeFromName(name);
+    return type == ElementType::Tri3 || type == ElementType::Tri6 || type == ElementType::Tet4 ||
+           type == ElementType::Tet10;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 // Cells of a structured block: quads/hexes, or 2 triangles / 6 tetrahedra each.
