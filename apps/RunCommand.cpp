@@ -3,6 +3,7 @@
 #include "algorithms/PatternCriticalFriction.hpp"
 #include "algorithms/RunStatic.hpp"
 #include "apps/DefaultScene.hpp"
+#include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
 #include "core/io/CsvWriter.hpp"
 #include "core/io/InputError.hpp"
@@ -60,27 +61,6 @@ JsonValue typedSection(const Teuchos::ParameterList& section) {
   const std::string type = section.get<std::string>("Type");
   return JsonValue::object().set("type", type).set("parameters", toJson(section.sublist(type)));
 }
-
-class Progress {
- public:
-  explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
-  void iteration(int step, double time, int iteration, double residual, double elapsed) {
-    if (!enabled_ || !tty_) return;
-    std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s   ", step,
-                 time, iteration, residual, elapsed);
-    std::fflush(stderr);
-  }
-  void step(const StepReport& s, int steps, double elapsed) {
-    if (!enabled_) return;
-    if (tty_) std::fprintf(stderr, "\r%70s\r", "");
-    std::fprintf(
-        stderr, "  step %d (%d planned)  t = %g  %d iterations%s  |R| = %.3e  elapsed %.1f s\n",
-        s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "", s.residual, elapsed);
-  }
-
- private:
-  bool enabled_, tty_;
-};
 
 // Bad input: one sentence on stderr, exit code 2.
 int reportInputError(const std::exception& e, bool root) {
@@ -297,7 +277,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // (mumps with Condition Estimate: true); its largest value goes to the summary.
   double maxCondition = -1;
   CsvWriter stepsCsv(stepColumns);
-  Progress progress(root);
+  RunProgress progress(root && !options.quiet, sm.solverOptions.endTime);
   auto x = system.createVector();
 
   // The displacement part of the system's unknowns (the whole vector without contact).

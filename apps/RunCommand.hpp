@@ -16,6 +16,8 @@ struct RunOptions {
   // `contactlab critical-mu`: after the run, the critical friction coefficient of the last
   // converged state's status pattern (printed and in summary.json under critical_mu).
   bool criticalMu = false;
+  // --quiet: no progress lines (scripts); warnings, errors and where the results are, still.
+  bool quiet = false;
 };
 
 // Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says

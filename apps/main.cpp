@@ -31,7 +31,7 @@ const char* kUsage =
     "usage: contactlab <command> [options]\n"
     "\n"
     "commands:\n"
-    "  run [SCENE] [--out DIR] [--set key=value ...]\n"
+    "  run [SCENE] [--out DIR] [--set key=value ...] [--quiet]\n"
     "                      solve SCENE (a YAML file; without one, a small built-in scene) and\n"
     "                      write result.pvd, steps.csv and summary.json to DIR\n"
     "  validate SCENE [--set key=value ...]\n"
@@ -53,14 +53,16 @@ const char* kUsage =
 // Per command: `contactlab help COMMAND`, `contactlab COMMAND --help`.
 const char* commandHelp(const std::string& command) {
   if (command == "run")
-    return "usage: contactlab run [SCENE] [--out DIR] [--set key/path=value ...]\n"
+    return "usage: contactlab run [SCENE] [--out DIR] [--set key/path=value ...] [--quiet]\n"
            "\n"
            "Solves SCENE (a YAML file; without one, a small built-in scene) and writes\n"
            "result.pvd (ParaView), steps.csv, contact.csv and summary.json to DIR (default: a\n"
            "folder named after the scene). --set overrides one scene key, e.g.\n"
            "  --set Mesh/rectangle/nx=20 --set 'Algorithm/Method=fixed-point'\n"
            "Exit code 0 converged, 1 a numerical failure (named in summary.json), 2 bad input,\n"
-           "128 + signal when interrupted. Scene keys: `contactlab list`, doc/scenes.md.\n";
+           "128 + signal when interrupted. Progress: a line per Newton iterate and per step on\n"
+           "stderr (on a terminal, a live line with the ETA); --quiet drops it. Scene keys:\n"
+           "`contactlab list`, doc/scenes.md.\n";
   if (command == "validate")
     return "usage: contactlab validate SCENE [--set key/path=value ...]\n"
            "\n"
@@ -167,7 +169,9 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
       const std::string& a = args[i];
       if ((a == "--out" || a == "--set") && i + 1 >= args.size())
         return root ? usageError(a + " needs a value") : 2;
-      if (a == "--out")
+      if (a == "--quiet" || a == "-q")
+        options.quiet = true;
+      else if (a == "--out")
         options.outputDirectory = args[++i];
       else if (a == "--set")
         options.overrides.push_back(args[++i]);

@@ -1,0 +1,48 @@
+#pragma once
+#include "algorithms/StaticSolver.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+
+namespace contactlab {
+
+// Progress on stderr (rank 0). On a terminal: a live line per Newton iterate, with the run's
+// ETA once a step has converged (extrapolated linearly in load time), replaced by one line per
+// step. In a log: one line per iterate and per step, so a long step is never silent. `--quiet`:
+// nothing but warnings, errors and the closing lines.
+class RunProgress {
+ public:
+  RunProgress(bool enabled, double endTime)
+      : enabled_(enabled), tty_(isatty(STDERR_FILENO)), endTime_(endTime) {}
+  void iteration(int step, double time, int iteration, double residual, double elapsed) {
+    if (!enabled_) return;
+    if (!tty_) {
+      std::fprintf(stderr, "    step %d  iteration %d  |R| = %.3e  elapsed %.1f s\n", step,
+                   iteration, residual, elapsed);
+      return;
+    }
+    char eta[48] = "";
+    if (lastTime_ > 0 && endTime_ > lastTime_)
+      std::snprintf(eta, sizeof eta, "  ETA %.0f s",
+                    std::max(0.0, lastElapsed_ * endTime_ / lastTime_ - elapsed));
+    std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s   ", step,
+                 time, iteration, residual, elapsed, eta);
+    std::fflush(stderr);
+  }
+  void step(const StepReport& s, int steps, double elapsed) {
+    lastTime_ = s.time;
+    lastElapsed_ = elapsed;
+    if (!enabled_) return;
+    if (tty_) std::fprintf(stderr, "\r%90s\r", "");
+    std::fprintf(
+        stderr, "  step %d (%d planned)  t = %g  %d iterations%s  |R| = %.3e  elapsed %.1f s\n",
+        s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "", s.residual, elapsed);
+  }
+
+ private:
+  bool enabled_, tty_;
+  double endTime_, lastTime_ = 0, lastElapsed_ = 0;
+};
+
+}  // namespace contactlab
