@@ -22,6 +22,9 @@ class AugmentedLagrangian : public ContactLaw {
   bool hasMultipliers() const override { return true; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
   double normalCoefficient() const override { return rn_; }
+  // Frictionless: J(g, p) = J(p, g) = -w SR on every piece. The threshold mu p^ couples the
+  // friction rows to the normal ones one way only.
+  bool symmetricJacobian(int nt) const override { return nt == 0; }
 
  private:
   const double rn_, rt_;

@@ -97,6 +97,10 @@ class ContactLaw {
   // Whether the coefficients change the solution (penalty) rather than only the path to it;
   // the automatic cycling treatment, which adapts them, is refused for such laws.
   virtual bool coefficientsChangeSolution() const { return false; }
+  // Whether J is symmetric for a point with nt friction components, whatever its status (with
+  // the kinematics' B, the point's tangent B^T J B is then symmetric too): the linear solver
+  // may then take the assembled tangent as symmetric.
+  virtual bool symmetricJacobian(int nt) const = 0;
 };
 
 }  // namespace contactlab

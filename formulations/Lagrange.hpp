@@ -19,6 +19,8 @@ class Lagrange : public ContactLaw {
   bool hasMultipliers() const override { return true; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
   double normalCoefficient() const override { return cn_; }
+  // J(g, p) = -w always, J(p, g) = -w only on a closed point: not symmetric at an open one.
+  bool symmetricJacobian(int /*nt*/) const override { return false; }
 
  private:
   const double cn_, ct_;

@@ -16,6 +16,9 @@ class Penalty : public ContactLaw {
   bool hasMultipliers() const override { return false; }
   void evaluate(const LawInput& in, LawOutput& out) const override;
   double normalCoefficient() const override { return epsN_; }
+  // Frictionless: w eps_n on the diagonal. The threshold mu eps_n <-g> couples the friction
+  // rows to the gap one way only.
+  bool symmetricJacobian(int nt) const override { return nt == 0; }
   bool coefficientsChangeSolution() const override { return true; }
 
  private:

@@ -95,15 +95,21 @@ struct MumpsSolver::Impl {
 Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
   using Teuchos::tuple;
   auto p = Teuchos::rcp(new Teuchos::ParameterList("mumps"));
+  // 'automatic' is the application's to resolve (it knows whether its tangent is symmetric:
+  // apps/RunCommand.cpp); a solver built with it unresolved takes any matrix.
   Teuchos::setStringToIntegralParameter<Mode>(
-      "Mode", "general", "Matrix type given to MUMPS (SYM)",
-      tuple<std::string>("general", "symmetric", "symmetric-indefinite"),
-      tuple<std::string>("any square matrix: LU factorization (SYM = 0)",
+      "Mode", "automatic", "Matrix type given to MUMPS (SYM)",
+      tuple<std::string>("automatic", "general", "symmetric", "symmetric-indefinite"),
+      tuple<std::string>("symmetric-indefinite when the model's tangent is symmetric (no "
+                         "friction, penalty or augmented Lagrangian, no follower load, no "
+                         "node-to-segment geometric terms), general otherwise",
+                         "any square matrix: LU factorization (SYM = 0)",
                          "symmetric positive definite: LDL^T without pivoting (SYM = 1); "
                          "reads the lower triangle",
                          "symmetric, possibly indefinite (e.g. saddle point): LDL^T with "
                          "2x2 pivots (SYM = 2); reads the lower triangle"),
-      tuple<Mode>(Mode::general, Mode::symmetric, Mode::symmetricIndefinite), p.get());
+      tuple<Mode>(Mode::general, Mode::general, Mode::symmetric, Mode::symmetricIndefinite),
+      p.get());
   Teuchos::setStringToIntegralParameter<Ordering>(
       "Ordering", "pord", "Fill-reducing ordering of the analysis (ICNTL(7))",
       tuple<std::string>("pord", "amd", "amf", "qamd"),

@@ -51,6 +51,10 @@ class Material {
   virtual void evaluate(const MaterialInput& in, MaterialOutput& out) const = 0;
   // Density, for body forces and (later) slow-dynamics mass.
   virtual double density() const { return 0.0; }
+  // Whether the tangent (d stress / d strain, or dP/dF with dP_iJ/dF_kL = dP_kL/dF_iJ) is
+  // symmetric: true of every hyperelastic law and of associative plasticity with its consistent
+  // tangent (tests/unit/materials check it); a non-associative law would say false.
+  virtual bool symmetricTangent() const { return true; }
   // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
   // kernels output it and flag a point plastic when a step increased it.
   virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }

@@ -443,6 +443,29 @@ TEST(J2SmallStrain, TangentMatchesCentralDifferencesInPlasticLoading) {
   }
 }
 
+// The consistent tangent of the radial return (isotropic and kinematic hardening) is symmetric:
+// the assembled tangent is, so the linear solver may take it as such (mumps Mode: automatic).
+TEST(J2SmallStrain, TangentIsSymmetricInPlasticLoading) {
+  const J2SmallStrain m(steel(10e3, 5e3));
+  const double yieldStrain = 250.0 / 200e3;
+  std::mt19937 gen(13);
+  for (int sample = 0; sample < 12; ++sample) {
+    const bool planeStrain = sample % 3 == 2;
+    const Yielded y = yieldOnce(m, gen, planeStrain);
+    const Voigt eps =
+        add(add(y.strain, y.strain, 0.3), randomStrain(gen, yieldStrain, planeStrain));
+    const J2Result r = evaluateJ2(m, eps, y.state);
+    ASSERT_GT(r.state[12], y.state[12] + 1e-5) << sample << ": the step is not plastic";
+    double scale = 0.0, asymmetry = 0.0;
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) {
+        scale = std::max(scale, std::abs(r.tangent[a * 6 + b]));
+        asymmetry = std::max(asymmetry, std::abs(r.tangent[a * 6 + b] - r.tangent[b * 6 + a]));
+      }
+    EXPECT_LT(asymmetry, 1e-12 * scale) << sample;
+  }
+}
+
 TEST(J2SmallStrain, TangentMatchesCentralDifferencesWithoutHardening) {
   // Perfect plasticity from the virgin state: the first step of every plastic scene.
   const J2SmallStrain m(steel(0.0, 0.0));

@@ -254,6 +254,27 @@ TEST(SimoMiehe, TangentMatchesCentralDifferencesInPlasticLoadingFromTheVirginSta
   reportTangentError("plastic from the virgin state");
 }
 
+// The consistent dP/dF has the major symmetry dP_iJ/dF_kL = dP_kL/dF_iJ (the return is a
+// closest-point projection in the logarithmic stresses): the assembled tangent is symmetric, so
+// the linear solver may take it as such (Linear Solver/mumps/Mode: automatic).
+TEST(SimoMiehe, TangentHasTheMajorSymmetryInPlasticLoading) {
+  for (const Law& law : plasticLaws()) {
+    const SimoMiehe m(law.parameters);
+    std::mt19937 gen(33);
+    for (int sample = 0; sample < 16; ++sample) {
+      const Mat3 F = randomF(gen, sample % 4 == 3);
+      const Step r = step(m, F, virgin(m));
+      ASSERT_GT(alphaOf(r.state), 0.0);
+      const double scale = maxAbs(r.out.dPdF.data(), 81);
+      double asymmetry = 0.0;
+      for (int a = 0; a < 9; ++a)
+        for (int b = 0; b < 9; ++b)
+          asymmetry = std::max(asymmetry, std::abs(r.out.dPdF[a * 9 + b] - r.out.dPdF[b * 9 + a]));
+      EXPECT_LT(asymmetry, 1e-10 * scale) << law.label << " sample " << sample;
+    }
+  }
+}
+
 TEST(SimoMiehe, TangentMatchesCentralDifferencesInPlasticLoadingFromAPrestrainedState) {
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
   for (const Law& law : plasticLaws()) {
