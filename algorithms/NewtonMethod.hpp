@@ -43,4 +43,12 @@ class NewtonMethod {
 bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
                      int iteration);
 
+// The failure of a Newton iteration whose linear solve threw SingularMatrixError. The linear
+// layer only knows the matrix is singular; what that means for a contact model is worded here:
+// the message names the iteration and the solver's detail, StaticSolver appends the step and
+// then singularTangentRemedy().
+inline constexpr const char* kSingularTangent = "singular-tangent";
+std::string singularTangentMessage(int iteration, const std::string& detail);
+std::string singularTangentRemedy();
+
 }  // namespace contactlab

@@ -15,6 +15,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include <cmath>
+#include <utility>
 
 namespace contactlab {
 namespace {
@@ -26,9 +27,11 @@ using Teuchos::rcp;
 // J x = b solved by the project's LinearSolver, factored when the factory initializes it.
 class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
  public:
-  void set(const RCP<const Thyra::LinearOpBase<double>>& op, LinearSolver* solver) {
+  void set(const RCP<const Thyra::LinearOpBase<double>>& op, LinearSolver* solver,
+           RCP<const Matrix> matrix) {
     op_ = op;
     solver_ = solver;
+    matrix_ = std::move(matrix);
   }
   RCP<const Thyra::LinearOpBase<double>> op() const { return op_; }
   RCP<const Thyra::VectorSpaceBase<double>> range() const override { return op_->range(); }
@@ -54,6 +57,7 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
     auto b = TOE::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = TOE::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
     solver_->solve(*b, *x);  // LinearSolverError propagates: NOX reports the failure
+    throwIfNumericallySingular(*matrix_, *b, *x);
     Thyra::SolveStatus<double> status;
     status.solveStatus = Thyra::SOLVE_STATUS_CONVERGED;
     return status;
@@ -62,6 +66,7 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
  private:
   RCP<const Thyra::LinearOpBase<double>> op_;
   LinearSolver* solver_ = nullptr;
+  RCP<const Matrix> matrix_;  // the one factored, for the singularity check of each solve
 };
 
 class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
@@ -76,7 +81,7 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
     // The system's current tangent (with geometry in Newton a re-pairing may have replaced it).
     // The solver analyses on its first matrix by itself.
     solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
-    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_);
+    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_, system_.tangent());
   }
   void uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
                       RCP<const Thyra::LinearOpSourceBase<double>>* source,
@@ -261,6 +266,10 @@ NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Ob
   try {
     solver = NOX::Solver::buildSolver(group, tests, params);
     status = solver->solve();
+  } catch (const SingularMatrixError& e) {
+    out.failure = kSingularTangent;
+    out.message =
+        singularTangentMessage(solver.is_null() ? 0 : solver->getNumIterations(), e.what());
   } catch (const LinearSolverError& e) {
     out.failure = "linear-solver-failed";
     out.message = e.what();

@@ -25,6 +25,16 @@ bool newtonConverged(double norm, const NewtonRequest& request, const ContactCon
   return iteration == 0 || controls == nullptr || controls->statusChanges() == 0;
 }
 
+std::string singularTangentMessage(int iteration, const std::string& detail) {
+  return "the tangent is singular at iteration " + std::to_string(iteration) + " (" + detail + ")";
+}
+
+std::string singularTangentRemedy() {
+  return ": a body is not held in some direction (before contact under load control, or held "
+         "only by friction); remedies: Algorithm/Regularization: slow-dynamics (materials need "
+         "a density), Contact/<zone>/Initial Contact: all, a support or Springs";
+}
+
 NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
                                  const Observer& observer) {
   using clock = std::chrono::steady_clock;
@@ -65,6 +75,12 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       residual->scale(-1.0);
       increment->putScalar(0.0);
       solver_.solve(*residual, *increment);
+      throwIfNumericallySingular(*system_.tangent(), *residual, *increment);
+    } catch (const SingularMatrixError& e) {
+      out.linearSolveSeconds += secondsSince(t0);
+      out.failure = kSingularTangent;
+      out.message = singularTangentMessage(it, e.what());
+      return out;
     } catch (const LinearSolverError& e) {
       out.linearSolveSeconds += secondsSince(t0);
       out.failure = "linear-solver-failed";

@@ -312,7 +312,11 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
     solver_->setMatrix(problem_.tangent(), problem_.takePatternChanged());
     auto du = problem_.createVector();
     solver_->solve(*rhs, *du);
+    throwIfNumericallySingular(*problem_.tangent(), *rhs, *du);
     x.update(1.0, *du, 1.0);
+  } catch (const SingularMatrixError& e) {
+    p.failure = kSingularTangent;
+    p.message = "tangent predictor: " + singularTangentMessage(0, e.what());
   } catch (const LinearSolverError& e) {
     p.failure = "linear-solver-failed";
     p.message = std::string("tangent predictor: ") + e.what();
@@ -356,6 +360,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   const auto fail = [&](const std::string& failure, const std::string& message) {
     report.failure = failure;
     report.message = message + " at step " + std::to_string(sr.step) + " (t = " + sci(t) + ")";
+    if (failure == kSingularTangent) report.message += singularTangentRemedy();
     if (!treating_ && !forcedPoints_.empty()) {
       // The forced treatment had converged on its modified law, and the model's own law
       // failed from there: name that, and the points.

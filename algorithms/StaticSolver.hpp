@@ -85,7 +85,9 @@ struct StepReport {
 struct RunReport {
   bool converged = false;
   std::string failure;      // empty, or a named reason: "diverged", "max-iterations",
-                            // "nan-detected", "linear-solver-failed", "nonlinear-solver-error",
+                            // "nan-detected", "linear-solver-failed", "singular-tangent" (the
+                            // linear solver found the tangent singular: a body not held in
+                            // some direction), "nonlinear-solver-error",
                             // "geometry-not-converged", "statuses-not-converged",
                             // "thresholds-not-converged", "material-update-failed",
                             // "inverted-element" (the solid cannot be evaluated at an

@@ -20,6 +20,30 @@ class LinearSolverError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The matrix is singular to working precision: a direct solver met a zero pivot, or a solve
+// returned an x too large for any matrix resolvable in double precision
+// (throwIfNumericallySingular). Typed so that a caller can say what a singular matrix means
+// for its model; this layer does not know.
+class SingularMatrixError : public LinearSolverError {
+ public:
+  using LinearSolverError::LinearSolverError;
+};
+
+// max_j max|A_ik| ||x_j|| / ||b_j||, a lower bound on cond_2(A) since max|A_ik| <= ||A||_2 and
+// ||x_j|| <= ||A^-1||_2 ||b_j|| (columns with b_j = 0 skipped). Costs a pass over A's values.
+double conditionLowerBound(const Matrix& A, const MultiVector& b, const MultiVector& x);
+
+// Throws SingularMatrixError when conditionLowerBound(A, b, x) proves cond(A) beyond
+// kSingularConditionBound. A direct solver does not always see a singular matrix: the pivot of
+// the null direction is then round-off instead of zero, and x is of order ||b|| / round-off.
+void throwIfNumericallySingular(const Matrix& A, const MultiVector& b, const MultiVector& x);
+
+// cond(A) beyond 1 / (100 eps): x then has fewer than 2 significant digits. Measured: the
+// round-off pivots of singular contact tangents give 1.5e16 to 6e16, the other solves of the
+// regression gold at most 4.4e10 (1.9e12 with OpenBLAS' Prescott kernels, on a chaotic run
+// that fails anyway; doc/algorithms.md, "Load steps").
+inline constexpr double kSingularConditionBound = 4.5e13;
+
 // det = sign * mantissa * 2^exponent, 0.5 <= |mantissa| < 1 (never formed: it over/underflows).
 struct Determinant {
   double mantissa = 0.0;

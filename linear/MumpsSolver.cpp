@@ -86,9 +86,12 @@ struct MumpsSolver::Impl {
                                  ? "; in Mode symmetric this may only mean that the matrix is "
                                    "not positive definite: try Mode symmetric-indefinite"
                                  : "";
-    throw LinearSolverError(std::string("MUMPS ") + phase +
-                            " failed: " + mumpsErrorMeaning(code, infog(2)) +
-                            " (INFOG(1) = " + std::to_string(code) + ")" + hint);
+    const std::string message = std::string("MUMPS ") + phase +
+                                " failed: " + mumpsErrorMeaning(code, infog(2)) +
+                                " (INFOG(1) = " + std::to_string(code) + ")" + hint;
+    // With pivoting (SYM = 0, 2) a zero pivot is a singular matrix; without, it is ambiguous.
+    if (code == -10 && id.sym != 1) throw SingularMatrixError(message);
+    throw LinearSolverError(message);
   }
 };
 

@@ -14,7 +14,7 @@ import yaml
 exe, studies, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-NAMED = {"max-iterations", "diverged", "nan-detected", "linear-solver-failed",
+NAMED = {"max-iterations", "diverged", "nan-detected", "linear-solver-failed", "singular-tangent",
          "statuses-not-converged", "thresholds-not-converged", "geometry-not-converged",
          "step-too-small"}
 KEEP = {"r_n = 1e-4 E/h", "r_n = 1e2 E/h", "r_n = 1e8 E/h", "mu = 2", "nu = 0.4999",

@@ -245,11 +245,40 @@ TEST(MumpsSolver, SingularMatrixThrowsNamingSingularity) {
     try {
       solver.setMatrix(A, true);
       ADD_FAILURE() << "no error for a singular matrix";
-    } catch (const LinearSolverError& e) {
+    } catch (const SingularMatrixError& e) {  // typed: the algorithms name it for the model
       EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("INFOG(1) = -"), std::string::npos) << e.what();
+    } catch (const LinearSolverError& e) {
+      ADD_FAILURE() << "not a SingularMatrixError: " << e.what();
     }
   }
+}
+
+TEST(MumpsSolver, ARoundOffPivotIsProvedSingularByTheSolution) {
+  // Rows 3 and 4 differ by round-off: MUMPS factors it, and x is of order 1 / eps.
+  const auto A = test::makeMatrix(10, Layout::scattered, world(), [](GO g, auto& c, auto& v) {
+    if (g == 3 || g == 4) {
+      c = {3, 4};
+      v = {1.0, g == 4 ? 1.0 + 4e-16 : 1.0};
+    } else {
+      c = {g};
+      v = {2.0};
+    }
+  });
+  const auto b = test::rightHandSide(*A, 1);
+  b->putScalar(1.0);
+  if (b->getMap()->isNodeGlobalElement(4))  // inconsistent with row 3 but for round-off
+    b->replaceGlobalValue(4, 0, 2.0);
+  MumpsSolver solver(optionsWith(Mode::general), world());
+  const auto x = solveWith(solver, A, *b);
+  EXPECT_GT(conditionLowerBound(*A, *b, *x), kSingularConditionBound);
+  EXPECT_THROW(throwIfNumericallySingular(*A, *b, *x), SingularMatrixError);
+  // A regular matrix passes, however the right-hand side.
+  const auto L = test::laplacian2D(23, 17, Layout::scattered, world());
+  const auto bL = test::rightHandSide(*L, 3);
+  const auto xL = solveWith(solver, L, *bL);
+  EXPECT_LT(conditionLowerBound(*L, *bL, *xL), 1e4);
+  EXPECT_NO_THROW(throwIfNumericallySingular(*L, *bL, *xL));
 }
 
 TEST(MumpsSolver, PositiveDefiniteModeOnAnIndefiniteMatrixSuggestsTheIndefiniteMode) {
