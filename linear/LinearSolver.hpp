@@ -29,8 +29,9 @@ class SingularMatrixError : public LinearSolverError {
   using LinearSolverError::LinearSolverError;
 };
 
-// max_j max|A_ik| ||x_j|| / ||b_j||, a lower bound on cond_2(A) since max|A_ik| <= ||A||_2 and
-// ||x_j|| <= ||A^-1||_2 ||b_j|| (columns with b_j = 0 skipped). Costs a pass over A's values.
+// max_j ||D^-1 x_j|| / ||D b_j||, D = diag(max_k |A_ik|)^(-1/2): a lower bound on
+// cond_2(D A D) / max|D A D| (entries of D A D are of order one), so independent of the rows'
+// units (columns with b_j = 0 skipped). Costs a pass over A's values.
 double conditionLowerBound(const Matrix& A, const MultiVector& b, const MultiVector& x);
 
 // Throws SingularMatrixError when conditionLowerBound(A, b, x) proves cond(A) beyond

@@ -279,6 +279,17 @@ TEST(MumpsSolver, ARoundOffPivotIsProvedSingularByTheSolution) {
   const auto xL = solveWith(solver, L, *bL);
   EXPECT_LT(conditionLowerBound(*L, *bL, *xL), 1e4);
   EXPECT_NO_THROW(throwIfNumericallySingular(*L, *bL, *xL));
+  // A regular matrix whose rows are in units 1e16 apart (a stiff block beside a soft one,
+  // multiplier rows beside displacement rows) passes: the bound is taken on the scaled rows.
+  const auto S = test::makeMatrix(10, Layout::scattered, world(), [](GO g, auto& c, auto& v) {
+    c = {g};
+    v = {g % 2 ? 1e8 : 1e-8};
+  });
+  const auto bS = test::rightHandSide(*S, 1);
+  bS->putScalar(1.0);
+  const auto xS = solveWith(solver, S, *bS);
+  EXPECT_LT(conditionLowerBound(*S, *bS, *xS), 10.0);
+  EXPECT_NO_THROW(throwIfNumericallySingular(*S, *bS, *xS));
 }
 
 TEST(MumpsSolver, PositiveDefiniteModeOnAnIndefiniteMatrixSuggestsTheIndefiniteMode) {
