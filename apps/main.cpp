@@ -118,8 +118,9 @@ int answerBeforeStartup(int argc, char** argv) {
     return 0;
   }
   const char* help = commandHelp(command);
+  if (!help) return usageError("unknown command '" + command + "'");
   for (std::size_t i = 1; i < args.size(); ++i)
-    if (help && (args[i] == "--help" || args[i] == "-h")) {
+    if (args[i] == "--help" || args[i] == "-h") {
       std::cout << help;
       return 0;
     }
@@ -128,8 +129,7 @@ int answerBeforeStartup(int argc, char** argv) {
     std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
     return 0;
   }
-  if (!help) return usageError("unknown command '" + command + "'");
-  return -1;
+  return -1;  // run, validate, critical-mu, study
 }
 
 // `contactlab study`: the study scripts run each case as a `contactlab run` of its own, so
@@ -154,39 +154,36 @@ int study(int argc, char** argv) {
   return 1;
 }
 
+// run, validate or critical-mu: answerBeforeStartup has answered every other command (and
+// refused unknown ones) and `study` has handed over, before MPI started.
 int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char** argv) {
   const bool root = comm->getRank() == 0;
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty()) return root ? usageError("no command given") : 2;
-  const std::string command = args[0];
-
-  if (command == "run" || command == "validate" || command == "critical-mu") {
-    contactlab::installInterruptionHandlers();
-    contactlab::RunOptions options;
-    options.validateOnly = command == "validate";
-    options.criticalMu = command == "critical-mu";
-    for (std::size_t i = 1; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      if ((a == "--out" || a == "--set") && i + 1 >= args.size())
-        return root ? usageError(a + " needs a value") : 2;
-      if (a == "--quiet" || a == "-q")
-        options.quiet = true;
-      else if (a == "--out")
-        options.outputDirectory = args[++i];
-      else if (a == "--set")
-        options.overrides.push_back(args[++i]);
-      else if (a.rfind("--", 0) == 0)
-        return root ? usageError("unknown option '" + a + "'") : 2;
-      else if (options.scenePath.empty())
-        options.scenePath = a;
-      else
-        return root ? usageError("more than one scene given ('" + a + "')") : 2;
-    }
-    if ((options.validateOnly || options.criticalMu) && options.scenePath.empty())
-      return root ? usageError(command + " needs a scene file") : 2;
-    return contactlab::runCommand(options, comm);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const std::string& command = args[0];
+  contactlab::installInterruptionHandlers();
+  contactlab::RunOptions options;
+  options.validateOnly = command == "validate";
+  options.criticalMu = command == "critical-mu";
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if ((a == "--out" || a == "--set") && i + 1 >= args.size())
+      return root ? usageError(a + " needs a value") : 2;
+    if (a == "--quiet" || a == "-q")
+      options.quiet = true;
+    else if (a == "--out")
+      options.outputDirectory = args[++i];
+    else if (a == "--set")
+      options.overrides.push_back(args[++i]);
+    else if (a.rfind("--", 0) == 0)
+      return root ? usageError("unknown option '" + a + "'") : 2;
+    else if (options.scenePath.empty())
+      options.scenePath = a;
+    else
+      return root ? usageError("more than one scene given ('" + a + "')") : 2;
   }
-  return root ? usageError("unknown command '" + command + "'") : 2;
+  if ((options.validateOnly || options.criticalMu) && options.scenePath.empty())
+    return root ? usageError(command + " needs a scene file") : 2;
+  return contactlab::runCommand(options, comm);
 }
 
 // An error that escaped a command: one sentence, exit code 2 for bad input and 1 otherwise.

@@ -349,10 +349,6 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
 
   // R = f_int + k u - f_ext, summed over ranks into owned entries.
   nodal_->addSpringForces(uo.getRawPtr(), r);
-  const auto springs = nodal_->localSpringForces(uo.getRawPtr());
-  for (std::size_t s = 0; s < springs.size(); ++s)
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, springs[s].data(),
-                       springForces_[s].force.data());
   std::vector<double> fext(r.size(), 0.0);
   addExternalForces(t, uo.getRawPtr(), fext);
   Vector rOverlap(dofs_->overlapMap());
@@ -364,17 +360,25 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   residual->putScalar(0.0);
   residual->doExport(rOverlap, *exporter_, Tpetra::ADD);
 
+  // The reactions, then the springs' forces, summed over ranks in one reduction.
   auto res = residual->getDataNonConst(0);
-  std::vector<double> sums(3 * reactions_.size(), 0.0), global(sums.size());
+  const std::size_t reactionSums = 3 * reactions_.size();
+  std::vector<double> sums(reactionSums + 3 * springForces_.size(), 0.0), global(sums.size());
   for (const auto& c : constraints_) {
     sums[3 * c.condition + c.component] += res[c.lid];
     res[c.lid] = 0.0;
   }
+  const auto springs = nodal_->localSpringForces(uo.getRawPtr());
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    std::copy(springs[s].begin(), springs[s].end(), sums.begin() + reactionSums + 3 * s);
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
                      global.data());
   for (std::size_t d = 0; d < reactions_.size(); ++d)
     for (int c = 0; c < 3; ++c)
       reactions_[d].force[c] = global[3 * d + c];
+  for (std::size_t s = 0; s < springForces_.size(); ++s)
+    for (int c = 0; c < 3; ++c)
+      springForces_[s].force[c] = global[reactionSums + 3 * s + c];
 }
 
 void Problem::commitState() {
