@@ -42,6 +42,10 @@ ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
 ap.add_argument("case", choices=["hill", "limit"])
 ap.add_argument("--tol", type=float, default=0.01)
 ap.add_argument("--u-tol", type=float, default=0.005)
+ap.add_argument("--u-min-excess", type=float,
+                help="u(b) must exceed Hill's by at least this (relative): the follower "
+                     "pressure's load grows with the bore, which a dead load or a small-strain "
+                     "run would not show")
 ap.add_argument("--pressure", type=float)
 ap.add_argument("--hardening", type=float)
 ap.add_argument("--nu", type=float)
@@ -301,5 +305,8 @@ if not outermost["r1"] - width <= ref.c <= outermost["r2"] + width:
 for side, e in u_error.items():
     if abs(e) > args.u_tol:
         problems.append(f"u({side:g}) off by {e:.3g} (relative), more than {args.u_tol}")
+if args.u_min_excess is not None and not u_error[b] >= args.u_min_excess:
+    problems.append(f"u({b:g}) exceeds Hill's by {u_error[b]:.3g}, less than {args.u_min_excess}: "
+                    "the load did not follow the widening bore")
 assert not problems, "; ".join(problems)
 print("ok")
