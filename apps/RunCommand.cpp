@@ -214,6 +214,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                          ? readSceneText(kDefaultScene, "<default scene>", options.overrides)
                          : readSceneFile(options.scenePath, options.overrides);
     sm = loadScene(std::move(file), comm);
+    if (root)
+      for (const std::string& sentence : sm.advice)
+        std::cerr << "contactlab: " << sentence << "\n";
     try {
       problem = std::make_unique<Problem>(sm.model, comm);
     } catch (const InputError& e) {

@@ -36,6 +36,8 @@ struct SceneModel {
   // Output/Critical Mu Tolerance and Max Patterns (checkUniqueness).
   double criticalMuTolerance = 1e-6;
   int criticalMuMaxPatterns = 64;
+  // Sentences for the log about choices that run but are known to be poor (not errors).
+  std::vector<std::string> advice;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

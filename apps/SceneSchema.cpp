@@ -220,7 +220,9 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "mortar: the multiplier basis, 'dual' (biorthogonal to the slave's shape functions, "
         "built on the covered part of each facet: nodal pressures like lumped ones) or "
         "'standard' (the shape functions themselves: its nodal values overshoot at the "
-        "contact edge and amplify the bulk's nodal-force noise, doc/verification.md)",
+        "contact edge and amplify the bulk's nodal-force noise, doc/verification.md); on "
+        "tri6 and quad8 facets both are built on transformed shape functions whose corner "
+        "integrals are positive",
         choices({"standard", "dual"}));
   p.set("Formulation", typedSection(formulationRegistry(), userSublist(user, "Formulation"),
                                     "augmented-lagrangian", where, path + "/Formulation"));

@@ -116,18 +116,6 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     } catch (const std::invalid_argument& e) {
       throw InputError("Contact/" + zone.name + ": " + e.what());
     }
-    if (zone.discretization == Discretization::mortar)
-      for (const CellGroup* g : mesh.findBoundaries(zone.slave))
-        if (g->type == ElementType::Tri6 || g->type == ElementType::Quad8)
-          throw InputError(
-              "Contact/" + zone.name +
-              ": mortar needs slave facets whose shape functions "
-              "integrate to positive values; the corner ones of " +
-              std::string(g->type == ElementType::Tri6 ? "tri6 (tet10)" : "quad8 (hex20)") +
-              " facets integrate to " +
-              (g->type == ElementType::Tri6 ? "zero" : "a negative value") +
-              ", so their weighted gaps vanish. Use linear or quad9 (hex27) facets on the "
-              "slave, or 'node-to-segment'");
     // No Friction Group: nodes whose friction the user removed (code_aster's SANS_GROUP_NO_FR).
     std::vector<std::int64_t> noFriction;
     if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);

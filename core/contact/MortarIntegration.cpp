@@ -162,22 +162,38 @@ std::vector<double> dualCoefficients(int n, const std::vector<double>& d,
   return A;
 }
 
-// The whole facet's dual basis from its integrals (wholeFacetIntegrals); throws
+// Row-major product of two n x n matrices, and A B^T.
+std::vector<double> multiply(int n, const std::vector<double>& A, const std::vector<double>& B,
+                             bool transposeB = false) {
+  std::vector<double> C(static_cast<std::size_t>(n) * n, 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        C[i * n + j] += A[i * n + k] * (transposeB ? B[j * n + k] : B[k * n + j]);
+  return C;
+}
+
+// The whole facet's dual basis Phi = A T N from its integrals (wholeFacetIntegrals): the dual of
+// the transformed basis T N (T the identity but on tri6/quad8), biorthogonal to T N. Throws
 // std::invalid_argument where it does not exist.
 std::vector<double> wholeFacetDualBasis(const Facet& slave, const std::vector<double>& lumped,
                                         const std::vector<double>& mass) {
-  if (slave.type == ElementType::Tri6 || slave.type == ElementType::Quad8)
-    throw std::invalid_argument(
-        "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
-        ": its corner shape functions integrate to zero (tri6) or a negative value (quad8)");
+  const int n = static_cast<int>(lumped.size());
+  const std::vector<double> T = multiplierBasisTransform(slave.type);
+  std::vector<double> transformed(n, 0.0);  // int T N
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      transformed[j] += T[j * n + k] * lumped[k];
   const double area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
-  for (std::size_t j = 0; j < lumped.size(); ++j)
-    if (!(lumped[j] > 1e-12 * area))
+  for (int j = 0; j < n; ++j)
+    if (!(transformed[j] > 1e-12 * area))
       throw std::invalid_argument(
           "mortar integration: the dual multiplier basis does not exist on " + describe(slave) +
-          ": the shape function of its node " + std::to_string(j) +
+          ": the multiplier basis function of its node " + std::to_string(j) +
           " does not integrate to a positive value");
-  return dualCoefficients(static_cast<int>(lumped.size()), lumped, mass);
+  // int (T N)(T N)^T = T M T^T
+  const std::vector<double> transformedMass = multiply(n, multiply(n, T, mass), T, true);
+  return multiply(n, dualCoefficients(n, transformed, transformedMass), T);
 }
 
 // D += N_S N_S^T dA, M += N_S N_M^T dA (standard basis; the dual one is a transform after).
@@ -418,39 +434,15 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
   }
 }
 
-// The standard-basis integrals (D = int N_j N_k, M = int N_j N^M_l over the covered part) into
-// the dual basis Phi = A N: D <- A D, M <- A M. On a partially covered facet A is built on the
-// covered part where it exists (A = diag(int_c N_j) (int_c N N^T)^-1, Cichosz & Bischoff 2011):
-// D stays diagonal with the covered integrals and sum_l M_jl = D_jj, where the whole facet's
-// basis would couple the nodes and give weights near zero or negative. It exists when every
-// int_c N_j > 0, always on linear facets; a quadratic facet's corner function can integrate
-// to a negative value over part of it, and there the whole facet's basis is kept. A sliver
-// (covered mass matrix singular in double precision) counts as no coverage.
-void toDualBasis(const std::vector<double>& whole, int ns, MortarIntegrals& out) {
-  std::vector<double> A = whole;
-  if (out.coveredArea < 1e-6 * out.area) {
-    out.D.assign(out.D.size(), 0.0);
-    out.masters.clear();
-    out.coveredArea = 0.0;
-    return;
-  }
-  if (out.coveredArea < (1.0 - 1e-9) * out.area) {
-    std::vector<double> rowSums(ns, 0.0);
-    for (int j = 0; j < ns; ++j)
-      for (int k = 0; k < ns; ++k)
-        rowSums[j] += out.D[j * ns + k];
-    if (*std::min_element(rowSums.begin(), rowSums.end()) > 1e-9 * out.coveredArea) {
-      std::vector<double> covered = dualCoefficients(ns, rowSums, out.D);
-      if (std::all_of(covered.begin(), covered.end(), [](double a) { return std::isfinite(a); }))
-        A.swap(covered);
-    }
-  }
+// The standard-basis integrals (D = int N_j N_k, M = int N_j N^M_l) into the basis Phi = B N:
+// D <- B D, M <- B M.
+void changeBasis(const std::vector<double>& B, int ns, MortarIntegrals& out) {
   auto transform = [&](std::vector<double>& X, int columns) {
     std::vector<double> Y(X.size(), 0.0);
     for (int j = 0; j < ns; ++j)
       for (int i = 0; i < ns; ++i)
         for (int c = 0; c < columns; ++c)
-          Y[j * columns + c] += A[j * ns + i] * X[i * columns + c];
+          Y[j * columns + c] += B[j * ns + i] * X[i * columns + c];
     X.swap(Y);
   };
   transform(out.D, ns);
@@ -458,7 +450,59 @@ void toDualBasis(const std::vector<double>& whole, int ns, MortarIntegrals& out)
     transform(m.M, static_cast<int>(m.M.size()) / ns);
 }
 
+// The standard-basis integrals over the covered part into the dual basis Phi = A T N (T the
+// quadratic transform, else the identity). On a partially covered facet A is built on the
+// covered part where it exists (A = diag(int_c T N) (int_c T N (T N)^T)^-1, Cichosz & Bischoff
+// 2011): D stays diagonal (against T N) with the covered integrals and sum_l M_jl = sum_k D_jk,
+// where the whole facet's basis would couple the nodes and give weights near zero or negative.
+// It exists when every int_c T N_j > 0, always on linear facets; a quadratic facet's function
+// can integrate to a negative value over part of it, and there the whole facet's basis is kept.
+// A sliver (covered mass matrix singular in double precision) counts as no coverage.
+void toDualBasis(const std::vector<double>& whole, const std::vector<double>& T, int ns,
+                 MortarIntegrals& out) {
+  std::vector<double> B = whole;
+  if (out.coveredArea < 1e-6 * out.area) {
+    out.D.assign(out.D.size(), 0.0);
+    out.masters.clear();
+    out.coveredArea = 0.0;
+    return;
+  }
+  if (out.coveredArea < (1.0 - 1e-9) * out.area) {
+    // int_c T N (T N)^T = T D T^T, and its row sums int_c T N (the columns of T sum to 1).
+    const std::vector<double> mass = multiply(ns, multiply(ns, T, out.D), T, true);
+    std::vector<double> rowSums(ns, 0.0);
+    for (int j = 0; j < ns; ++j)
+      for (int k = 0; k < ns; ++k)
+        rowSums[j] += mass[j * ns + k];
+    if (*std::min_element(rowSums.begin(), rowSums.end()) > 1e-9 * out.coveredArea) {
+      std::vector<double> covered = multiply(ns, dualCoefficients(ns, rowSums, mass), T);
+      if (std::all_of(covered.begin(), covered.end(), [](double a) { return std::isfinite(a); }))
+        B.swap(covered);
+    }
+  }
+  changeBasis(B, ns, out);
+}
+
 }  // namespace
+
+std::vector<double> multiplierBasisTransform(ElementType type) {
+  const int n = info(type).nodes;
+  std::vector<double> T(static_cast<std::size_t>(n) * n, 0.0);
+  for (int j = 0; j < n; ++j)
+    T[j * n + j] = 1.0;
+  if (type != ElementType::Tri6 && type != ElementType::Quad8) return T;
+  // Corner i gains alpha of the mid-edge functions beside it; mid-edge node c + i sits between
+  // corners i and i + 1 (gmsh order) and keeps 1 - 2 alpha of its own.
+  constexpr double alpha = 0.2;
+  const int corners = n / 2;
+  for (int i = 0; i < corners; ++i) {
+    const int mid = corners + i;
+    T[mid * n + mid] = 1.0 - 2.0 * alpha;
+    T[i * n + mid] += alpha;
+    T[((i + 1) % corners) * n + mid] += alpha;
+  }
+  return T;
+}
 
 std::vector<double> dualBasisCoefficients(const Facet& slave) {
   std::vector<double> mass;
@@ -499,7 +543,10 @@ MortarIntegrals integrateMortar(const Facet& slave,
     integrate2d(slave, slaveNormals, masters, out);
   else
     integrate3d(slave, slaveNormals, masters, out);
-  if (dual && out.coveredArea > 0) toDualBasis(whole, ns, out);
+  if (dual && out.coveredArea > 0)
+    toDualBasis(whole, multiplierBasisTransform(slave.type), ns, out);
+  else if (!dual && (slave.type == ElementType::Tri6 || slave.type == ElementType::Quad8))
+    changeBasis(multiplierBasisTransform(slave.type), ns, out);
   return out;
 }
 

@@ -30,9 +30,14 @@
 // int_C Phi_j N_k dA = delta_jk int_C N_k dA over the covered part C of S, so D is diagonal; on
 // a fully covered facet A is the whole facet's, on a partially covered one it is built on C
 // where every int_C N_j > 0 (always on linear facets; else the whole facet's A is kept), and
-// coverage below 1e-6 of the facet counts as none). The dual
-// basis exists only where every int_S N_j dA > 0: line2, line3, tri3, quad4, quad9, not tri6
-// and quad8 (zero or negative corner integrals).
+// coverage below 1e-6 of the facet counts as none).
+// On tri6 and quad8 facets the corner shape functions integrate to zero and to a negative value,
+// so weighted gaps with Phi = N would vanish there and the dual basis would not exist. Both bases
+// are then built on the transformed functions T N (multiplierBasisTransform; Lamichhane &
+// Wohlmuth 2004, Popp, Gitterle, Gee & Wall 2010, alpha = 1/5 as in Popp's and CalculiX's
+// quadratic mortar): standard Phi = T N, dual biorthogonal to T N. T N spans the same space as
+// N and sums to 1, so a uniform traction has equal nodal multipliers; only the displacement
+// side keeps N (D_jk = int Phi_j N_k is then not diagonal on these facets).
 #include "core/contact/ContactSearch.hpp"
 
 #include <array>
@@ -64,18 +69,24 @@ struct MortarIntegrals {
 // Throws std::invalid_argument for a facet that is not line2/line3/tri3/tri6/quad4/quad8/quad9,
 // masters of another dimension than the slave, wrong coordinate or normal counts, a degenerate
 // facet (zero length or area), slave normals tangent to the slave (or cancelling), the dual
-// basis on tri6/quad8, a facet whose projection on the auxiliary plane self-intersects. Throws
-// std::runtime_error when an integration point's projection along the normal onto a facet does
-// not converge (a facet nearly parallel to the projection direction). In 2D a master whose end
-// nodes cannot be projected onto the slave (Newton diverges: far beyond a curved slave's ends)
-// counts as not overlapping. Thread-safe: no shared mutable state.
+// basis on a distorted slave (dualBasisCoefficients), a facet whose projection on the auxiliary
+// plane self-intersects. Throws std::runtime_error when an integration point's projection along the
+// normal onto a facet does not converge (a facet nearly parallel to the projection direction). In
+// 2D a master whose end nodes cannot be projected onto the slave (Newton diverges: far beyond a
+// curved slave's ends) counts as not overlapping. Thread-safe: no shared mutable state.
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
                                 const std::vector<const Facet*>& masters, MultiplierBasis basis);
 
-// Coefficients A (row major ns x ns) of the dual basis on `slave`: A = D_e M_e^-1 with
-// D_e = diag(int_S N_j dA), (M_e)_jk = int_S N_j N_k dA over the whole facet. Throws
-// std::invalid_argument for tri6/quad8, or when some int_S N_j dA <= 0 (a distorted facet).
+// Coefficients B (row major ns x ns) of the dual basis on `slave`, Phi = B N: B = A T with
+// A = D_e M_e^-1, D_e = diag(int_S T N dA), M_e = int_S T N (T N)^T dA over the whole facet.
+// Throws std::invalid_argument when some int_S (T N)_j dA <= 0 (a distorted facet).
 std::vector<double> dualBasisCoefficients(const Facet& slave);
+
+// The multiplier basis transform T (row major n x n) of a facet type: the identity, but on tri6
+// and quad8, where a corner's function gains alpha = 1/5 of each mid-edge function beside it
+// and a mid-edge function keeps 1 - 2 alpha of itself. int T N is then positive on undistorted
+// facets: tri6 2A/15 at corners, A/5 at mid-edges; quad8 A/20 and A/5.
+std::vector<double> multiplierBasisTransform(ElementType type);
 
 }  // namespace contactlab

@@ -220,6 +220,7 @@ TEST(MortarClipping, SplitsANonConvexQuadAtItsReflexVertex) {
 
 // ---- 1. Matching facets ----
 
+// D = T M_e, T the multiplier basis transform (the identity but on tri6/quad8).
 TEST(MortarIntegration, IdenticalFacetsGiveTheConsistentMassMatrix) {
   for (ElementType t :
        {ElementType::Line2, ElementType::Line3, ElementType::Tri3, ElementType::Tri6,
@@ -230,13 +231,17 @@ TEST(MortarIntegration, IdenticalFacetsGiveTheConsistentMassMatrix) {
     const MortarIntegrals r =
         integrateMortar(slave, nodeNormals(slave), pointers(masters), MultiplierBasis::Standard);
     const FacetMatrices exact = facetMatrices(slave);
+    const std::vector<double> T = multiplierBasisTransform(t);
     const int n = info(t).nodes;
     ASSERT_EQ(r.masters.size(), 1u);
     EXPECT_NEAR(r.area, exact.area, 1e-14);
     EXPECT_NEAR(r.coveredArea, exact.area, 1e-14) << info(t).name;
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) {
-        EXPECT_NEAR(r.D[j * n + k], exact.mass[j * n + k], 1e-15) << info(t).name;
+        double transformed = 0.0;
+        for (int m = 0; m < n; ++m)
+          transformed += T[j * n + m] * exact.mass[m * n + k];
+        EXPECT_NEAR(r.D[j * n + k], transformed, 1e-15) << info(t).name;
         // The master node at slave node k's position.
         int l = 0;
         while (std::hypot(masters[0].coords[3 * l] - slave.coords[3 * k],
@@ -261,6 +266,8 @@ const std::vector<PatchCase> kPatchCases = {
     {ElementType::Quad4, ElementType::Quad4, 4, -0.3, 1.3, 7 * kPi / 180},
     {ElementType::Tri3, ElementType::Quad4, 3, -0.3, 1.3, 7 * kPi / 180},
     {ElementType::Quad9, ElementType::Quad4, 4, -0.3, 1.3, 7 * kPi / 180},
+    {ElementType::Tri6, ElementType::Quad4, 3, -0.3, 1.3, 7 * kPi / 180},
+    {ElementType::Quad8, ElementType::Tri3, 4, -0.3, 1.3, 7 * kPi / 180},
     {ElementType::Quad4, ElementType::Tri3, 3, -0.3, 1.3, 7 * kPi / 180},
     {ElementType::Line2, ElementType::Line2, 3, -0.2, 1.1, 0},
     {ElementType::Line3, ElementType::Line3, 3, -0.2, 1.1, 0},
@@ -313,34 +320,60 @@ TEST(MortarIntegration, LinearFieldsTransferExactlyBetweenCoplanarFacets) {
 
 // ---- 4. Dual basis ----
 
+// Biorthogonal to the transformed functions T N (T the identity but on tri6/quad8):
+// int Phi_j (T N)_k = (D T^T)_jk = delta_jk int (T N)_j.
 TEST(MortarIntegration, DualBasisIsBiorthogonal) {
-  for (ElementType t : {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
-                        ElementType::Quad4, ElementType::Quad9}) {
+  for (ElementType t :
+       {ElementType::Line2, ElementType::Line3, ElementType::Tri3, ElementType::Tri6,
+        ElementType::Quad4, ElementType::Quad8, ElementType::Quad9}) {
     const Map map = skewedSlave(t);
     const Facet slave = makeFacet(t, map);
     const std::vector<Facet> masters = {makeMaster(t, map)};
     const MortarIntegrals r =
         integrateMortar(slave, nodeNormals(slave), pointers(masters), MultiplierBasis::Dual);
     const FacetMatrices exact = facetMatrices(slave);
-    const std::vector<double> A = dualBasisCoefficients(slave);
+    const std::vector<double> B = dualBasisCoefficients(slave);
+    const std::vector<double> T = multiplierBasisTransform(t);
     const int n = info(t).nodes;
     for (int j = 0; j < n; ++j) {
-      double integral = 0.0;  // int Phi_j dA
+      double integral = 0.0, transformed = 0.0;  // int Phi_j dA, int (T N)_j dA
       for (int k = 0; k < n; ++k) {
-        integral += A[j * n + k] * exact.lumped[k];
-        EXPECT_NEAR(r.D[j * n + k], j == k ? exact.lumped[j] : 0.0, 1e-14) << info(t).name;
+        integral += B[j * n + k] * exact.lumped[k];
+        transformed += T[j * n + k] * exact.lumped[k];
       }
-      EXPECT_NEAR(integral, exact.lumped[j], 1e-14) << info(t).name;
+      EXPECT_GT(transformed, 0.0) << info(t).name;
+      EXPECT_NEAR(integral, transformed, 1e-14) << info(t).name;
+      for (int k = 0; k < n; ++k) {
+        double against = 0.0;
+        for (int m = 0; m < n; ++m)
+          against += r.D[j * n + m] * T[k * n + m];
+        EXPECT_NEAR(against, j == k ? transformed : 0.0, 1e-14) << info(t).name;
+      }
     }
   }
 }
 
-TEST(MortarIntegration, DualBasisRejectsTri6AndQuad8) {
+// tri6 and quad8 corner functions integrate to zero and to -A/12: with Phi = N their weighted
+// gaps would vanish or change sign. The transformed bases give every node a positive weight
+// sum_k D_jk = int Phi_j: tri6 2A/15 at corners and A/5 at mid-edges, quad8 A/20 and A/5
+// (alpha = 1/5), in both bases.
+TEST(MortarIntegration, QuadraticSlaveFacetsGetPositiveWeights) {
   for (ElementType t : {ElementType::Tri6, ElementType::Quad8}) {
     const Facet slave = makeFacet(t, unitSlave(t));
-    EXPECT_THROW(dualBasisCoefficients(slave), std::invalid_argument);
-    EXPECT_THROW(integrateMortar(slave, nodeNormals(slave), {&slave}, MultiplierBasis::Dual),
-                 std::invalid_argument);
+    const FacetMatrices exact = facetMatrices(slave);
+    const int n = info(t).nodes, corners = n / 2;
+    const double cornerWeight = (t == ElementType::Tri6 ? 2.0 / 15.0 : 1.0 / 20.0) * exact.area;
+    EXPECT_NEAR(exact.lumped[0], t == ElementType::Tri6 ? 0.0 : -exact.area / 12, 1e-14);
+    for (MultiplierBasis basis : kBases) {
+      const MortarIntegrals r = integrateMortar(slave, nodeNormals(slave), {&slave}, basis);
+      SCOPED_TRACE(info(t).name);
+      for (int j = 0; j < n; ++j) {
+        double weight = 0.0;
+        for (int k = 0; k < n; ++k)
+          weight += r.D[j * n + k];
+        EXPECT_NEAR(weight, j < corners ? cornerWeight : exact.area / 5, 1e-14);
+      }
+    }
   }
 }
 
@@ -382,8 +415,9 @@ TEST(MortarIntegration, PartialOverlapCoversTheIntersection) {
 // facets a corner function integrates to a negative value over this covered part: no covered
 // basis, the whole facet's is kept; the transfer of a constant is checked for those.)
 TEST(MortarIntegration, DualBasisOnACoveredPartStaysBiorthogonal) {
-  for (ElementType t : {ElementType::Line2, ElementType::Line3, ElementType::Quad4,
-                        ElementType::Tri3, ElementType::Quad9}) {
+  for (ElementType t :
+       {ElementType::Line2, ElementType::Line3, ElementType::Quad4, ElementType::Tri3,
+        ElementType::Tri6, ElementType::Quad8, ElementType::Quad9}) {
     const Facet slave = makeFacet(t, unitSlave(t));
     // A master shifted by a third of the slave's extent along x: it covers part of it.
     const Map shifted = [&](double u, double v) {
