@@ -89,7 +89,7 @@ def recommendation(study, rows, axes):
                      f"({cost(best):.3g} s, error {accuracy(best):.3g}).")
     elif good and any(_num(accuracy(r)) for r in good):
         best = min((r for r in good if _num(accuracy(r))),
-                   key=lambda r: accuracy(r))
+                   key=lambda r: (accuracy(r), cost(r)))  # of equal errors, the cheapest
         lines.append(f"- **No run reaches an error of {target:g}**; the most accurate is "
                      f"{best['case']} (error {accuracy(best):.3g}, "
                      f"{cost(best):.3g} s).")
