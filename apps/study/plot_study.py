@@ -62,6 +62,8 @@ def set_scale(axis, kind, values):
     kind = scale(values) if kind == "auto" else kind
     (axis.axes.set_xscale if axis is axis.axes.xaxis else axis.axes.set_yscale)(kind)
     v = [x for x in values if x is not None and x > 0]
+    if kind == "linear" and v and all(float(x).is_integer() for x in v):  # counts
+        axis.set_major_locator(MaxNLocator(integer=True))
     if kind == "log" and v and max(v) < 1e4 * min(v):
         axis.set_major_locator(LogLocator(subs=(1, 2, 5)))
         axis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:g}"))
@@ -331,7 +333,8 @@ def sensitivity(folder, rows, axes):
         iterations += [n for n in its if n]
         failures += ok.count(False)
         name = " ".join(key[0].split("/")[-2:])
-        label = " / ".join([name] + [shown(v) for v in key[1:] if v != ""])
+        label = " / ".join([name] + [f"{axis_name(a)} {v}" for a, v in zip(others, key[1:])
+                                     if v != ""])
         # Each next line's marks smaller, so that a line drawn over an equal one shows both.
         style = dict(color=f"C{i % 10}", marker=MARKERS[i % len(MARKERS)], label=label,
                      markersize=max(3.0, 9 - 1.5 * i))
@@ -343,7 +346,7 @@ def sensitivity(folder, rows, axes):
     for ax in panels[0]:
         set_scale(ax.xaxis, "log", [v for members in groups.values() for v, _ in members])
         ax.set_xlabel("coefficient (r_n or penalty)")
-        ax.grid(True, which="both", alpha=0.3)
+        ax.grid(True, alpha=0.3)
     if e_ax:
         set_scale(e_ax.yaxis, "auto", errors)
         e_ax.set_ylabel(error_label(rows))
