@@ -134,12 +134,12 @@ def terminal_table(rows, axes, explicit_cases):
     """The comparison as plain text, in the study's order: one column per axis (and the case,
     when the study lists cases), converged or the failure reason, Newton iterations, wall
     seconds and the errors the reference gives. Returns the lines."""
-    errors = [(key, head) for key, head in (("pressure_error_l2", "p err"),
-                                            ("shear_error_l2", "τ err"))
-              if any(_num(r.get(key)) for r in rows)]
+    errors = [(key, head, what) for key, head, what in (
+        ("pressure_error_l2", "p err", "contact pressure"),
+        ("shear_error_l2", "τ err", "shear traction")) if any(_num(r.get(key)) for r in rows)]
     head = [axis_name(a) for a in axes] + (["case"] if explicit_cases else []) + \
-        ["converged", "Newton", "wall s"] + [h for _, h in errors]
-    texts = len(axes) + bool(explicit_cases)  # left-aligned columns; numbers to the right
+        ["converged", "Newton", "wall s"] + [h for _, h, _ in errors]
+    names = len(axes) + bool(explicit_cases)  # the columns that name a run
 
     def cells(r, reason):
         ok = r["status"] == "converged"
@@ -147,12 +147,12 @@ def terminal_table(rows, axes, explicit_cases):
             [study_file.explicit_case(r["case"], r["axes"])] if explicit_cases else []) + [
             "yes" if ok else (r["reason"] or r["status"]) if reason else "no",
             _fmt(r.get("newton")), f"{r['wall_s']:.1f}"] + [
-            _fmt(r.get(key)) if ok else "–" for key, _ in errors]
+            _fmt(r.get(key)) if ok else "–" for key, _, _ in errors]
 
     def layout(reason):
         table = [head] + [cells(r, reason) for r in rows]
         widths = [max(len(line[i]) for line in table) for i in range(len(head))]
-        return ["  ".join(c.ljust(w) if i < texts + 1 else c.rjust(w)
+        return ["  ".join(c.ljust(w) if i <= names else c.rjust(w)  # numbers to the right
                           for i, (c, w) in enumerate(zip(line, widths))).rstrip()
                 for line in table], widths
 
@@ -165,15 +165,13 @@ def terminal_table(rows, axes, explicit_cases):
     for r in rows:
         if r["status"] != "converged" and not inline:
             failed.setdefault(r["reason"] or r["status"], []).append(" / ".join(
-                cells(r, False)[:texts]))
+                cells(r, False)[:names]))
     for why, names in failed.items():
         lines += textwrap.wrap(f"not converged ({why}): {'; '.join(names)}", TERMINAL_WIDTH,
                                subsequent_indent="  ")
     if errors:
-        lines.append(", ".join(h for _, h in errors) + ": relative L2 error against the "
-                     "reference of the " + " and ".join(
-                         {"p err": "contact pressure", "τ err": "shear traction"}[h]
-                         for _, h in errors))
+        lines.append(", ".join(h for _, h, _ in errors) + ": relative L2 error against the "
+                     "reference of the " + " and ".join(what for _, _, what in errors))
     return lines
 
 
