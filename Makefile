@@ -1,9 +1,13 @@
 # contactlab: two commands.
-#   make run    install missing Debian packages, build, run the default scene
+#   make run    install missing Debian packages, build, run the quick comparison (formulations
+#               x algorithm presets x discretizations on a small contact scene, under a minute)
+#               and print its table; `make run SCENE=scenes/x.yaml` runs that one scene instead
 #   make test   install missing Debian packages, build, run every test (unit, verification, mpi)
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?=
+STUDY ?= scenes/studies/quick-comparison.yaml
+STUDY_ARGS ?=
 CTEST_ARGS ?=
 
 .PHONY: run test build deps configure clean format bench docs
@@ -19,8 +23,14 @@ configure: deps $(BUILD_DIR)/build.ninja
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# The study resumes: a second `make run` reuses the runs already in its folder (delete it, or
+# pass --retry-failed through STUDY_ARGS, to run them again).
 run: build
+ifeq ($(SCENE),)
+	$(BUILD_DIR)/apps/contactlab study $(STUDY) --out $(BUILD_DIR)/$(basename $(notdir $(STUDY))) $(STUDY_ARGS)
+else
 	$(BUILD_DIR)/apps/contactlab run $(SCENE)
+endif
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)

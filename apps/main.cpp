@@ -42,7 +42,7 @@ const char* kUsage =
     "  study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
     "                      run a scene over the product of a study's axes (each run its own\n"
     "                      process, with a time limit; resumable), then study.csv, study.md\n"
-    "                      and plots (doc/studies.md)\n"
+    "                      and plots, and prints the comparison table (doc/studies.md)\n"
     "  list                every registry with its parameters, defaults and doc strings\n"
     "  --version           print the version\n"
     "  help [COMMAND]      this text, or a command's (also COMMAND --help)\n"
@@ -78,7 +78,9 @@ const char* commandHelp(const std::string& command) {
     return "usage: contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
            "\n"
            "Runs a scene over the product of a study's axes, each run its own process with a\n"
-           "time limit (resumable), then study.csv, study.md and plots (doc/studies.md).\n";
+           "time limit (resumable), then writes study.csv, study.md and plots and prints the\n"
+           "comparison table and where they are (doc/studies.md). `make run` runs\n"
+           "scenes/studies/quick-comparison.yaml.\n";
   if (command == "list")
     return "usage: contactlab list\n"
            "\n"

@@ -155,11 +155,22 @@ def main():
         if plot.returncode != 0:
             print("contactlab: warning: no plots: " + plot.stderr.strip().splitlines()[-1]
                   if plot.stderr.strip() else "contactlab: warning: no plots", file=sys.stderr)
-        plots = [p for p in plot.stdout.split() if p.endswith(".png")]
+        # One line a plot: its file name, a tab, its caption (what each encoding means).
+        plots = [tuple(line.split("\t", 1)) for line in plot.stdout.splitlines()
+                 if line.split("\t")[0].endswith(".png") and "\t" in line]
     report.write_md(os.path.join(out, "study.md"), study, rows, axes, plots)
     converged = sum(r["status"] == "converged" for r in rows)
-    print(f"contactlab study {study['Name']}: {converged} of {len(rows)} converged; "
-          f"{os.path.join(out, 'study.md')}", flush=True)
+    print(f"\ncontactlab study {study['Name']}: {converged} of {len(rows)} converged\n")
+    print("\n".join(report.terminal_table(rows, axes, bool(study["Cases"]))))
+    print(f"\nstudy.md  {os.path.join(out, 'study.md')}  (sorted table, Pareto front, "
+          "recommendation, plots)")
+    if plots:
+        print(f"plots     {out}/{{{','.join(p for p, _ in plots)}}}")
+    series = [r["folder"] for r in rows if os.path.exists(os.path.join(r["folder"], "result.pvd"))]
+    if series:
+        print(f"ParaView  {os.path.join(out, 'runs', '*', 'result.pvd')}  ({len(series)} "
+              "series, one per run that wrote one)")
+    sys.stdout.flush()
     return 0
 
 

@@ -111,6 +111,20 @@ def read_study(path):
     return s
 
 
+def label(point):
+    """A point of the axes' product as a run's name: 'Type=penalty,Method=fixed-point'."""
+    return ",".join(f"{k.split('/')[-1]}={v}" for k, v in point.items() if v != "")
+
+
+def explicit_case(name, point):
+    """The explicit case a run named `name` at `point` belongs to: '' for a point of the
+    product, the case's own name for a case (crossed ones are named '<case>,<point>')."""
+    own = label(point)
+    if not own:
+        return name
+    return name[:-len(own) - 1] if name.endswith("," + own) else ""
+
+
 def cases(study):
     """[(name, {axis: value}, [--set ...], scene)]: the product of the axes, then the explicit
     cases; with Cross, every case at every point of the product."""
@@ -121,9 +135,6 @@ def cases(study):
         for values in itertools.product(*[v for _, v in axes]):
             point = {k: _value(v) for (k, _), v in zip(axes, values)}
             points.append((point, [f"{k}={v}" for k, v in point.items()]))
-
-    def label(point):
-        return ",".join(f"{k.split('/')[-1]}={v}" for k, v in point.items())
 
     explicit = [(str(c["Name"]), [str(x) for x in c.get("Sets", [])],
                  c.get("Scene", study["Scene"])) for c in study["Cases"]]

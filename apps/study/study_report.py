@@ -1,7 +1,11 @@
 """study.csv and study.md from the runs' metrics: the table sorted by cost at equal accuracy,
-the Pareto front of (wall time, pressure error), and a recommendation computed from the data."""
+the Pareto front of (wall time, pressure error), and a recommendation computed from the data;
+and the compact table `contactlab study` prints on the terminal at the end."""
 import csv
 import math
+import textwrap
+
+import study_file
 
 METRICS = ["status", "reason", "sets", "wall_s", "solver_total_s", "assembly_s", "contact_s",
            "linear_solve_s", "newton", "status_its", "threshold_its", "geometry_its",
@@ -11,6 +15,10 @@ METRICS = ["status", "reason", "sets", "wall_s", "solver_total_s", "assembly_s",
            "pressure_error_l2", "pressure_error_max", "shear_error_l2", "shear_error_max",
            "max_penetration", "force_balance",
            "probe_error", "folder"]
+
+
+# The width the terminal table keeps to; past it, failure reasons move below the table.
+TERMINAL_WIDTH = 100
 
 
 def _num(v):
@@ -81,7 +89,7 @@ def recommendation(study, rows, axes):
                      f"({cost(best):.3g} s, error {accuracy(best):.3g}).")
     elif good and any(_num(accuracy(r)) for r in good):
         best = min((r for r in good if _num(accuracy(r))),
-                   key=lambda r: accuracy(r))
+                   key=lambda r: (accuracy(r), cost(r)))  # of equal errors, the cheapest
         lines.append(f"- **No run reaches an error of {target:g}**; the most accurate is "
                      f"{best['case']} (error {accuracy(best):.3g}, "
                      f"{cost(best):.3g} s).")
@@ -112,6 +120,59 @@ def recommendation(study, rows, axes):
             f"{why}: {len(names)} run(s) ({', '.join(names[:4])}{', …' if len(names) > 4 else ''})"
             for why, names in sorted(reasons.items())) + ".")
     return "\n".join(lines)
+
+
+def axis_name(key):
+    """A scene key path's short name for a column or a legend: its last component, or its
+    parent's when the last only names the choice (Contact/z/Formulation/Type -> Formulation,
+    Algorithm/Method -> Algorithm)."""
+    parts = key.split("/")
+    return parts[-2] if len(parts) > 1 and parts[-1] in ("Type", "Method") else parts[-1]
+
+
+def terminal_table(rows, axes, explicit_cases):
+    """The comparison as plain text, in the study's order: one column per axis (and the case,
+    when the study lists cases), converged or the failure reason, Newton iterations, wall
+    seconds and the errors the reference gives. Returns the lines."""
+    errors = [(key, head, what) for key, head, what in (
+        ("pressure_error_l2", "p err", "contact pressure"),
+        ("shear_error_l2", "τ err", "shear traction")) if any(_num(r.get(key)) for r in rows)]
+    head = [axis_name(a) for a in axes] + (["case"] if explicit_cases else []) + \
+        ["converged", "Newton", "wall s"] + [h for _, h, _ in errors]
+    names = len(axes) + bool(explicit_cases)  # the columns that name a run
+
+    def cells(r, reason):
+        ok = r["status"] == "converged"
+        return [r["axes"].get(a, "") for a in axes] + (
+            [study_file.explicit_case(r["case"], r["axes"])] if explicit_cases else []) + [
+            "yes" if ok else (r["reason"] or r["status"]) if reason else "no",
+            _fmt(r.get("newton")), f"{r['wall_s']:.1f}"] + [
+            _fmt(r.get(key)) if ok else "–" for key, _, _ in errors]
+
+    def layout(reason):
+        table = [head] + [cells(r, reason) for r in rows]
+        widths = [max(len(line[i]) for line in table) for i in range(len(head))]
+        return ["  ".join(c.ljust(w) if i <= names else c.rjust(w)  # numbers to the right
+                          for i, (c, w) in enumerate(zip(line, widths))).rstrip()
+                for line in table], widths
+
+    lines, widths = layout(reason=True)
+    inline = sum(widths) + 2 * (len(widths) - 1) <= TERMINAL_WIDTH
+    if not inline:
+        lines, widths = layout(reason=False)
+    lines.insert(1, "  ".join("-" * w for w in widths))
+    failed = {}
+    for r in rows:
+        if r["status"] != "converged" and not inline:
+            failed.setdefault(r["reason"] or r["status"], []).append(" / ".join(
+                cells(r, False)[:names]))
+    for why, names in failed.items():
+        lines += textwrap.wrap(f"not converged ({why}): {'; '.join(names)}", TERMINAL_WIDTH,
+                               subsequent_indent="  ")
+    if errors:
+        lines.append(", ".join(h for _, h, _ in errors) + ": relative L2 error against the "
+                     "reference of the " + " and ".join(what for _, _, what in errors))
+    return lines
 
 
 def write_md(path, study, rows, axes, plots):
@@ -145,5 +206,7 @@ def write_md(path, study, rows, axes, plots):
             _fmt(r.get("shear_error_l2")), _fmt(r.get("max_penetration")), unknowns]) + " |")
     out += ["", "## Recommendation", "", recommendation(study, rows, axes), ""]
     if plots:
-        out += ["## Plots", ""] + [f"![{p}]({p})" for p in plots] + [""]
+        out += ["## Plots", ""]
+        for name, caption in plots:
+            out += [f"[{name}]({name}): {caption}", "", f"![{caption}]({name})", ""]
     open(path, "w").write("\n".join(out))
