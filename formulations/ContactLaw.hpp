@@ -73,9 +73,12 @@ struct LawOutput {
 // carries no friction. Its multiplier Lambda (a direction scaled by 1 / threshold) would
 // otherwise enter the tangent through a column of size w * threshold only: at a mortar point
 // whose weighted gap is -3e-33 instead of 0, the first Newton update put 4e29 into Lambda
-// (issue 15). The friction force dropped is below mu w c 1e-8 h, about 1e-8 mu E w with the
-// usual c ~ E / h.
-constexpr double kTouchingGap = 1e-8;
+// (issue 15). The cut must sit near the gap's round-off (~1e-16 of the coordinates, times the
+// sums of a mortar row), not above it: its pressure c 1e-12 h grows with the coefficient, and
+// at 1e-8 an augmentation of 1e7 E/h (the extremes study) put the pad's whole contact pressure
+// below it, so the dragged pad slid without friction and "converged". 1e-12 h keeps four
+// decades above round-off and cuts a real pressure only beyond c ~ 1e11 E/h.
+constexpr double kTouchingGap = 1e-12;
 inline bool frictionThresholdIsRoundoff(double threshold, const LawInput& in,
                                         double normalCoefficient) {
   // The point's size: w is a length in 2D (nt = 1) and an area in 3D.

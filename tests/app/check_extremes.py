@@ -7,7 +7,7 @@ stops with a named reason; none crashes, hangs (time limit) or writes a NaN (any
 output); the table says where each method breaks.
 
 usage: check_extremes.py CONTACTLAB STUDIES_DIR WORKDIR"""
-import csv, os, shutil, subprocess, sys
+import csv, json, os, shutil, subprocess, sys
 
 import yaml
 
@@ -54,6 +54,21 @@ for case in ("nu = 0.4999,Method=generalized-newton", "mu = 2,Method=generalized
              "distorted: shear 2,Method=generalized-newton",
              "large sliding: 1 pad length,Method=partial-newton"):
     check(f"{case} converges", case in converged)
+# A converged run of the dragged pad must carry friction: at mu = 0.45 the pad slides at its end
+# (the drag, 0.05 or more, is far beyond the stick cone), so T = mu N. A cut of the friction threshold that
+# grew with the augmentation once let r_n = 1e7 and 1e8 E/h "converge" frictionless (T = 0).
+for row in rows:
+    if row["status"] != "converged" or row["case"].startswith("grazing"):
+        continue
+    contact = json.load(open(os.path.join(row["folder"], "summary.json")))["contact"]
+    if row["case"].startswith("mu = 2"):  # past mu_crit the dragged pad partly sticks: T < mu N
+        mu, sliding = 2.0, False
+    else:
+        mu, sliding = 0.45, True
+    n, t = contact["normal_force"], abs(contact["tangential_force_vector"][0])
+    ratio = t / (mu * n)
+    check(f"{row['case']}: T / (mu N) = {ratio:.4f}",
+          abs(ratio - 1) < 1e-3 if sliding else 0.1 < ratio < 1 + 1e-3)
 md = open(os.path.join(out, "study.md")).read()
 broken = [row for row in rows if row["status"] != "converged"]
 check("study.md says where methods break", not broken or "Where methods break" in md)

@@ -449,6 +449,36 @@ TEST(ContactLaw, RoundoffThresholdOfATouchingPointCarriesNoFriction) {
   }
 }
 
+// The cut is a gap's round-off, not a pressure: with an augmentation of 1e8 E/h (the extremes
+// study's pad: E/h = 20, c = 2e9, tributary length 0.05) a converged point's pressure 0.01 is
+// a real one and keeps its friction; at a cut of 1e-8 h it fell below c 1e-8 h = 1 and the
+// dragged pad slid without friction, "converged".
+TEST(ContactLaw, ALargeCoefficientKeepsTheFrictionOfARealPressure) {
+  for (const char* name : {"lagrange", "augmented-lagrangian"}) {
+    SCOPED_TRACE(name);
+    std::unique_ptr<ContactLaw> law;
+    if (std::string(name) == "lagrange")
+      law = std::make_unique<Lagrange>(2e9, 100.0);
+    else
+      law = std::make_unique<AugmentedLagrangian>(2e9, 100.0);
+    LawInput in;
+    in.weight = 0.05;
+    in.nt = 1;
+    in.mu = 0.45;
+    in.gap = 0.0;
+    in.p = 0.01;
+    in.slip = {0.048, 0.0};  // dragged far beyond the stick cone
+    LawOutput out;
+    law->evaluate(in, out);
+    EXPECT_NEAR(out.threshold, 0.45 * 0.01, 1e-12);
+    EXPECT_EQ(out.status, ContactStatus::Slip);
+    // Lagrange's traction is its multiplier Lambda (0 here); the augmented one projects.
+    if (std::string(name) == "augmented-lagrangian") {
+      EXPECT_NEAR(std::abs(out.tangentialTraction[0]), 0.45 * 0.01, 1e-12);
+    }
+  }
+}
+
 TEST(ContactLaw, ClosedPointUnderCompressionTransmitsThePressure) {
   for (const char* name : {"lagrange", "augmented-lagrangian"}) {
     const auto law = makeLaw(name);
