@@ -65,9 +65,20 @@ find_library(GMSH_LIBRARY gmsh HINTS ${_contactlab_hint_GMSH} ${_contactlab_requ
 find_path(METIS_INCLUDE_DIR metis.h HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
 find_library(METIS_LIBRARY metis HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h HINTS ${_contactlab_hint_MUMPS} ${_contactlab_required})
-find_library(MUMPS_LIBRARY dmumps HINTS ${_contactlab_hint_MUMPS} ${_contactlab_required})
-find_library(MUMPS_COMMON_LIBRARY mumps_common HINTS ${_contactlab_hint_MUMPS}
+# Debian's libmumps-dev orders with PORD only; libmumps-ptscotch-dev (the same MUMPS built with
+# SCOTCH and PT-SCOTCH) is preferred when present: SCOTCH's nested dissection cuts the
+# factorization's flops on 3D meshes (doc/performance.md). Both its libraries must come before
+# the PORD-only ones that Trilinos' Amesos pulls in, so that every MUMPS symbol resolves to one
+# build: linking them directly from contactlab_linear puts them first.
+find_library(MUMPS_LIBRARY NAMES dmumps_ptscotch dmumps HINTS ${_contactlab_hint_MUMPS}
              ${_contactlab_required})
+if(MUMPS_LIBRARY MATCHES "ptscotch")
+  find_library(MUMPS_COMMON_LIBRARY mumps_common_ptscotch HINTS ${_contactlab_hint_MUMPS}
+               ${_contactlab_required})
+else()
+  find_library(MUMPS_COMMON_LIBRARY mumps_common HINTS ${_contactlab_hint_MUMPS}
+               ${_contactlab_required})
+endif()
 
 if(_contactlab_in_config)
   foreach(_contactlab_var GMSH_INCLUDE_DIR GMSH_LIBRARY METIS_INCLUDE_DIR METIS_LIBRARY
@@ -92,5 +103,9 @@ foreach(lib GMSH METIS MUMPS)
     set_target_properties(contactlab::${lib} PROPERTIES
       INTERFACE_INCLUDE_DIRECTORIES "${${lib}_INCLUDE_DIR}"
       INTERFACE_LINK_LIBRARIES "${_libs}")
+    if(lib STREQUAL "MUMPS" AND MUMPS_LIBRARY MATCHES "ptscotch")
+      set_property(TARGET contactlab::MUMPS PROPERTY INTERFACE_COMPILE_DEFINITIONS
+                   CONTACTLAB_MUMPS_HAS_SCOTCH=1)
+    endif()
   endif()
 endforeach()

@@ -20,12 +20,16 @@ class MumpsSolver : public LinearSolver {
   // MUMPS' SYM: 0 = general (LU), 1 = symmetric positive definite (LDL^T without pivoting),
   // 2 = general symmetric (LDL^T with 1x1/2x2 pivots). Symmetric modes read the lower triangle.
   enum class Mode { general = 0, symmetric = 1, symmetricIndefinite = 2 };
-  // MUMPS' ICNTL(7). METIS and SCOTCH are absent from Debian's MUMPS build.
-  enum class Ordering { amd = 0, amf = 2, pord = 4, qamd = 6 };
+  // MUMPS' ICNTL(7). SCOTCH comes with Debian's libmumps-ptscotch build (preferred by the
+  // build when installed), METIS with neither. automatic: SCOTCH when built in and the matrix
+  // has 5 000 unknowns or more, else PORD.
+  enum class Ordering { automatic = -1, amd = 0, amf = 2, scotch = 3, pord = 4, qamd = 6 };
+  // Whether this build's MUMPS has SCOTCH (libmumps-ptscotch).
+  static bool hasScotch();
 
   struct Options {
     Mode mode = Mode::general;
-    Ordering ordering = Ordering::pord;
+    Ordering ordering = Ordering::automatic;
     int memoryRelaxation = 20;       // ICNTL(14), percent over the analysis' estimate
     bool determinant = false;        // ICNTL(33) at each factorization
     bool conditionEstimate = false;  // ICNTL(11) = 1 at each solve (costs more than the solve)
@@ -68,6 +72,9 @@ class MumpsSolver : public LinearSolver {
   std::optional<long> negativePivots() const;
   // ICNTL(14) currently used (raised once after a workspace-too-small error).
   int memoryRelaxation() const;
+  // The ordering MUMPS' last analysis used (INFOG(7); it falls back silently when the one asked
+  // for is not built in), or nullopt before any analysis.
+  std::optional<Ordering> orderingUsed() const;
   const LinearSolverStats& stats() const override { return stats_; }
 
  private:

@@ -96,6 +96,38 @@ TEST(MumpsSolver, ReusesTheAnalysisWhenOnlyValuesChange) {
   EXPECT_LT(test::relativeDifference(x2, *x1), 1e-12);
 }
 
+// MUMPS falls back to another ordering without a word when the one asked for is not built in
+// (Debian's libmumps-dev has PORD only): the automatic choice must be the one INFOG(7) reports,
+// SCOTCH with libmumps-ptscotch from 5 000 unknowns (here 18^3), and every ordering must solve
+// the same system.
+TEST(MumpsSolver, TheAutomaticOrderingIsTheOneMumpsUses) {
+  using Ordering = MumpsSolver::Ordering;
+  auto A = test::laplacian3D(18, Layout::scattered, world());
+  const auto b = test::rightHandSide(*A, 1);
+  MumpsSolver::Options automatic = optionsWith(Mode::symmetric);
+  MumpsSolver solver(automatic, world());
+  EXPECT_FALSE(solver.orderingUsed().has_value());
+  const auto x = solveWith(solver, A, *b);
+  ASSERT_TRUE(solver.orderingUsed().has_value());
+  EXPECT_EQ(*solver.orderingUsed(), MumpsSolver::hasScotch() ? Ordering::scotch : Ordering::pord);
+  for (Ordering o : {Ordering::pord, Ordering::amd, Ordering::scotch}) {
+    if (o == Ordering::scotch && !MumpsSolver::hasScotch()) continue;
+    MumpsSolver::Options options = automatic;
+    options.ordering = o;
+    MumpsSolver other(options, world());
+    const auto y = solveWith(other, A, *b);
+    EXPECT_EQ(*other.orderingUsed(), o);
+    EXPECT_LT(test::relativeDifference(*y, *x), 1e-12);
+  }
+  // SCOTCH orders with threads and a clock seed unless told otherwise: the same matrix must get
+  // the same ordering, so the same solution to the last bit, in every solver and every run.
+  if (MumpsSolver::hasScotch()) {
+    MumpsSolver again(automatic, world());
+    const auto y = solveWith(again, A, *b);
+    EXPECT_EQ(test::relativeDifference(*y, *x), 0.0);
+  }
+}
+
 TEST(MumpsSolver, AnalysesAgainWhenThePatternChangedEvenIfNotTold) {
   MumpsSolver solver(optionsWith(Mode::general), world());
   solver.setMatrix(test::laplacian2D(10, 10, Layout::contiguous, world()), true);
