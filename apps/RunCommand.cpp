@@ -5,15 +5,14 @@
 #include "apps/DefaultScene.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
+#include "base/InputError.hpp"
 #include "core/io/CsvWriter.hpp"
-#include "core/io/InputError.hpp"
 #include "core/io/JsonWriter.hpp"
 #include "core/io/OutputFolder.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
-#include "linear/MumpsSolver.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -99,6 +98,13 @@ bool tangentIsSymmetric(const SceneModel& sm, const Problem& problem) {
   return true;
 }
 
+// Whether some contact zone has friction (mu > 0): the uniqueness check has something to check.
+bool hasFriction(const SceneModel& sm) {
+  for (const auto& zone : sm.contact)
+    if (zone.friction > 0) return true;
+  return false;
+}
+
 // MUMPS' Mode 'automatic' (the default): LDL^T with 2x2 pivots (SYM = 2) on a symmetric
 // tangent, about 1.8x faster than LU on a 3D Hertz model of 125 571 dofs (doc/performance.md),
 // LU otherwise. Written into the scene, so summary.json reports the mode used.
@@ -120,12 +126,9 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
                             double t, int convergedSteps, const Teuchos::RCP<const Comm>& comm) {
   const bool root = comm->getRank() == 0;
   std::string why;
-  double largestMu = 0;
-  for (const auto& zone : sm.contact)
-    largestMu = std::max(largestMu, zone.friction);
   if (!contact)
     why = "the scene has no contact";
-  else if (!(largestMu > 0))
+  else if (!hasFriction(sm))
     why = "no contact zone has friction (mu = 0)";
   else if (convergedSteps == 0)
     why = "no load step converged";
@@ -133,12 +136,10 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
     if (root) std::cout << "contactlab: critical-mu: not computed: " << why << "\n";
     return JsonValue::object().set("computed", false).set("reason", why);
   }
-  // A MUMPS of its own, with determinants (their signs decide local uniqueness).
-  MumpsSolver::Options mumps;
-  mumps.determinant = true;
-  MumpsSolver solver(mumps, comm);
+  // The scene's solver with determinants (their signs decide local uniqueness).
+  const std::unique_ptr<LinearSolver> solver = buildUniquenessCheckSolver(sm, comm);
   const auto start = std::chrono::steady_clock::now();
-  const UniquenessCheck c = checkUniqueness(*contact, *contact, solver, x, t,
+  const UniquenessCheck c = checkUniqueness(*contact, *contact, *solver, x, t,
                                             sm.criticalMuTolerance, sm.criticalMuMaxPatterns);
   JsonValue zones = JsonValue::object();
   for (const auto& zone : sm.contact)
@@ -235,6 +236,11 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);
     checkSymmetry(*problem, *solver, sm.scene.path);
+    // The uniqueness checks need the solver's determinants: a solver without them is refused
+    // now, not after the run.
+    if (contact && sm.criticalMuCheck) requireDeterminantSolver(sm, "Output/Critical Mu Check");
+    if (contact && options.criticalMu && hasFriction(sm))
+      requireDeterminantSolver(sm, "critical-mu");
     if (options.validateOnly) {
       if (root)
         std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
@@ -292,13 +298,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   for (const char* c :
        {"condition_estimate", "assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
     stepColumns.push_back(c);
-  // Output/Critical Mu Check: the uniqueness check after each converged step (its own MUMPS,
-  // with determinants); the smallest mu_crit over the zones goes to steps.csv.
-  std::unique_ptr<MumpsSolver> checkSolver;
+  // Output/Critical Mu Check: the uniqueness check after each converged step (a second instance
+  // of the scene's solver, with determinants); the smallest mu_crit over the zones goes to
+  // steps.csv.
+  std::unique_ptr<LinearSolver> checkSolver;
   if (sm.criticalMuCheck && contact) {
-    MumpsSolver::Options o;
-    o.determinant = true;
-    checkSolver = std::make_unique<MumpsSolver>(o, comm);
+    checkSolver = buildUniquenessCheckSolver(sm, comm);
     stepColumns.push_back("critical_mu");
   }
   int possiblyNonUnique = 0;
