@@ -417,6 +417,12 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   return sm;
 }
 
+bool hasFriction(const SceneModel& sm) {
+  for (const auto& zone : sm.contact)
+    if (zone.friction > 0) return true;
+  return false;
+}
+
 std::unique_ptr<LinearSolver> buildLinearSolver(const ParameterList& scene,
                                                 const Teuchos::RCP<const Comm>& comm) {
   const ParameterList& section = scene.sublist("Linear Solver");

@@ -42,6 +42,9 @@ struct SceneModel {
 // Throws InputError (same message on every rank) for anything wrong in the input.
 SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm);
 
+// Whether some contact zone has friction (mu > 0): the uniqueness checks have something to check.
+bool hasFriction(const SceneModel& sm);
+
 // The scene's linear solver (collective).
 std::unique_ptr<LinearSolver> buildLinearSolver(const Teuchos::ParameterList& scene,
                                                 const Teuchos::RCP<const Comm>& comm);
