@@ -1,7 +1,7 @@
 #pragma once
 // `contactlab run`: solves a scene and writes the results contract (DESIGN.md §5):
 // result.pvd + .vtu/.pvtu per converged step, steps.csv, summary.json.
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "apps/SceneModel.hpp"
 
 #include "apps/SceneSchema.hpp"
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
@@ -430,11 +430,32 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   return sm;
 }
 
+bool hasFriction(const SceneModel& sm) {
+  for (const auto& zone : sm.contact)
+    if (zone.friction > 0) return true;
+  return false;
+}
+
 std::unique_ptr<LinearSolver> buildLinearSolver(const ParameterList& scene,
                                                 const Teuchos::RCP<const Comm>& comm) {
   const ParameterList& section = scene.sublist("Linear Solver");
   const std::string type = section.get<std::string>("Type");
   return linearSolverRegistry().get(type).build(section.sublist(type), comm);
+}
+
+void requireDeterminantSolver(const SceneModel& sm, const std::string& what) {
+  const std::string type = sm.scene.params->sublist("Linear Solver").get<std::string>("Type");
+  if (!computesDeterminant(type))
+    throw InputError(
+        sm.scene.path + ": " + what + " reads the signs of determinants, and Linear Solver '" +
+        type + "' does not compute one (solvers that do: " + solversComputingDeterminant() + ")");
+}
+
+std::unique_ptr<LinearSolver> buildUniquenessCheckSolver(const SceneModel& sm,
+                                                         const Teuchos::RCP<const Comm>& comm) {
+  const ParameterList& section = sm.scene.params->sublist("Linear Solver");
+  const std::string type = section.get<std::string>("Type");
+  return buildDeterminantSolver(type, section.sublist(type), comm);
 }
 
 }  // namespace contactlab

@@ -44,8 +44,22 @@ struct SceneModel {
 // Throws InputError (same message on every rank) for anything wrong in the input.
 SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm);
 
+// Whether some contact zone has friction (mu > 0): the uniqueness checks have something to check.
+bool hasFriction(const SceneModel& sm);
+
 // The scene's linear solver (collective).
 std::unique_ptr<LinearSolver> buildLinearSolver(const Teuchos::ParameterList& scene,
                                                 const Teuchos::RCP<const Comm>& comm);
+
+// The scene's linear solver with its determinant computed, for the uniqueness checks
+// (critical-mu, Output/Critical Mu Check): they use the user's solver and settings, so their
+// factorizations match the run's. Collective. Throws InputError when the scene's solver cannot
+// compute a determinant; call requireDeterminantSolver before solving.
+std::unique_ptr<LinearSolver> buildUniquenessCheckSolver(const SceneModel& sm,
+                                                         const Teuchos::RCP<const Comm>& comm);
+
+// Throws InputError, before anything runs, when the scene's linear solver cannot compute the
+// determinants that `what` needs.
+void requireDeterminantSolver(const SceneModel& sm, const std::string& what);
 
 }  // namespace contactlab

@@ -1,7 +1,7 @@
 #include "apps/SceneSchema.hpp"
 
 #include "algorithms/StaticSolver.hpp"
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"

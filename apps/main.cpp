@@ -12,7 +12,7 @@
 
 #include "apps/RunCommand.hpp"
 #include "apps/SceneSchema.hpp"
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/io/Interruption.hpp"
 
 #include <Tpetra_Core.hpp>

@@ -3,7 +3,7 @@
 #   target_link_libraries(app PRIVATE contactlab::core contactlab::linear)
 # Layout under the prefix:
 #   lib/libcontactlab_{core,formulations,linear,algorithms}.so, bin/contactlab
-#   include/contactlab/{core,formulations,linear,algorithms}/**.hpp   (#include "core/mesh/Mesh.hpp")
+#   include/contactlab/{base,core,formulations,linear,algorithms}/**.hpp   (#include "core/mesh/Mesh.hpp")
 #   lib/cmake/contactlab/contactlab{Config,ConfigVersion,Targets*}.cmake
 #   lib/cmake/contactlab/ContactlabDependencies.cmake    (shared with the build, see there)
 # tests/downstream checks all of it from ctest.
@@ -13,7 +13,7 @@ set(CONTACTLAB_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/contactlab" CACHE
   "Where contactlabConfig.cmake is installed (relative to the prefix)")
 mark_as_advanced(CONTACTLAB_INSTALL_CMAKEDIR)
 
-set(_contactlab_install_targets contactlab_core contactlab_formulations contactlab_linear
+set(_contactlab_install_targets contactlab_base contactlab_core contactlab_formulations contactlab_linear
   contactlab_algorithms)
 if(TARGET contactlab)
   list(APPEND _contactlab_install_targets contactlab)
@@ -31,6 +31,9 @@ if(NOT IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" AND NOT IS_ABSOLUTE "${CMAKE_INSTAL
   endif()
   foreach(t IN LISTS _contactlab_install_targets)
     get_target_property(_type ${t} TYPE)
+    if(_type STREQUAL "INTERFACE_LIBRARY")
+      continue()  # contactlab_base: headers only, nothing to load
+    endif()
     if(_type STREQUAL "EXECUTABLE")
       set(_dest "${CMAKE_INSTALL_BINDIR}")
     else()
@@ -52,6 +55,7 @@ if(NOT IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" AND NOT IS_ABSOLUTE "${CMAKE_INSTAL
 endif()
 
 # The public headers are C++17 (std::optional, ...): consumers of the exported targets get it.
+target_compile_features(contactlab_base INTERFACE cxx_std_17)
 target_compile_features(contactlab_core INTERFACE cxx_std_17)
 
 install(TARGETS ${_contactlab_install_targets}
@@ -65,7 +69,7 @@ install(TARGETS ${_contactlab_install_targets}
 # include/contactlab of the targets. install(DIRECTORY) globs at install time, so headers
 # added later need no re-configure. Headers generated into the build tree (the targets also
 # have ${PROJECT_BINARY_DIR} as include directory) are installed the same way.
-foreach(dir core formulations linear algorithms)
+foreach(dir base core formulations linear algorithms)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}/"
     DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/contactlab/${dir}"
     FILES_MATCHING PATTERN "*.hpp")

@@ -10,24 +10,26 @@
 // term times the point's weight. Separated points (p = 0, g > 0) get p^ < 0, S_R = 0; closed
 // points under compression (g = 0, p > 0) get S_R = 1. The Jacobian is the generalized one:
 // exact on each status piece, the piece chosen by the current statuses.
-#include "formulations/ContactLaw.hpp"
+#include "formulations/MultiplierLaw.hpp"
 
 namespace contactlab {
 
-class AugmentedLagrangian : public ContactLaw {
+class AugmentedLagrangian : public MultiplierLaw {
  public:
   // rn, rt > 0: augmentation coefficients (pressure per length; inverse length).
   AugmentedLagrangian(double rn, double rt);
   std::string name() const override { return "augmented-lagrangian"; }
-  bool hasMultipliers() const override { return true; }
-  void evaluate(const LawInput& in, LawOutput& out) const override;
-  double normalCoefficient() const override { return rn_; }
   // Frictionless: J(g, p) = J(p, g) = -w SR on every piece. The threshold mu p^ couples the
   // friction rows to the normal ones one way only.
   bool symmetricJacobian(int nt) const override { return nt == 0; }
 
  private:
-  const double rn_, rt_;
+  void writeNormalRow(const LawInput& in, const PointState& s, LawOutput& out) const override;
+  // Every friction term carries S_R: an open point's rows are zero without a branch of its own.
+  bool openPointCarriesNoFriction() const override { return false; }
+  void writeFrictionRow(const LawInput& in, const PointState& s, int k,
+                        LawOutput& out) const override;
+  double transmittedThreshold(const PointState& s) const override { return s.SR * s.tau; }
 };
 
 }  // namespace contactlab

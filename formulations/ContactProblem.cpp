@@ -1,11 +1,11 @@
 #include "formulations/ContactProblem.hpp"
 
+#include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/contact/SurfacePressure.hpp"
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
-#include "core/io/InputError.hpp"
 #include "formulations/PrescribedSlip.hpp"
 
 #include <Teuchos_CommHelpers.hpp>

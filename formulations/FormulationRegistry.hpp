@@ -1,7 +1,7 @@
 #pragma once
 // The formulation axis: `penalty`, `lagrange`, `augmented-lagrangian`. A contact zone picks one
 // with `Formulation: {Type: name, name: {parameters}}`.
-#include "core/io/Registry.hpp"
+#include "base/Registry.hpp"
 #include "formulations/ContactLaw.hpp"
 
 namespace contactlab {

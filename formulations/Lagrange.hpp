@@ -8,22 +8,24 @@
 //   R_Lam = Lambda - S_R P_B(Lambda + c_t v)   (stick: v = 0; slip: Lambda = slip direction)
 // times the point's weight. c_n, c_t only pick the active set: the solution does not depend on
 // them, unlike the augmented Lagrangian's equilibrium, which carries p^ = p - r_n g.
-#include "formulations/ContactLaw.hpp"
+#include "formulations/MultiplierLaw.hpp"
 
 namespace contactlab {
 
-class Lagrange : public ContactLaw {
+class Lagrange : public MultiplierLaw {
  public:
   Lagrange(double cn, double ct);
   std::string name() const override { return "lagrange"; }
-  bool hasMultipliers() const override { return true; }
-  void evaluate(const LawInput& in, LawOutput& out) const override;
-  double normalCoefficient() const override { return cn_; }
   // J(g, p) = -w always, J(p, g) = -w only on a closed point: not symmetric at an open one.
   bool symmetricJacobian(int /*nt*/) const override { return false; }
 
  private:
-  const double cn_, ct_;
+  void writeNormalRow(const LawInput& in, const PointState& s, LawOutput& out) const override;
+  // tau = mu (p - c_n g) is not multiplied by S_R: an open point must not transmit it.
+  bool openPointCarriesNoFriction() const override { return true; }
+  void writeFrictionRow(const LawInput& in, const PointState& s, int k,
+                        LawOutput& out) const override;
+  double transmittedThreshold(const PointState& s) const override { return s.tau; }
 };
 
 }  // namespace contactlab

@@ -5,7 +5,7 @@
 // unchanged. Failures throw LinearSolverError with a sentence that names the cause.
 // Every method is collective over the communicator the solver was built with (and A's, which
 // must be the same): all ranks call them in the same order, and all ranks throw together.
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 

@@ -39,4 +39,28 @@ void registerLinearSolvers() {
                 }});
 }
 
+bool computesDeterminant(const std::string& type) {
+  const auto valid = linearSolverRegistry().get(type).validParameters();
+  return valid->isParameter("Determinant") && valid->isType<bool>("Determinant");
+}
+
+std::string solversComputingDeterminant() {
+  std::string names;
+  for (const std::string& name : linearSolverRegistry().names())
+    if (computesDeterminant(name)) names += (names.empty() ? "" : ", ") + name;
+  return names;
+}
+
+std::unique_ptr<LinearSolver> buildDeterminantSolver(const std::string& type,
+                                                     const Teuchos::ParameterList& params,
+                                                     const Teuchos::RCP<const Comm>& comm) {
+  if (!computesDeterminant(type))
+    throw LinearSolverError("linear solver '" + type +
+                            "' does not compute a determinant (solvers that do: " +
+                            solversComputingDeterminant() + ")");
+  Teuchos::ParameterList withDeterminant(params);
+  withDeterminant.set("Determinant", true);
+  return linearSolverRegistry().get(type).build(withDeterminant, comm);
+}
+
 }  // namespace contactlab

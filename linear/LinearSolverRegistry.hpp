@@ -1,8 +1,11 @@
 #pragma once
 // The linear solver axis: `Type: mumps` (the default in scenes), `klu2` or `belos`, plus a
 // sibling sublist named after the type with that solver's parameters.
-#include "core/io/Registry.hpp"
+#include "base/Registry.hpp"
 #include "linear/LinearSolver.hpp"
+
+#include <memory>
+#include <string>
 
 namespace contactlab {
 
@@ -12,5 +15,20 @@ LinearSolverRegistry& linearSolverRegistry();
 // Registers mumps, klu2 and belos (idempotent). Builders validate their list again and throw
 // LinearSolverError on an invalid one.
 void registerLinearSolvers();
+
+// Whether solver `type` can compute its matrix's determinant. The convention: such a solver
+// declares a bool parameter `Determinant` (default false) in its valid parameters, so the
+// registry, not a list of names, says which ones can.
+bool computesDeterminant(const std::string& type);
+
+// The solvers of the registry that can compute a determinant, comma-separated.
+std::string solversComputingDeterminant();
+
+// Solver `type` built from its parameters `params` with `Determinant: true`, for the
+// uniqueness checks, which read the signs of the determinants. Throws LinearSolverError when
+// `type` cannot compute one (computesDeterminant).
+std::unique_ptr<LinearSolver> buildDeterminantSolver(const std::string& type,
+                                                     const Teuchos::ParameterList& params,
+                                                     const Teuchos::RCP<const Comm>& comm);
 
 }  // namespace contactlab

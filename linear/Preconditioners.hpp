@@ -1,7 +1,7 @@
 #pragma once
 // Preconditioners of BelosSolver, each built in its own translation unit so that only that file
 // pays for Ifpack2's or MueLu's headers (MueLu alone costs ~23 s of compilation).
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_Operator.hpp>

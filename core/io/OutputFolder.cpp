@@ -1,6 +1,6 @@
 #include "core/io/OutputFolder.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 
 #include <cerrno>
 #include <cstdio>

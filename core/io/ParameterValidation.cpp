@@ -1,6 +1,6 @@
 #include "core/io/ParameterValidation.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_StrUtils.hpp>

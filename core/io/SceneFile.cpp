@@ -1,6 +1,6 @@
 #include "core/io/SceneFile.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/io/ParameterValidation.hpp"
 
 #include <Teuchos_YamlParameterListHelpers.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // The material axis: `Type: linear-elastic` plus a sibling `linear-elastic:` sublist.
-#include "core/io/Registry.hpp"
+#include "base/Registry.hpp"
 #include "core/materials/Material.hpp"
 
 namespace contactlab {

@@ -1,6 +1,6 @@
 #include "core/mesh/MeshSourceRegistry.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/mesh/ElementEstimate.hpp"
 #include "core/mesh/GmshReader.hpp"
 #include "core/mesh/MeshGenerators.hpp"

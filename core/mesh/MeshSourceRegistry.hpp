@@ -2,7 +2,7 @@
 // The mesh axis: `Mesh: {Type: file | rectangle | box | half-disc | half-sphere |
 // stacked-blocks-2d | stacked-blocks-3d, <type>: {...}}`. Builders take the type's validated
 // sublist and the scene file's directory (relative mesh paths are relative to the scene).
-#include "core/io/Registry.hpp"
+#include "base/Registry.hpp"
 #include "core/mesh/Mesh.hpp"
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "core/problem/CollectiveError.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 

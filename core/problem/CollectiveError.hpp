@@ -2,7 +2,7 @@
 // An error found on some ranks must stop every rank, or the others wait forever in the next
 // collective call. agreeOnError is collective: when any rank passes a non-empty message, every
 // rank throws InputError with the message of the lowest such rank.
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // the contact statuses and friction thresholds, the per-point state that cycling detection
 // watches, and the per-point treatments of cycling. A NonlinearSystem without contact has none
 // of this; drivers take a ContactControls pointer that may be null.
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <array>
 #include <cstddef>

@@ -3,9 +3,9 @@
 // Each node is owned by the lowest rank among the ranks of its elements; nodes are renumbered
 // so that every rank owns a contiguous range (global dof = node * dim + component). The owned
 // map holds those dofs; the overlap map adds the ghost dofs touched by the rank's elements.
+#include "base/LinearAlgebra.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/ElementPartition.hpp"
-#include "core/problem/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 

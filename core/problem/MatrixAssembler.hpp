@@ -7,8 +7,8 @@
 //
 // Dofs are those of DofMap: overlap LIDs node * dim + component, owned nodes first, so an
 // owned overlap LID is also the matrix's local row.
+#include "base/LinearAlgebra.hpp"
 #include "core/problem/DofMap.hpp"
-#include "core/problem/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 

@@ -6,7 +6,7 @@
 // The seam for the algorithms: the geometry of contact (pairing, normals) is frozen between two
 // calls of updateGeometry, so Newton sees a residual whose tangent is exact; a driver decides
 // when to update it (before each step and after each converged Newton loop: a fixed point).
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 

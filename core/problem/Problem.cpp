@@ -1,9 +1,9 @@
 #include "core/problem/Problem.hpp"
 
+#include "base/InputError.hpp"
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
-#include "core/io/InputError.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/ElementKernel.hpp"
 #include "core/problem/ElementUpdateError.hpp"

@@ -10,9 +10,9 @@
 // as the reaction of its condition. Springs to ground add k u to the residual and k to the
 // diagonal of the tangent at their nodes (NodalAssembler.hpp). External forces depend on u only
 // through follower pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
+#include "base/LinearAlgebra.hpp"
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/DofMap.hpp"
-#include "core/problem/LinearAlgebra.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SolidModel.hpp"
 

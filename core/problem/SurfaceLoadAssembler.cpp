@@ -1,6 +1,6 @@
 #include "core/problem/SurfaceLoadAssembler.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/SurfaceLoadKernel.hpp"
 

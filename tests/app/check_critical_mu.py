@@ -49,4 +49,13 @@ assert check == {"steps_checked": len(rows), "possibly_non_unique": 0}, check
 frictionless = run("hertz-2d", 1)
 print("hertz-2d:", frictionless)
 assert frictionless["computed"] is False and "friction" in frictionless["reason"]
+
+# The check uses the scene's own linear solver: one without determinants is refused before the
+# run, with a sentence that names the solvers that have them.
+out = os.path.join(work, "pad-2d-belos")
+r = subprocess.run([exe, "critical-mu", os.path.join(scenes, "pad-2d.yaml"), "--out", out, "--set",
+                    "Linear Solver/Type=belos"], capture_output=True, text=True, timeout=300)
+assert r.returncode == 2, r.stdout + r.stderr
+assert "Linear Solver 'belos'" in r.stderr and "mumps" in r.stderr, r.stderr
+assert not os.path.exists(os.path.join(out, "summary.json")), "refused runs write nothing"
 print("ok")

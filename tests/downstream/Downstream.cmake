@@ -29,14 +29,14 @@ if(STEP STREQUAL "install")
       "${_cmakedir}/ContactlabDependencies.cmake"
       "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/core/mesh/Mesh.hpp"
       "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/core/mesh/ElementType.hpp"
-      "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/core/problem/LinearAlgebra.hpp"
+      "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/base/LinearAlgebra.hpp"
       "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/linear/LinearSolver.hpp")
     if(NOT EXISTS "${f}")
       message(FATAL_ERROR "not installed: ${f}")
     endif()
   endforeach()
   # Every header of the modules is installed.
-  foreach(dir core formulations linear algorithms)
+  foreach(dir base core formulations linear algorithms)
     file(GLOB_RECURSE _headers RELATIVE "${CONTACTLAB_SOURCE_DIR}" "${CONTACTLAB_SOURCE_DIR}/${dir}/*.hpp")
     foreach(h IN LISTS _headers)
       if(NOT EXISTS "${PREFIX}/${INSTALL_INCLUDEDIR}/contactlab/${h}")

@@ -7,7 +7,7 @@
 // (default 100 000); bench/fuzz.sh runs 10^6 and records the counts in doc/verification.md.
 #include "algorithms/StaticSolver.hpp"
 #include "apps/SceneSchema.hpp"
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 #include "core/io/SceneFile.hpp"
 
 #include <chrono>

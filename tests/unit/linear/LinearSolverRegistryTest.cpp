@@ -18,6 +18,17 @@ TEST(LinearSolverRegistry, HasMumpsKlu2AndBelosInThatOrder) {
   EXPECT_EQ(linearSolverRegistry().names(), (std::vector<std::string>{"mumps", "klu2", "belos"}));
 }
 
+// The uniqueness checks ask the registry, not a list of names, which solver has determinants.
+TEST(LinearSolverRegistry, OnlyMumpsComputesDeterminants) {
+  registerLinearSolvers();
+  EXPECT_TRUE(computesDeterminant("mumps"));
+  EXPECT_FALSE(computesDeterminant("klu2"));
+  EXPECT_FALSE(computesDeterminant("belos"));
+  EXPECT_EQ(solversComputingDeterminant(), "mumps");
+  Teuchos::ParameterList belos;
+  EXPECT_THROW(buildDeterminantSolver("belos", belos, world()), LinearSolverError);
+}
+
 TEST(LinearSolverRegistry, UnknownNameErrorListsTheValidNames) {
   registerLinearSolvers();
   try {

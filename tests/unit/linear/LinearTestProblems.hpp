@@ -3,7 +3,7 @@
 // row map or a scattered one (rows dealt round-robin to the ranks and listed in decreasing order,
 // so the map is non-contiguous even on one rank). The matrix entry (i, j) is the same whatever
 // the layout: solutions compare by global id.
-#include "core/problem/LinearAlgebra.hpp"
+#include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>
 

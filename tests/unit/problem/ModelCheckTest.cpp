@@ -1,7 +1,7 @@
 // The problem refuses a broken model before anything runs, with one sentence naming the culprit.
 #include "ProblemTestSupport.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // leaves the residual static.
 #include "ProblemTestSupport.hpp"
 
-#include "core/io/InputError.hpp"
+#include "base/InputError.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>

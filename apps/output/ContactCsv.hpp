@@ -1,0 +1,25 @@
+#pragma once
+// contact.csv (DESIGN.md §5): one row per contact point of the last converged step, with its
+// coordinates, gap (empty where the point found no master), pressure, tangential traction,
+// slip and status. Rewritten after each converged step (atomically, by rank 0).
+#include "formulations/ContactProblem.hpp"
+#include "formulations/ContactZone.hpp"
+
+#include <string>
+#include <vector>
+
+namespace contactlab {
+
+class ContactCsv {
+ public:
+  explicit ContactCsv(std::string path);
+
+  // The points of `contact` in its present state; call on rank 0 only (the results are
+  // gathered there).
+  void write(const ContactProblem& contact, const std::vector<ContactZone>& zones) const;
+
+ private:
+  const std::string path_;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,77 @@
+#include "apps/output/StepsCsv.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace contactlab {
+namespace {
+
+std::vector<std::string> stepColumns(bool criticalMuColumn) {
+  std::vector<std::string> columns{"step",
+                                   "time",
+                                   "cuts",
+                                   "newton_iterations",
+                                   "status_iterations",
+                                   "threshold_iterations",
+                                   "geometry_iterations",
+                                   "linear_solves",
+                                   "residual",
+                                   "contact_points",
+                                   "stick_points",
+                                   "slip_points",
+                                   "cycling_events"};
+  for (int k = 1; k < kCyclingKinds; ++k)
+    columns.push_back(std::string("cycling_") + cyclingKindName(static_cast<CyclingKind>(k)));
+  for (const char* c :
+       {"condition_estimate", "assembly_s", "pairing_s", "contact_s", "linear_solve_s"})
+    columns.push_back(c);
+  if (criticalMuColumn) columns.push_back("critical_mu");
+  return columns;
+}
+
+}  // namespace
+
+StepsCsv::StepsCsv(std::string path, bool criticalMuColumn)
+    : path_(std::move(path)), table_(stepColumns(criticalMuColumn)) {}
+
+void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
+                       std::optional<double> condition, double cumulatedPairingSeconds,
+                       double cumulatedContactSeconds,
+                       const std::optional<std::string>& criticalMu) {
+  const double pairing = cumulatedPairingSeconds - lastPairingSeconds_;
+  const double contactTerms = cumulatedContactSeconds - lastContactSeconds_;
+  lastPairingSeconds_ = cumulatedPairingSeconds;
+  lastContactSeconds_ = cumulatedContactSeconds;
+  int events = 0;
+  for (int k = 1; k < kCyclingKinds; ++k)
+    events += s.cycling[k];
+  using F = CsvWriter;
+  std::vector<std::string> row{F::format(s.step),
+                               F::format(s.time),
+                               F::format(s.cuts),
+                               F::format(s.iterations),
+                               F::format(s.statusIterations),
+                               F::format(s.thresholdIterations),
+                               F::format(s.geometryIterations),
+                               F::format(s.iterations),
+                               F::format(s.residual),
+                               F::format(cr.contact),
+                               F::format(cr.stick),
+                               F::format(cr.slip),
+                               F::format(events)};
+  for (int k = 1; k < kCyclingKinds; ++k)
+    row.push_back(F::format(s.cycling[k]));
+  row.push_back(condition ? F::format(*condition) : std::string());
+  if (condition) maxCondition_ = std::max(maxCondition_, *condition);
+  for (double v : {s.seconds.assembly - contactTerms, pairing, contactTerms, s.seconds.linearSolve})
+    row.push_back(F::format(v));
+  if (criticalMu) row.push_back(*criticalMu);
+  table_.addFormattedRow(std::move(row));
+}
+
+void StepsCsv::write() const {
+  table_.write(path_);
+}
+
+}  // namespace contactlab

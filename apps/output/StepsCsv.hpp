@@ -1,0 +1,42 @@
+#pragma once
+// steps.csv (DESIGN.md §5): one row per converged load step with the iterations of each loop,
+// the residual, the contact/stick/slip counts, the cycling events by kind, the linear solver's
+// condition estimate, the seconds per phase and, with Output/Critical Mu Check, that step's
+// critical mu. Rewritten whole after each step (atomically, by rank 0), so a crash leaves the
+// rows of every converged step.
+#include "algorithms/StaticSolver.hpp"
+#include "core/io/CsvWriter.hpp"
+#include "formulations/ContactProblem.hpp"
+
+#include <optional>
+#include <string>
+
+namespace contactlab {
+
+class StepsCsv {
+ public:
+  // criticalMuColumn: the run checks uniqueness after each step (Output/Critical Mu Check).
+  StepsCsv(std::string path, bool criticalMuColumn);
+
+  // One converged step. cumulatedPairingSeconds and cumulatedContactSeconds are the contact
+  // problem's timers since the start (0 without contact): the row gets this step's share, and
+  // the contact terms are taken out of the assembly time, which includes them.
+  // criticalMu: the cell of the critical mu column (given exactly when it exists).
+  void addStep(const StepReport& step, const ContactResultants& resultants,
+               std::optional<double> conditionEstimate, double cumulatedPairingSeconds,
+               double cumulatedContactSeconds, const std::optional<std::string>& criticalMu);
+
+  // Writes the file; call on rank 0 only.
+  void write() const;
+
+  // The largest condition estimate of the rows, < 0 when the solver gave none.
+  double maxConditionEstimate() const { return maxCondition_; }
+
+ private:
+  const std::string path_;
+  CsvWriter table_;
+  double lastPairingSeconds_ = 0, lastContactSeconds_ = 0;
+  double maxCondition_ = -1;
+};
+
+}  // namespace contactlab

@@ -1,0 +1,88 @@
+// StepsCsv: the columns of steps.csv, each step's share of the cumulated contact timers, and
+// the largest condition estimate for the summary.
+#include "apps/output/StepsCsv.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace contactlab {
+namespace {
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::string column(const std::vector<std::vector<std::string>>& rows, int row,
+                   const std::string& name) {
+  for (std::size_t c = 0; c < rows[0].size(); ++c)
+    if (rows[0][c] == name) return rows[row][c];
+  ADD_FAILURE() << "no column " << name;
+  return {};
+}
+
+std::string scratch(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("contactlab-" + std::to_string(::getpid()) + "-" + name))
+      .string();
+}
+
+TEST(StepsCsv, CriticalMuColumnOnlyWhenTheCheckRuns) {
+  const std::string with = scratch("with.csv"), without = scratch("without.csv");
+  StepsCsv a(with, true), b(without, false);
+  StepReport s;
+  s.step = 1;
+  a.addStep(s, {}, std::nullopt, 0, 0, std::string("inf"));
+  b.addStep(s, {}, std::nullopt, 0, 0, std::nullopt);
+  a.write();
+  b.write();
+  const auto ra = readCsv(with), rb = readCsv(without);
+  EXPECT_EQ(ra[0].back(), "critical_mu");
+  EXPECT_EQ(column(ra, 1, "critical_mu"), "inf");
+  EXPECT_EQ(ra[0].size(), rb[0].size() + 1);
+  EXPECT_EQ(rb[0].back(), "linear_solve_s");
+  std::filesystem::remove(with);
+  std::filesystem::remove(without);
+}
+
+// The contact problem's timers are cumulated over the run: each row gets its step's share, and
+// the contact terms come out of the assembly time, which includes them.
+TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
+  const std::string path = scratch("phases.csv");
+  StepsCsv csv(path, false);
+  StepReport s;
+  s.step = 1;
+  s.seconds.assembly = 5.0;
+  csv.addStep(s, {}, 10.0, 1.0, 2.0, std::nullopt);
+  s.step = 2;
+  csv.addStep(s, {}, 30.0, 1.5, 2.5, std::nullopt);
+  csv.addStep(s, {}, std::nullopt, 1.5, 2.5, std::nullopt);
+  csv.write();
+  const auto rows = readCsv(path);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "pairing_s")), 1.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "assembly_s")), 3.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "pairing_s")), 0.5);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "contact_s")), 0.5);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "assembly_s")), 4.5);
+  EXPECT_EQ(column(rows, 3, "condition_estimate"), "");
+  EXPECT_DOUBLE_EQ(csv.maxConditionEstimate(), 30.0);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace contactlab
