@@ -34,6 +34,14 @@ TEST(ElementEstimate, GradedCountsAreTheRightOrderOfMagnitude) {
   RollerOnBaseParams rb;
   expectOrderOfMagnitude(estimateElements(rb), generateRollerOnBase(rb).numElements(),
                          "roller-on-base");
+  BladeRootParams blade;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root quad4");
+  blade.elementType = "tri3";
+  blade.lobes = 3;
+  blade.sizeFlank = 0.2;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root tri3, 3 lobes");
   HalfSphereParams s;
   expectOrderOfMagnitude(estimateElements(s), generateHalfSphere(s).numElements(), "half-sphere");
   s.base = "block";
