@@ -16,10 +16,11 @@ using Point = BladeRootProfile::Point;
 using EdgeKind = BladeRootProfile::EdgeKind;
 
 // The OCC curves of an outline whose corners are rounded: the straight piece of each edge (by
-// the edge's index) and every fillet arc, and all of them in order for a curve loop.
+// the edge's index), the fillet arc at each vertex (0: a sharp vertex), and all of them in order
+// for a curve loop.
 struct RoundedOutline {
   std::vector<int> edgeLines;
-  std::vector<int> arcs;
+  std::vector<int> arcAt;
   std::vector<int> loop;
   int firstPoint = 0, lastPoint = 0;  // open outlines: the OCC points at the ends
 };
@@ -57,15 +58,13 @@ RoundedOutline addRoundedOutline(const std::vector<Point>& v, const std::vector<
   RoundedOutline out;
   const std::size_t edges = closed ? n : n - 1;
   for (std::size_t i = 0; i < edges; ++i) {
-    if (arcAt[i]) {
-      out.arcs.push_back(arcAt[i]);
-      out.loop.push_back(arcAt[i]);
-    }
+    if (arcAt[i]) out.loop.push_back(arcAt[i]);
     out.edgeLines.push_back(occ::addLine(startOut[i], endIn[(i + 1) % n]));
     out.loop.push_back(out.edgeLines.back());
   }
   for (int c : centres)
     occ::remove({{0, c}});
+  out.arcAt = arcAt;
   out.firstPoint = endIn.front();
   out.lastPoint = startOut.back();
   return out;
@@ -79,9 +78,26 @@ std::vector<int> linesOf(const RoundedOutline& o, const std::vector<EdgeKind>& k
   return lines;
 }
 
+// The contact flanks with the fillets at their ends: a flank's contact runs on into the
+// rounded lobe tip under load, and cutting the contact group at the tangent point would make
+// an artificial edge of contact there (a pressure peak that grows without bound with mesh
+// refinement).
+std::vector<int> flankCurves(const RoundedOutline& o, const std::vector<EdgeKind>& kinds) {
+  std::vector<int> curves = linesOf(o, kinds, EdgeKind::Flank);
+  const std::size_t n = o.arcAt.size();
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    if (kinds[i] == EdgeKind::Flank)
+      for (std::size_t v : {i, (i + 1) % n})
+        if (o.arcAt[v]) curves.push_back(o.arcAt[v]);
+  return curves;
+}
+
+// The other faces: lines that are not flanks or the top, arcs that do not end a flank.
 std::vector<int> freeCurves(const RoundedOutline& o, const std::vector<EdgeKind>& kinds) {
   std::vector<int> curves = linesOf(o, kinds, EdgeKind::Free);
-  curves.insert(curves.end(), o.arcs.begin(), o.arcs.end());
+  const auto flanks = flankCurves(o, kinds);
+  for (int arc : o.arcAt)
+    if (arc && std::find(flanks.begin(), flanks.end(), arc) == flanks.end()) curves.push_back(arc);
   return curves;
 }
 
@@ -125,10 +141,10 @@ Mesh generateBladeRoot(const BladeRootParams& p) {
 
     addGroup(2, {bladeSurface}, "blade");
     addGroup(2, {discSurface}, "disc");
-    addGroup(1, linesOf(blade, profile.bladeEdges(), EdgeKind::Flank), "blade-flanks");
+    addGroup(1, flankCurves(blade, profile.bladeEdges()), "blade-flanks");
     addGroup(1, linesOf(blade, profile.bladeEdges(), EdgeKind::Top), "blade-top");
     addGroup(1, freeCurves(blade, profile.bladeEdges()), "blade-free");
-    addGroup(1, linesOf(slot, profile.slotEdges(), EdgeKind::Flank), "disc-flanks");
+    addGroup(1, flankCurves(slot, profile.slotEdges()), "disc-flanks");
     addGroup(1, freeCurves(slot, profile.slotEdges()), "disc-slot");
     addGroup(1, {innerArc}, "disc-inner");
     addGroup(1, {outerArcRight, outerArcLeft}, "disc-outer");

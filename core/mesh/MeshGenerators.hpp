@@ -183,7 +183,8 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p);
 // Height above the disc's outer radius. Mesh size is Size Flank within Fine Distance of the
 // contact flanks, growing linearly to Size Far over Transition Length. Types: tri3 tri6 quad4
 // quad8 quad9 (quads: all-quad blossom recombination). Blocks "blade", "disc"; boundaries
-// "blade-flanks", "disc-flanks" (the contact flanks, straight parts), "blade-top", "blade-free"
+// "blade-flanks", "disc-flanks" (the contact flanks with the fillets at their ends),
+// "blade-top", "blade-free"
 // (the blade's other slot faces), "disc-slot" (the slot's other faces), "disc-inner",
 // "disc-outer", "disc-sides" (the sector's two radial cuts).
 struct BladeRootParams {

@@ -373,7 +373,8 @@ void registerMeshSources() {
   r.add({"blade-root",
          "A turbine blade's fir-tree root in its disc slot (plane strain), meshed separately, "
          "graded towards the contact flanks. Blocks 'blade', 'disc'; boundaries "
-         "'blade-flanks', 'disc-flanks' (the lobes' contact flanks), 'blade-top', 'blade-free' "
+         "'blade-flanks', 'disc-flanks' (the lobes' contact flanks with the fillets at their "
+         "ends), 'blade-top', 'blade-free' "
          "and 'disc-slot' (the other faces of root and slot), 'disc-inner', 'disc-outer', "
          "'disc-sides' (the sector's radial cuts).",
          bladeRootParameters, [](const ParameterList& p, const std::string&) {
