@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace contactlab {
 namespace {
@@ -101,12 +102,45 @@ std::vector<int> freeCurves(const RoundedOutline& o, const std::vector<EdgeKind>
   return curves;
 }
 
+// The face of `volume` swept from the 2D curve `curve`: the one whose centre of mass lies over
+// the curve's (the volume's own faces only, so that the coinciding flanks of blade and disc stay
+// apart; the front and back faces are off by half the thickness in z).
+int sweptFace(int volume, int curve, double thickness) {
+  std::vector<std::pair<int, int>> faces;
+  gmsh::model::getBoundary({{3, volume}}, faces, false, false, false);
+  const auto c = centerOfMass(1, curve);
+  const double tol = 1e-9 * (1 + std::abs(c[0]) + std::abs(c[1]));
+  for (const auto& face : faces) {
+    const auto f = centerOfMass(2, std::abs(face.second));
+    if (std::abs(f[0] - c[0]) < tol && std::abs(f[1] - c[1]) < tol &&
+        std::abs(f[2] - 0.5 * thickness) < 1e-9 * thickness)
+      return std::abs(face.second);
+  }
+  throw std::logic_error("blade-root generator: no swept face for a curve of the outline");
+}
+
+// Names the group of dimension dim - 1 in 2D, or, extruded, the faces swept from its curves.
+void addBoundaryGroup(int volume, double thickness, const std::vector<int>& curves,
+                      const std::string& name) {
+  if (volume == 0) return addGroup(1, curves, name);
+  std::vector<int> faces;
+  for (int c : curves)
+    faces.push_back(sweptFace(volume, c, thickness));
+  addGroup(2, faces, name);
+}
+
 }  // namespace
 
 Mesh generateBladeRoot(const BladeRootParams& p) {
   using ET = ElementType;
-  const auto spec = elementSpec("blade-root", p.elementType,
-                                {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
+  const auto spec = elementSpec(
+      "blade-root", p.elementType,
+      {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9, ET::Hex8, ET::Hex20, ET::Hex27});
+  const bool extruded = info(spec.type).dim == 3;
+  if (extruded) {
+    requirePositive("blade-root", "Thickness", p.thickness);
+    requireDivisions("blade-root", "Layers", p.layers);
+  }
   requireGrading("blade-root", {p.sizeFlank, p.sizeFar, p.fineDistance, p.transitionLength});
   const BladeRootProfile profile(p);
   const std::string source = "generated blade root (" + std::to_string(p.lobes) + " lobes, " +
@@ -137,24 +171,51 @@ Mesh generateBladeRoot(const BladeRootParams& p) {
     discLoop.insert(discLoop.end(), {outerArcLeft, sideLeft, innerArc});
     const int discSurface = occ::addPlaneSurface({occ::addCurveLoop(discLoop)});
     occ::remove({{0, origin}});
+    // 3D: both sections swept along z in Layers structured layers (hexahedra from the quads).
+    int bladeVolume = 0, discVolume = 0, bladeFront = 0, discFront = 0;
+    if (extruded) {
+      std::vector<std::pair<int, int>> swept;
+      occ::extrude({{2, bladeSurface}, {2, discSurface}}, 0, 0, p.thickness, swept, {p.layers}, {},
+                   true);
+      // Per input surface: its copy at z = Thickness, then its volume, then the lateral faces.
+      std::vector<int> volumes, fronts;
+      for (std::size_t i = 1; i < swept.size(); ++i)
+        if (swept[i].first == 3) {
+          volumes.push_back(swept[i].second);
+          fronts.push_back(swept[i - 1].second);
+        }
+      bladeVolume = volumes.at(0), discVolume = volumes.at(1);
+      bladeFront = fronts.at(0), discFront = fronts.at(1);
+    }
     occ::synchronize();
 
-    addGroup(2, {bladeSurface}, "blade");
-    addGroup(2, {discSurface}, "disc");
-    addGroup(1, flankCurves(blade, profile.bladeEdges()), "blade-flanks");
-    addGroup(1, linesOf(blade, profile.bladeEdges(), EdgeKind::Top), "blade-top");
-    addGroup(1, freeCurves(blade, profile.bladeEdges()), "blade-free");
-    addGroup(1, flankCurves(slot, profile.slotEdges()), "disc-flanks");
-    addGroup(1, freeCurves(slot, profile.slotEdges()), "disc-slot");
-    addGroup(1, {innerArc}, "disc-inner");
-    addGroup(1, {outerArcRight, outerArcLeft}, "disc-outer");
-    addGroup(1, {sideRight, sideLeft}, "disc-sides");
+    const int cell = extruded ? 3 : 2;
+    addGroup(cell, {extruded ? bladeVolume : bladeSurface}, "blade");
+    addGroup(cell, {extruded ? discVolume : discSurface}, "disc");
+    addBoundaryGroup(bladeVolume, p.thickness, flankCurves(blade, profile.bladeEdges()),
+                     "blade-flanks");
+    addBoundaryGroup(bladeVolume, p.thickness, linesOf(blade, profile.bladeEdges(), EdgeKind::Top),
+                     "blade-top");
+    addBoundaryGroup(bladeVolume, p.thickness, freeCurves(blade, profile.bladeEdges()),
+                     "blade-free");
+    addBoundaryGroup(discVolume, p.thickness, flankCurves(slot, profile.slotEdges()),
+                     "disc-flanks");
+    addBoundaryGroup(discVolume, p.thickness, freeCurves(slot, profile.slotEdges()), "disc-slot");
+    addBoundaryGroup(discVolume, p.thickness, {innerArc}, "disc-inner");
+    addBoundaryGroup(discVolume, p.thickness, {outerArcRight, outerArcLeft}, "disc-outer");
+    addBoundaryGroup(discVolume, p.thickness, {sideRight, sideLeft}, "disc-sides");
+    if (extruded) {
+      addGroup(2, {bladeSurface}, "blade-back");
+      addGroup(2, {bladeFront}, "blade-front");
+      addGroup(2, {discSurface}, "disc-back");
+      addGroup(2, {discFront}, "disc-front");
+    }
 
     if (!spec.simplex) {
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
       gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);  // blossom full-quad
     }
-    generateWithSize(2, [&](double x, double y, double) {
+    generateWithSize(cell, [&](double x, double y, double) {
       const double d = profile.flankDistance(x, y);
       const double t = std::clamp((d - p.fineDistance) / p.transitionLength, 0.0, 1.0);
       return p.sizeFlank + t * (p.sizeFar - p.sizeFlank);

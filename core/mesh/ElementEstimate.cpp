@@ -178,7 +178,9 @@ double estimateElements(const BladeRootParams& p) {
       const double h = p.sizeFlank + t * (p.sizeFar - p.sizeFlank);
       total += dx * dy / (h * h);
     }
-  return perCell(p.elementType, 2) * total;
+  // Swept (hex): the quads of the section times the layers.
+  const bool swept = p.elementType.rfind("hex", 0) == 0;
+  return (swept ? perCell("quad4", 2) * std::max(p.layers, 1) : perCell(p.elementType, 2)) * total;
 }
 
 double estimateElements(const HalfSphereParams& p) {

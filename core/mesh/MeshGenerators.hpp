@@ -207,6 +207,11 @@ struct BladeRootParams {
   double fineDistance = 1.0;
   double transitionLength = 20.0;
   std::string elementType = "quad4";
+  // hex8 hex20 hex27: the section swept along z over [0, thickness] in `layers` layers; the
+  // groups above become the swept faces, plus "blade-back", "disc-back" (z = 0) and
+  // "blade-front", "disc-front" (z = thickness).
+  double thickness = 10.0;
+  int layers = 4;
 };
 Mesh generateBladeRoot(const BladeRootParams& p);
 

@@ -255,7 +255,12 @@ RCP<const ParameterList> bladeRootParameters() {
   p->set("Fine Distance", d.fineDistance, "Distance from the flanks meshed at Size Flank (>= 0)");
   p->set("Transition Length", d.transitionLength,
          "Distance over which the size grows from Size Flank to Size Far");
-  p->set("Element", d.elementType, "Element type (quads: all-quad recombination)", oneOf(k2D));
+  p->set("Element", d.elementType,
+         "Element type (quads: all-quad recombination); hex8, hex20, hex27 sweep the section "
+         "along z (3D)",
+         oneOf({"tri3", "tri6", "quad4", "quad8", "quad9", "hex8", "hex20", "hex27"}));
+  p->set("Thickness", d.thickness, "hex elements: axial length of the swept model (> 0)");
+  p->set("Layers", d.layers, "hex elements: element layers along z (>= 1)");
   addElementLimit(*p);
   return p;
 }
@@ -376,7 +381,8 @@ void registerMeshSources() {
          "'blade-flanks', 'disc-flanks' (the lobes' contact flanks with the fillets at their "
          "ends), 'blade-top', 'blade-free' "
          "and 'disc-slot' (the other faces of root and slot), 'disc-inner', 'disc-outer', "
-         "'disc-sides' (the sector's radial cuts).",
+         "'disc-sides' (the sector's radial cuts); hex elements sweep it along z, adding "
+         "'blade-back', 'disc-back' (z = 0), 'blade-front', 'disc-front'.",
          bladeRootParameters, [](const ParameterList& p, const std::string&) {
            BladeRootParams g;
            g.lobes = p.get<int>("Lobes");
@@ -398,6 +404,8 @@ void registerMeshSources() {
            g.fineDistance = p.get<double>("Fine Distance");
            g.transitionLength = p.get<double>("Transition Length");
            g.elementType = p.get<std::string>("Element");
+           g.thickness = p.get<double>("Thickness");
+           g.layers = p.get<int>("Layers");
            return std::make_unique<Mesh>(generateBladeRoot(withinLimit("blade-root", p, g)));
          }});
   r.add({"stacked-blocks-2d",

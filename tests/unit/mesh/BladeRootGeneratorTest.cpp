@@ -66,6 +66,49 @@ INSTANTIATE_TEST_SUITE_P(LobesAndTypes, BladeRootGenerator,
                          ::testing::Combine(::testing::Values(2, 3),
                                             ::testing::Values("tri3", "quad4", "quad8")));
 
+TEST(BladeRootGenerator, HexElementsSweepTheSectionAlongZ) {
+  for (const char* type : {"hex8", "hex20"}) {
+    BladeRootParams p;
+    p.elementType = type;
+    p.sizeFar = 4.0;
+    p.thickness = 6.0;
+    p.layers = 3;
+    const Mesh mesh = generateBladeRoot(p);
+    const BladeRootProfile profile(p);
+    ASSERT_EQ(mesh.dim, 3) << type;
+    EXPECT_GT(test::minJacobian(mesh), 0.0) << type;
+    const auto blade = test::blockNodes(mesh, "blade"), disc = test::blockNodes(mesh, "disc");
+    for (auto n : blade)
+      EXPECT_EQ(disc.count(n), 0u) << type << ": node " << n << " is shared by the two bodies";
+    for (const char* group : {"blade-flanks", "disc-flanks"}) {
+      std::size_t onSegments = 0;
+      for (auto n : mesh.boundaryNodes(group)) {
+        const auto x = test::node(mesh, n);
+        const double d = profile.flankDistance(x[0], x[1]);
+        EXPECT_LT(d, 2 * p.filletRadius) << type << " " << group << " node " << n;
+        if (d < 1e-9) ++onSegments;
+      }
+      EXPECT_GE(onSegments, 2u * profile.flanks().size() * (p.layers + 1)) << type << group;
+    }
+    for (auto n : mesh.boundaryNodes("disc-inner")) {
+      const auto x = test::node(mesh, n);
+      EXPECT_NEAR(std::hypot(x[0], x[1]), p.innerRadius, 1e-9) << type;
+    }
+    for (const auto& [group, z] : {std::pair<const char*, double>{"blade-back", 0.0},
+                                   {"disc-back", 0.0},
+                                   {"blade-front", 6.0},
+                                   {"disc-front", 6.0}})
+      for (auto n : mesh.boundaryNodes(group))
+        EXPECT_NEAR(test::node(mesh, n)[2], z, 1e-9) << type << " " << group;
+    // The swept blade is its section's area times the thickness.
+    BladeRootParams section = p;
+    section.elementType = "quad4";
+    EXPECT_NEAR(test::blockMeasure(mesh, "blade"),
+                6.0 * test::blockMeasure(generateBladeRoot(section), "blade"), 1e-3)
+        << type;
+  }
+}
+
 TEST(BladeRootGenerator, SharpOutlineHasThePolygonsAreas) {
   // Without fillets every edge of root and slot is straight: the blade's area is its polygon's,
   // the disc's the sector's minus the slot (its polygon closed by the chord between the mouths,

@@ -42,6 +42,10 @@ TEST(ElementEstimate, GradedCountsAreTheRightOrderOfMagnitude) {
   blade.sizeFlank = 0.2;
   expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
                          "blade-root tri3, 3 lobes");
+  blade.elementType = "hex8";
+  blade.sizeFlank = 0.5;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root hex8, swept");
   HalfSphereParams s;
   expectOrderOfMagnitude(estimateElements(s), generateHalfSphere(s).numElements(), "half-sphere");
   s.base = "block";
