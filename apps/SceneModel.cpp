@@ -65,6 +65,42 @@ std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
   return out;
 }
 
+// Loads/<name> of Type centrifugal: density and angular velocity, the axis (2D: z through
+// Centre; 3D: Axis through Centre).
+CentrifugalLoad centrifugalLoad(const ParameterList& l, const std::string& name, int dim,
+                                double endTime, const std::string& where) {
+  const std::string path = "Loads/" + name;
+  CentrifugalLoad load;
+  load.name = name;
+  load.block = l.get<std::string>("Block");
+  load.density = l.get<double>("Density");
+  load.angularVelocity = l.get<double>("Angular Velocity");
+  if (!(load.density > 0) || !std::isfinite(load.density))
+    throw InputError(where + ": " + path + "/Density must be a finite number > 0");
+  if (!std::isfinite(load.angularVelocity))
+    throw InputError(where + ": " + path + "/Angular Velocity must be a finite number");
+  load.centre = vector3(l, "Centre", where, path, dim);
+  if (dim == 3) {
+    load.axis = vector3(l, "Axis", where, path, dim);
+    const double norm = std::hypot(load.axis[0], load.axis[1], load.axis[2]);
+    if (!(norm > 0) || !std::isfinite(norm))
+      throw InputError(where + ": " + path + "/Axis must be a non-zero direction");
+    for (double& a : load.axis)
+      a /= norm;
+  } else {
+    const auto& axis = l.get<Teuchos::Array<double>>("Axis");
+    if (axis.size() != 3 || axis[0] != 0 || axis[1] != 0 || axis[2] == 0)
+      throw InputError(where + ": " + path +
+                       "/Axis: a 2D model spins about the z axis; leave Axis at [0, 0, 1]");
+  }
+  const std::string follower = l.get<std::string>("Follower");
+  load.follower = follower == "true"    ? SurfaceLoad::Follower::Yes
+                  : follower == "false" ? SurfaceLoad::Follower::No
+                                        : SurfaceLoad::Follower::Automatic;
+  load.function = loadFunction(l, endTime, where, path);
+  return load;
+}
+
 // Components: 'xyz' is "every component"; a z named on its own in 2D would act on nothing.
 std::vector<int> componentList(const ParameterList& p, int dim, const std::string& where,
                                const std::string& path) {
@@ -340,6 +376,10 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       sm.model.bodyForces.push_back(b);
       continue;
     }
+    if (type == "centrifugal") {
+      sm.model.centrifugalLoads.push_back(centrifugalLoad(l, name, dim, endTime, where));
+      continue;
+    }
     if (type != "point-load" && l.get<std::string>("Distribution") != "total")
       throw InputError(where + ": " + path + "/Distribution applies to a point-load only (a " +
                        type + " is spread by its facets or volume); remove the key");
@@ -358,9 +398,10 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     }
     const std::string follower = l.get<std::string>("Follower");
     if (type != "pressure" && follower != "automatic")
-      throw InputError(where + ": " + path +
-                       "/Follower: only a pressure follows the deformation (a " + type +
-                       " is a dead load); remove the key");
+      throw InputError(
+          where + ": " + path +
+          "/Follower: only a pressure or a centrifugal load follows the deformation (a " + type +
+          " is a dead load); remove the key");
     SurfaceLoad s;
     s.name = name;
     s.follower = follower == "true"    ? SurfaceLoad::Follower::Yes

@@ -119,21 +119,35 @@ ParameterList loadItem() {
   ParameterList p;
   p.set("Type", "pressure",
         "'pressure' (Value, against the outward normal of Group's facets), 'traction' (Vector "
-        "per unit area on Group's facets), 'body-force' (Vector per unit volume in Block) or "
-        "'point-load' (Vector, a force on Group's nodes, see Distribution)",
-        choices({"pressure", "traction", "body-force", "point-load"}));
+        "per unit area on Group's facets), 'body-force' (Vector per unit volume in Block), "
+        "'centrifugal' (Density * Angular Velocity^2 * r per unit volume in Block, r the "
+        "distance vector from the spin axis) or 'point-load' (Vector, a force on Group's "
+        "nodes, see Distribution)",
+        choices({"pressure", "traction", "body-force", "centrifugal", "point-load"}));
   p.set("Group", "",
         "Boundary physical group (pressure, traction, point-load; point-load also takes a "
         "Point Group)");
-  p.set("Block", "", "Element block (body-force); empty means every block");
+  p.set("Block", "", "Element block (body-force, centrifugal); empty means every block");
+  p.set("Density", 0.0,
+        "centrifugal: mass density of the spinning block (> 0, mass per unit reference "
+        "volume; the material's density is the slow-dynamics mass and is not used here)");
+  p.set("Angular Velocity", 0.0,
+        "centrifugal: spin rate omega in radians per unit time at the end of the load; the "
+        "force, rho omega^2 r, is scaled by Function");
+  p.set("Centre", Teuchos::Array<double>(3, 0.0),
+        "centrifugal: a point of the spin axis (2D: the centre of rotation in the plane)");
+  p.set("Axis", Teuchos::Array<double>({0.0, 0.0, 1.0}),
+        "centrifugal: direction of the spin axis (3D; a 2D model spins about z)");
   p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
   p.set("Follower", "automatic",
         "pressure: 'true' makes it follow the deformation (p on the current facets, "
         "-p n da by Nanson's formula, its load stiffness in the tangent, which is then not "
         "symmetric: the linear solver must take any matrix), for finite-strain blocks only; "
         "'false' keeps it on the reference facets (a dead load); 'automatic' follows on "
-        "finite-strain blocks and not on small-strain ones. Tractions and body forces are dead "
-        "loads",
+        "finite-strain blocks and not on small-strain ones. centrifugal: 'true' takes r at "
+        "the current position (its load stiffness -rho omega^2 M is symmetric), 'false' at "
+        "the reference position (a dead load), 'automatic' follows on finite-strain blocks. "
+        "Tractions and body forces are dead loads",
         choices({"automatic", "true", "false"}));
   p.set("Vector", Teuchos::Array<double>(3, 0.0),
         "Force per unit area (traction), per unit volume (body-force) or force (point-load) at "

@@ -1,11 +1,14 @@
 #include "core/mesh/ElementEstimate.hpp"
 
+#include "core/mesh/BladeRootProfile.hpp"
 #include "core/mesh/ElementType.hpp"
+#include "core/mesh/GeneratorSupport.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace contactlab {
@@ -142,6 +145,42 @@ double estimateElements(const RollerOnBaseParams& p) {
   return roller +
          graded(
              2, lo, hi, p.contact.data(), [](const double*) { return true; }, p.grading, k);
+}
+
+double estimateElements(const BladeRootParams& p) {
+  // Invalid parameters are the generator's to refuse, with its own sentence.
+  std::unique_ptr<BladeRootProfile> profile;
+  try {
+    profile = std::make_unique<BladeRootProfile>(p);
+    requireGrading("blade-root", {p.sizeFlank, p.sizeFar, p.fineDistance, p.transitionLength});
+  } catch (const std::invalid_argument&) {
+    return 0;
+  }
+  // The sector with the blade's shank on top (the slot's clearance is not worth resolving), on
+  // a grid fine enough for the flank size: the area between the flanks is what counts.
+  const double half = 0.5 * p.sectorAngle * M_PI / 180, top = p.outerRadius + p.bladeHeight;
+  const double xmax = p.outerRadius * std::sin(half);
+  const double ymin = p.innerRadius * std::cos(half);
+  const int n = 800;
+  const double dx = 2 * xmax / n, dy = (top - ymin) / n;
+  const double neck = 0.5 * p.neckWidth;
+  double total = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double x = -xmax + (i + 0.5) * dx, y = ymin + (j + 0.5) * dy;
+      const double r = std::hypot(x, y);
+      const bool inSector =
+          r >= p.innerRadius && r <= p.outerRadius && std::abs(std::atan2(x, y)) <= half;
+      const bool inShank = r > p.outerRadius && y <= top && std::abs(x) <= neck;
+      if (!inSector && !inShank) continue;
+      const double d = profile->flankDistance(x, y);
+      const double t = std::clamp((d - p.fineDistance) / p.transitionLength, 0.0, 1.0);
+      const double h = p.sizeFlank + t * (p.sizeFar - p.sizeFlank);
+      total += dx * dy / (h * h);
+    }
+  // Swept (hex): the quads of the section times the layers.
+  const bool swept = p.elementType.rfind("hex", 0) == 0;
+  return (swept ? perCell("quad4", 2) * std::max(p.layers, 1) : perCell(p.elementType, 2)) * total;
 }
 
 double estimateElements(const HalfSphereParams& p) {

@@ -211,17 +211,11 @@ BoxEntities addStructuredBox(const std::array<double, 3>& origin,
   return b;
 }
 
-void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& g,
-                    double sizeFactor) {
+void generateWithSize(int dim, const std::function<double(double x, double y, double z)>& size) {
   // A size callback instead of Distance/Threshold fields: the grading stays plain C++ and does
   // not depend on field option names, which gmsh has renamed across versions.
-  gmsh::model::mesh::setSizeCallback([point, g, sizeFactor](int, int, double x, double y,
-                                                            double z) {
-    const double d = std::sqrt((x - point[0]) * (x - point[0]) + (y - point[1]) * (y - point[1]) +
-                               (z - point[2]) * (z - point[2]));
-    const double t = std::clamp((d - g.fineRadius) / g.transitionLength, 0.0, 1.0);
-    return sizeFactor * (g.sizeContact + t * (g.sizeFar - g.sizeContact));
-  });
+  gmsh::model::mesh::setSizeCallback(
+      [size](int, int, double x, double y, double z) { return size(x, y, z); });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   try {
@@ -231,6 +225,26 @@ void generateGraded(int dim, const std::array<double, 3>& point, const ContactGr
     throw;
   }
   gmsh::model::mesh::removeSizeCallback();
+}
+
+void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& g,
+                    double sizeFactor) {
+  generateWithSize(dim, [point, g, sizeFactor](double x, double y, double z) {
+    const double d = std::sqrt((x - point[0]) * (x - point[0]) + (y - point[1]) * (y - point[1]) +
+                               (z - point[2]) * (z - point[2]));
+    const double t = std::clamp((d - g.fineRadius) / g.transitionLength, 0.0, 1.0);
+    return sizeFactor * (g.sizeContact + t * (g.sizeFar - g.sizeContact));
+  });
+}
+
+void requireAllQuads(const std::string& source) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+  gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2);
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i] != 3 && !elementTags[i].empty())
+      throw std::runtime_error("gmsh left non-quadrilateral elements in the " + source +
+                               "; change grading sizes slightly or use tri3/tri6");
 }
 
 void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees) {

@@ -6,6 +6,7 @@
 #include "core/mesh/MeshGenerators.hpp"
 
 #include <array>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -68,6 +69,9 @@ BoxEntities addStructuredBox(const std::array<double, 3>& origin,
                              const std::array<double, 3>& lengths,
                              const std::array<int, 3>& divisions, bool recombine);
 
+// Generates the mesh of dimension `dim` with the element size size(x, y, z).
+void generateWithSize(int dim, const std::function<double(double x, double y, double z)>& size);
+
 // Generates the mesh of dimension `dim` with sizes graded from `point` (scaled by
 // `sizeFactor`, e.g. 2 when a later subdivision halves every edge).
 void generateGraded(int dim, const std::array<double, 3>& point, const ContactGrading& grading,
@@ -82,6 +86,10 @@ void requireConvexQuadrilateral(const std::string& generator, const std::array<d
 void mapOntoQuadrilateral(Mesh& mesh, const std::array<double, 2>& origin,
                           const std::array<double, 2>& lengths,
                           const std::array<double, 8>& corners);
+
+// Blossom full-quad recombination can in principle leave triangles; never hand them out:
+// throws std::runtime_error naming `source` when the 2D mesh holds any non-quadrilateral.
+void requireAllQuads(const std::string& source);
 
 // Rotates the nodes of block `name` about the vertical axis through (cx, cy), in degrees.
 void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees);

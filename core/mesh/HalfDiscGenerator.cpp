@@ -8,21 +8,6 @@
 #include <stdexcept>
 
 namespace contactlab {
-namespace {
-
-// Blossom full-quad recombination can in principle leave triangles; never hand them out.
-void requireAllQuads(const std::string& source) {
-  std::vector<int> types;
-  std::vector<std::vector<std::size_t>> elementTags, nodeTags;
-  gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2);
-  for (std::size_t i = 0; i < types.size(); ++i)
-    if (types[i] != 3 && !elementTags[i].empty())
-      throw std::runtime_error("gmsh left non-quadrilateral elements in the " + source +
-                               "; change grading sizes slightly or use tri3/tri6");
-}
-
-}  // namespace
-
 Mesh generateHalfDisc(const HalfDiscParams& p) {
   using ET = ElementType;
   const auto spec = elementSpec("half-disc", p.elementType,

@@ -170,4 +170,49 @@ struct StackedBlocks3DParams {
 };
 Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p);
 
+// A turbine blade's fir-tree root in its disc slot, plane strain, two separately meshed bodies
+// (disjoint nodes). The disc is the annular sector Inner Radius <= r <= Outer Radius about the
+// origin, Sector Angle wide, symmetric about the +y axis (the radial axis of the blade); the
+// slot is cut into it from the outer radius. The blade root has `lobes` lobes per side, symmetric
+// about x = 0: from the top, a shank of Neck Width, then per lobe a contact flank going outward
+// and down at Flank Angle from the x axis (Lobe Depth wide), a vertical tip land, a lower flank
+// back in to the next neck; each neck is Taper narrower (per side) than the one above, lobes are
+// Lobe Pitch apart radially. The disc's slot follows the root: its contact flanks coincide with
+// the blade's (zero initial gap), every other slot face stands Clearance off the blade's. Every
+// corner of the root and slot is rounded with Fillet Radius. The blade's shank rises Blade
+// Height above the disc's outer radius. Mesh size is Size Flank within Fine Distance of the
+// contact flanks, growing linearly to Size Far over Transition Length. Types: tri3 tri6 quad4
+// quad8 quad9 (quads: all-quad blossom recombination). Blocks "blade", "disc"; boundaries
+// "blade-flanks", "disc-flanks" (the contact flanks with the fillets at their ends),
+// "blade-top", "blade-free"
+// (the blade's other slot faces), "disc-slot" (the slot's other faces), "disc-inner",
+// "disc-outer", "disc-sides" (the sector's two radial cuts).
+struct BladeRootParams {
+  int lobes = 2;
+  double innerRadius = 40.0;
+  double outerRadius = 100.0;
+  double sectorAngle = 24.0;  // degrees, whole sector
+  double neckWidth = 12.0;    // the shank's full width
+  double neckLength = 4.0;    // from the outer radius (on the axis) down to the first flank
+  double lobeDepth = 3.0;     // per side, beyond the neck above it
+  double lobePitch = 7.0;     // radial distance between lobes
+  double flankAngle = 30.0;   // degrees from the x axis
+  double tipLand = 1.0;       // vertical length of a lobe's tip
+  double taper = 1.5;         // per side, each neck narrower than the one above
+  double filletRadius = 0.5;
+  double clearance = 0.2;
+  double bladeHeight = 15.0;  // shank above the outer radius
+  double sizeFlank = 0.5;
+  double sizeFar = 5.0;
+  double fineDistance = 1.0;
+  double transitionLength = 20.0;
+  std::string elementType = "quad4";
+  // hex8 hex20 hex27: the section swept along z over [0, thickness] in `layers` layers; the
+  // groups above become the swept faces, plus "blade-back", "disc-back" (z = 0) and
+  // "blade-front", "disc-front" (z = thickness).
+  double thickness = 10.0;
+  int layers = 4;
+};
+Mesh generateBladeRoot(const BladeRootParams& p);
+
 }  // namespace contactlab

@@ -217,6 +217,54 @@ RCP<const ParameterList> stacked3DParameters() {
   return p;
 }
 
+RCP<const ParameterList> bladeRootParameters() {
+  auto p = Teuchos::rcp(new ParameterList("blade-root"));
+  BladeRootParams d;
+  p->set("Lobes", d.lobes, "Lobes per side of the fir-tree root (1 to 4)");
+  p->set("Inner Radius", d.innerRadius, "Inner radius of the disc sector (> 0), about the origin");
+  p->set("Outer Radius", d.outerRadius,
+         "Outer radius of the disc sector (> Inner Radius); the slot opens there");
+  p->set("Sector Angle", d.sectorAngle,
+         "Opening of the disc sector in degrees, in (0, 180), symmetric about the +y axis (the "
+         "blade's radial axis); the slot must keep 10 % of it clear on each side");
+  p->set("Neck Width", d.neckWidth, "Full width of the blade's shank and top neck (> 0)");
+  p->set("Neck Length", d.neckLength,
+         "Radial distance from the outer radius (on the axis) down to the first lobe's flank "
+         "(> 0)");
+  p->set("Lobe Depth", d.lobeDepth,
+         "How far each lobe stands out beyond the neck above it, per side (> 0)");
+  p->set("Lobe Pitch", d.lobePitch,
+         "Radial distance between successive lobes (> Lobe Depth * tan(Flank Angle) + Tip "
+         "Land, so that the lower flank descends)");
+  p->set("Flank Angle", d.flankAngle,
+         "Angle of the contact flanks from the circumferential (x) direction, degrees in "
+         "(0, 75): 0 would be a flat shoulder carrying the load radially");
+  p->set("Tip Land", d.tipLand, "Radial length of each lobe's straight tip (> 0)");
+  p->set("Taper", d.taper,
+         "How much narrower each neck is than the one above, per side (>= 0; Lobes * Taper < "
+         "Neck Width / 2)");
+  p->set("Fillet Radius", d.filletRadius,
+         "Radius of the rounding of every corner of the root and the slot (>= 0; 0: sharp)");
+  p->set("Clearance", d.clearance,
+         "Gap between the blade and the slot on every face but the contact flanks (> 0), "
+         "which touch with zero gap");
+  p->set("Blade Height", d.bladeHeight,
+         "How far the blade's shank rises above the outer radius to 'blade-top' (> 0)");
+  p->set("Size Flank", d.sizeFlank, "Element size within Fine Distance of the contact flanks");
+  p->set("Size Far", d.sizeFar, "Element size far from the flanks (>= Size Flank)");
+  p->set("Fine Distance", d.fineDistance, "Distance from the flanks meshed at Size Flank (>= 0)");
+  p->set("Transition Length", d.transitionLength,
+         "Distance over which the size grows from Size Flank to Size Far");
+  p->set("Element", d.elementType,
+         "Element type (quads: all-quad recombination); hex8, hex20, hex27 sweep the section "
+         "along z (3D)",
+         oneOf({"tri3", "tri6", "quad4", "quad8", "quad9", "hex8", "hex20", "hex27"}));
+  p->set("Thickness", d.thickness, "hex elements: axial length of the swept model (> 0)");
+  p->set("Layers", d.layers, "hex elements: element layers along z (>= 1)");
+  addElementLimit(*p);
+  return p;
+}
+
 }  // namespace
 
 MeshSourceRegistry& meshSourceRegistry() {
@@ -326,6 +374,39 @@ void registerMeshSources() {
            g.baseWidth = p.get<double>("Base Width");
            g.baseHeight = p.get<double>("Base Height");
            return std::make_unique<Mesh>(generateHalfSphere(withinLimit("half-sphere", p, g)));
+         }});
+  r.add({"blade-root",
+         "A turbine blade's fir-tree root in its disc slot (plane strain), meshed separately, "
+         "graded towards the contact flanks. Blocks 'blade', 'disc'; boundaries "
+         "'blade-flanks', 'disc-flanks' (the lobes' contact flanks with the fillets at their "
+         "ends), 'blade-top', 'blade-free' "
+         "and 'disc-slot' (the other faces of root and slot), 'disc-inner', 'disc-outer', "
+         "'disc-sides' (the sector's radial cuts); hex elements sweep it along z, adding "
+         "'blade-back', 'disc-back' (z = 0), 'blade-front', 'disc-front'.",
+         bladeRootParameters, [](const ParameterList& p, const std::string&) {
+           BladeRootParams g;
+           g.lobes = p.get<int>("Lobes");
+           g.innerRadius = p.get<double>("Inner Radius");
+           g.outerRadius = p.get<double>("Outer Radius");
+           g.sectorAngle = p.get<double>("Sector Angle");
+           g.neckWidth = p.get<double>("Neck Width");
+           g.neckLength = p.get<double>("Neck Length");
+           g.lobeDepth = p.get<double>("Lobe Depth");
+           g.lobePitch = p.get<double>("Lobe Pitch");
+           g.flankAngle = p.get<double>("Flank Angle");
+           g.tipLand = p.get<double>("Tip Land");
+           g.taper = p.get<double>("Taper");
+           g.filletRadius = p.get<double>("Fillet Radius");
+           g.clearance = p.get<double>("Clearance");
+           g.bladeHeight = p.get<double>("Blade Height");
+           g.sizeFlank = p.get<double>("Size Flank");
+           g.sizeFar = p.get<double>("Size Far");
+           g.fineDistance = p.get<double>("Fine Distance");
+           g.transitionLength = p.get<double>("Transition Length");
+           g.elementType = p.get<std::string>("Element");
+           g.thickness = p.get<double>("Thickness");
+           g.layers = p.get<int>("Layers");
+           return std::make_unique<Mesh>(generateBladeRoot(withinLimit("blade-root", p, g)));
          }});
   r.add({"stacked-blocks-2d",
          "Two separately meshed blocks, one on the other (contact patch test). Blocks 'lower', "

@@ -59,6 +59,25 @@ struct BodyForce {
   std::function<void(const double* x, double t, double* force)> field;
 };
 
+// The centrifugal force of a body spinning at angular velocity omega about an axis (2D: the
+// z axis through `centre`): rho omega^2 r per unit reference volume, r the position's distance
+// vector from the axis. A follower load takes r at the current position x = X + u (mass is
+// conserved, so rho dV0 of the reference volume is the spinning mass); its load stiffness
+// -df/du = -rho omega^2 M P (M the consistent mass matrix of unit density, P the projector
+// normal to the axis) is symmetric and softening. A dead load takes r at the reference position.
+// Automatic: follower on finite-strain blocks, dead on small-strain ones. The load function
+// scales the force (omega^2).
+struct CentrifugalLoad {
+  std::string name;
+  std::string block;  // empty: every block
+  double density = 0.0;
+  double angularVelocity = 0.0;             // rad per unit time
+  std::array<double, 3> centre{{0, 0, 0}};  // a point of the axis
+  std::array<double, 3> axis{{0, 0, 1}};    // unit direction (2D: z)
+  SurfaceLoad::Follower follower = SurfaceLoad::Follower::Automatic;
+  LoadFunction function;
+};
+
 // A discrete spring from each node of a group to ground: in every listed component, a force
 // -stiffness * u on the node (residual +k u, tangent +k on the diagonal). The stiffness is per
 // node and per component, so the group's total stiffness in a component is k times its nodes.

@@ -68,7 +68,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
         kernelOf.emplace(std::make_pair(block.type, kinematics), static_cast<int>(kernels_.size()));
     if (inserted) {
       kernels_.push_back(makeElementKernel(block.type, kinematics));
-      if (model_.slowDynamics.enabled)
+      if (model_.slowDynamics.enabled || !model_.centrifugalLoads.empty())
         massKernels_.push_back(std::make_unique<MassKernel>(block.type));
     }
     LocalElement e;
@@ -116,6 +116,13 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   for (const auto& spring : model_.springs)
     springForces_.push_back({spring.name, {}});
 
+  for (const auto& load : model_.centrifugalLoads) {
+    try {
+      centrifugal_.emplace_back(load, dim);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
+  }
   collectively(*comm, [&] {
     surfaceLoads_ = std::make_unique<SurfaceLoadAssembler>(model_, *dofs_, partition);
   });
@@ -201,6 +208,10 @@ void Problem::checkModel() const {
     if (!body.block.empty() && mesh.findBlocks(body.block).empty())
       throw InputError("body force '" + body.name + "' names block '" + body.block +
                        "', which is not in " + where);
+  for (const auto& load : model_.centrifugalLoads)
+    if (!load.block.empty() && mesh.findBlocks(load.block).empty())
+      throw InputError("centrifugal load '" + load.name + "' names block '" + load.block +
+                       "', which is not in " + where);
   if (model_.slowDynamics.enabled)
     for (const auto& [name, material] : model_.materials)
       if (!(material->density() > 0))
@@ -275,6 +286,43 @@ void Problem::addExternalForces(double t, const double* u, std::vector<double>& 
         f[e.rows[i]] += fe[i];
     }
   }
+  if (centrifugal_.empty()) return;
+  for (const auto& e : elements_) {
+    fe.assign(e.rows.size(), 0.0);
+    addCentrifugal(e, t, u, fe.data(), nullptr);
+    for (std::size_t i = 0; i < e.rows.size(); ++i)
+      f[e.rows[i]] += fe[i];
+  }
+}
+
+void Problem::addCentrifugal(const LocalElement& e, double t, const double* u, double* f,
+                             double* k) const {
+  const int dim = model_.mesh->dim;
+  const int numNodes = static_cast<int>(e.nodes.size()), nd = numNodes * dim;
+  std::vector<double> x, mass;
+  for (std::size_t l = 0; l < centrifugal_.size(); ++l) {
+    const CentrifugalLoad& load = model_.centrifugalLoads[l];
+    if (!load.block.empty() && model_.mesh->blocks[e.block].name != load.block) continue;
+    const bool follower = load.follower == SurfaceLoad::Follower::Yes ||
+                          (load.follower == SurfaceLoad::Follower::Automatic &&
+                           blockMaterial_[e.block]->kinematics() == Kinematics::FiniteStrain);
+    if (!follower && !f) continue;
+    if (mass.empty()) {
+      gatherCoordinates(e.nodes, x);
+      mass.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+      massKernels_[e.kernel]->add(x.data(), 1.0, false, mass.data());
+    }
+    if (f) {
+      // A follower load acts at the current positions X + u.
+      std::vector<double> position = x;
+      if (follower)
+        for (int a = 0; a < numNodes; ++a)
+          for (int i = 0; i < dim; ++i)
+            position[3 * a + i] += u[e.rows[a * dim + i]];
+      centrifugal_[l].addForce(mass.data(), position.data(), numNodes, t, f);
+    }
+    if (k && follower) centrifugal_[l].addStiffness(mass.data(), numNodes, t, k);
+  }
 }
 
 void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTangent) {
@@ -324,6 +372,8 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
           if (inertiaForce) fe[i] += cm * (ue[j] - inertia_.reference[e.rows[j]]);
         }
     }
+    if (withTangent && !centrifugal_.empty())
+      addCentrifugal(e, t, uo.getRawPtr(), nullptr, ke.data());
     if (residual)
       for (std::size_t i = 0; i < nd; ++i)
         r[e.rows[i]] += fe[i];

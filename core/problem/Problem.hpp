@@ -12,6 +12,7 @@
 // through follower pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
 #include "base/LinearAlgebra.hpp"
 #include "core/io/MeshPiece.hpp"
+#include "core/problem/CentrifugalLoadKernel.hpp"
 #include "core/problem/DofMap.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SolidModel.hpp"
@@ -110,6 +111,9 @@ class Problem : public NonlinearSystem {
   void buildGraph();
   // f += surface loads (follower pressures at the overlap displacement u) and body forces.
   void addExternalForces(double t, const double* u, std::vector<double>& f) const;
+  // The centrifugal loads on element e at the overlap displacement u: f += forces (when not
+  // nullptr), k += the follower loads' stiffness (when not nullptr).
+  void addCentrifugal(const LocalElement& e, double t, const double* u, double* f, double* k) const;
   std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap) const;
   Teuchos::RCP<Vector> overlapCopy(const Vector& u) const;
 
@@ -117,8 +121,10 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<const Comm> comm_;
   std::unique_ptr<DofMap> dofs_;
   std::vector<LocalElement> elements_;
-  std::vector<std::unique_ptr<ElementKernel>> kernels_;   // one per element type and kinematics
-  std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order; slow dynamics only
+  std::vector<std::unique_ptr<ElementKernel>> kernels_;  // one per element type and kinematics
+  // Same order; with slow dynamics or centrifugal loads only.
+  std::vector<std::unique_ptr<MassKernel>> massKernels_;
+  std::vector<CentrifugalLoadKernel> centrifugal_;  // one per model_.centrifugalLoads
   // Converged displacements (overlap) of the last two steps and the inertia reference u*.
   struct InertiaState {
     std::vector<double> current, previous, reference;

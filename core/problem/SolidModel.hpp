@@ -20,6 +20,7 @@ struct SolidModel {
   std::vector<DirichletCondition> dirichlet;
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
+  std::vector<CentrifugalLoad> centrifugalLoads;
   std::vector<PointLoad> pointLoads;
   std::vector<NodalSpring> springs;
   SlowDynamics slowDynamics;

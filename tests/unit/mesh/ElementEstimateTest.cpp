@@ -34,6 +34,18 @@ TEST(ElementEstimate, GradedCountsAreTheRightOrderOfMagnitude) {
   RollerOnBaseParams rb;
   expectOrderOfMagnitude(estimateElements(rb), generateRollerOnBase(rb).numElements(),
                          "roller-on-base");
+  BladeRootParams blade;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root quad4");
+  blade.elementType = "tri3";
+  blade.lobes = 3;
+  blade.sizeFlank = 0.2;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root tri3, 3 lobes");
+  blade.elementType = "hex8";
+  blade.sizeFlank = 0.5;
+  expectOrderOfMagnitude(estimateElements(blade), generateBladeRoot(blade).numElements(),
+                         "blade-root hex8, swept");
   HalfSphereParams s;
   expectOrderOfMagnitude(estimateElements(s), generateHalfSphere(s).numElements(), "half-sphere");
   s.base = "block";

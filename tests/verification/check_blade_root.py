@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Runs a blade-root scene (scenes/blade-root-2d.yaml: a fir-tree root held in its disc slot
+only by frictionless contact on the lobe flanks, both bodies spinning) and checks the force
+balance that holds whatever the mesh:
+
+  contact resultant on the blade  + centrifugal resultant on the blade            = 0
+  hub reaction                    + centrifugal resultants on the blade and disc  = 0
+
+The centrifugal resultants are integrated here from the written mesh and displacement,
+independently of the code's assembly: rho omega^2 int (X + u - c) dA0 over each block (the scene's
+finite-strain blocks take the follower load, r at the current position; --dead takes X), with a
+2 x 2 Gauss rule on quad4 cells (exact for the bilinear integrand) or the centroid on tri3.
+Each error is |sum| / |centrifugal resultant of the blade|; TOL bounds both.
+
+usage: check_blade_root.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--dead] [--set key=value ...]
+Prints "RESULT ..." lines for doc/verification.md (dofs, contact dofs, Newton iterations, wall
+time, the balance errors and the peak contact pressure)."""
+import argparse, json, os, shutil, subprocess, sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import vtk
+import yaml
+
+ap = argparse.ArgumentParser()
+ap.add_argument("app")
+ap.add_argument("scene")
+ap.add_argument("out")
+ap.add_argument("tol", type=float)
+ap.add_argument("--ranks", type=int, default=1)
+ap.add_argument("--dead", action="store_true")
+ap.add_argument("--set", action="append", default=[])
+args = ap.parse_args()
+
+shutil.rmtree(args.out, ignore_errors=True)
+cmd = [args.app, "run", args.scene, "--out", args.out, "--quiet"]
+for s in args.set:
+    cmd += ["--set", s]
+if args.ranks > 1:
+    cmd = ["mpirun", "-np", str(args.ranks), "--oversubscribe"] + cmd
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=900)
+if run.returncode != 0:
+    sys.exit(f"FAIL: {' '.join(cmd)} exited with {run.returncode}\n{run.stdout}\n{run.stderr}")
+summary = json.load(open(os.path.join(args.out, "summary.json")))
+if not summary["converged"]:
+    sys.exit(f"FAIL: the run did not converge: {summary['failure']}: {summary['message']}")
+
+scene = yaml.safe_load(open(args.scene))["contactlab"]
+spins = [l for l in scene["Loads"].values() if l.get("Type") == "centrifugal"]
+if len(spins) != 1 or spins[0].get("Block", ""):
+    sys.exit("FAIL: the check expects one centrifugal load on every block")
+rho_w2 = float(spins[0]["Density"]) * float(spins[0]["Angular Velocity"]) ** 2
+centre = np.array([float(c) for c in spins[0].get("Centre", [0, 0])][:2])
+
+# The last output of the series.
+pvd = ET.parse(os.path.join(args.out, "result.pvd")).getroot()
+last = pvd.findall(".//DataSet")[-1].get("file")
+path = os.path.join(args.out, last)
+reader = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else \
+    vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName(path)
+reader.Update()
+grid = reader.GetOutput()
+points = np.array([grid.GetPoint(i)[:2] for i in range(grid.GetNumberOfPoints())])
+disp = grid.GetPointData().GetArray("displacement")
+u = np.array([disp.GetTuple(i)[:2] for i in range(grid.GetNumberOfPoints())])
+position = points if args.dead else points + u
+blocks = grid.GetCellData().GetArray("material")
+
+g = 1 / np.sqrt(3)
+gauss = [(-g, -g), (g, -g), (g, g), (-g, g)]
+moment = {}  # block -> int (x - c) dA0
+top_block, top_y = None, -np.inf
+for c in range(grid.GetNumberOfCells()):
+    cell = grid.GetCell(c)
+    ids = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
+    X, x = points[ids], position[ids]
+    block = int(blocks.GetValue(c))
+    if X[:, 1].max() > top_y:
+        top_block, top_y = block, X[:, 1].max()
+    if cell.GetCellType() == vtk.VTK_QUAD:
+        m = np.zeros(2)
+        for xi, eta in gauss:
+            N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta),
+                                 (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
+            dN = 0.25 * np.array([[-(1 - eta), -(1 - xi)], [(1 - eta), -(1 + xi)],
+                                  [(1 + eta), (1 + xi)], [-(1 + eta), (1 - xi)]])
+            J = X.T @ dN
+            m += np.linalg.det(J) * (N @ x - centre)
+    elif cell.GetCellType() == vtk.VTK_TRIANGLE:
+        area = 0.5 * np.cross(X[1] - X[0], X[2] - X[0])
+        m = area * (x.mean(axis=0) - centre)
+    else:
+        sys.exit("FAIL: the check integrates quad4 and tri3 cells only")
+    moment[block] = moment.get(block, np.zeros(2)) + m
+
+blade = rho_w2 * moment[top_block]  # the block reaching highest is the blade
+total = rho_w2 * sum(moment.values())
+contact = np.array(summary["contact"]["normal_force_vector"][:2])
+hub = np.array(next(iter(summary["reactions"].values()))[:2])
+contact_error = np.linalg.norm(contact + blade) / np.linalg.norm(blade)
+hub_error = np.linalg.norm(hub + total) / np.linalg.norm(blade)
+
+disc = summary["discretization"]
+print(f"RESULT discretization={list(disc.values())[0]} dofs={summary['dofs']} "
+      f"contact_dofs={summary['unknowns']['contact_multipliers']} "
+      f"newton={summary['iterations']['newton']} geometry={summary['iterations']['geometry']} "
+      f"seconds={summary['seconds']['total']:.2f}")
+print(f"RESULT blade_load=({blade[0]:.6g}, {blade[1]:.6g}) contact=({contact[0]:.6g}, "
+      f"{contact[1]:.6g}) hub=({hub[0]:.6g}, {hub[1]:.6g}) total_load=({total[0]:.6g}, "
+      f"{total[1]:.6g})")
+print(f"RESULT contact_balance_error={contact_error:.3e} hub_balance_error={hub_error:.3e} "
+      f"max_pressure={summary['contact']['max_pressure']:.6g}")
+failed = [name for name, e in (("contact", contact_error), ("hub", hub_error)) if not e <= args.tol]
+if failed:
+    sys.exit(f"FAIL: the {' and '.join(failed)} balance is off by more than {args.tol}")
+print("PASS")
