@@ -120,8 +120,10 @@ TEST(MumpsSolver, TheAutomaticOrderingIsTheOneMumpsUses) {
     EXPECT_LT(test::relativeDifference(*y, *x), 1e-12);
   }
   // SCOTCH orders with threads and a clock seed unless told otherwise: the same matrix must get
-  // the same ordering, so the same solution to the last bit, in every solver and every run.
-  if (MumpsSolver::hasScotch()) {
+  // the same ordering, so the same solution to the last bit, in every solver and every run. On
+  // one rank only: on several, MUMPS' dynamic scheduling of the factorization between the
+  // processes already varies the last bits from run to run, whatever the ordering.
+  if (MumpsSolver::hasScotch() && world()->getSize() == 1) {
     MumpsSolver again(automatic, world());
     const auto y = solveWith(again, A, *b);
     EXPECT_EQ(test::relativeDifference(*y, *x), 0.0);
