@@ -189,7 +189,10 @@ MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>&
   m.icntl(20) = 0;  // dense right-hand side ...
   m.icntl(21) = 0;  // ... and solution, centralized on the host
   // ICNTL(7), the ordering, is set before each analysis (setMatrix): it depends on the size.
-  m.icntl(28) = 1;  // sequential analysis: the parallel one fails here (INFOG(1) = -38)
+  // Sequential analysis. The parallel one fails with PORD only (INFOG(1) = -38); with
+  // PT-SCOTCH (ICNTL(29) = 1) it runs, but measured no faster on 2 ranks (tet10 Hertz, 46 572
+  // dofs: linear solves 21.0 s against 19.2 s sequential; doc/performance.md).
+  m.icntl(28) = 1;
   m.icntl(14) = options.memoryRelaxation;
   m.icntl(33) = options.determinant ? 1 : 0;
   m.icntl(11) = 0;
