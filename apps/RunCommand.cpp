@@ -190,7 +190,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     ContactResultants cr;
     if (contact) {
       cr = contact->resultants();
-      if (root) contactCsv.write(*contact, sm.contact);
+      if (root) contactCsv.write(*contact, sm.contact, *sm.model.mesh);
       convergedContact = summary.contactBlock(cr).set("time", s.time);
     }
     // Read before the uniqueness check, whose assemblies count in the next step's timings.

@@ -1,7 +1,10 @@
 #pragma once
 // contact.csv (DESIGN.md §5): one row per contact point of the last converged step, with its
-// coordinates, gap (empty where the point found no master), pressure, tangential traction,
-// slip and status. Rewritten after each converged step (atomically, by rank 0).
+// current coordinates and its reference ones beside them (reference_x..z: comparing with a
+// reference solution needs no nearest-node match), gap (empty where the point found no master),
+// pressure, tangential traction, slip and status. Rewritten after each converged step (atomically,
+// by rank 0).
+#include "core/mesh/Mesh.hpp"
 #include "formulations/ContactProblem.hpp"
 #include "formulations/ContactZone.hpp"
 
@@ -16,7 +19,8 @@ class ContactCsv {
 
   // The points of `contact` in its present state; call on rank 0 only (the results are
   // gathered there).
-  void write(const ContactProblem& contact, const std::vector<ContactZone>& zones) const;
+  void write(const ContactProblem& contact, const std::vector<ContactZone>& zones,
+             const Mesh& mesh) const;
 
  private:
   const std::string path_;

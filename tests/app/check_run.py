@@ -62,6 +62,20 @@ if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN
     status = grid.GetPointData().GetArray("contact_status")
     closed_vtk = sum(1 for i in range(status.GetNumberOfTuples()) if status.GetValue(i) > 0)
     assert closed_vtk >= summary["contact"]["contact_points_closed"] > 0, closed_vtk
+    # Each point's reference coordinates are a mesh node's (a VTK point), and its current ones
+    # are those plus the node's displacement (two bodies may have nodes at one position).
+    displacement = grid.GetPointData().GetArray("displacement")
+    nodes = {}
+    for i in range(grid.GetNumberOfPoints()):
+        u = list(displacement.GetTuple(i)) + [0.0] * (3 - displacement.GetNumberOfComponents())
+        nodes.setdefault(tuple(round(c, 9) for c in grid.GetPoint(i)), []).append(u)
+    for p in points:
+        reference = [float(p[f"reference_{c}"]) for c in "xyz"]
+        candidates = nodes.get(tuple(round(c, 9) for c in reference), [])
+        assert candidates, f"contact.csv node {p['node']}: reference {reference} is no mesh node"
+        scale = 1 + max(abs(c) for c in reference)
+        assert any(all(abs(float(p[c]) - reference[k] - u[k]) <= 1e-9 * scale
+                       for k, c in enumerate("xyz")) for u in candidates), p
 rank_array = grid.GetCellData().GetArray("rank")
 ranks_seen = {int(rank_array.GetValue(i)) for i in range(rank_array.GetNumberOfTuples())}
 assert ranks_seen == set(range(ranks)), ranks_seen
