@@ -298,9 +298,10 @@ void MumpsSolver::analyse() {
   m.analysed = false;
   m.factored = false;
 #ifdef CONTACTLAB_MUMPS_HAS_SCOTCH
-  // Debian's SCOTCH seeds its generator from the clock: the same matrix then gets another
-  // ordering, other round-off and, on a chaotic Newton path, another run each time. Reset to
-  // the fixed seed, every analysis orders a given matrix the same way.
+  // SCOTCH's generator state carries over from one analysis to the next in a process, so a
+  // matrix's ordering (hence its round-off) would depend on how many analyses came before it
+  // (measured: the Cattaneo run below takes another path without the reset). Reset to the fixed
+  // seed, every analysis orders a given matrix the same way.
   SCOTCH_randomReset();
 #endif
   m.run(1);

@@ -162,6 +162,12 @@ std::vector<double> dualCoefficients(int n, const std::vector<double>& d,
   return A;
 }
 
+// Facet types whose multiplier bases are built on transformed functions (corner integrals zero
+// or negative: multiplierBasisTransform).
+bool hasTransformedBasis(ElementType type) {
+  return type == ElementType::Tri6 || type == ElementType::Quad8;
+}
+
 // Row-major product of two n x n matrices, and A B^T.
 std::vector<double> multiply(int n, const std::vector<double>& A, const std::vector<double>& B,
                              bool transposeB = false) {
@@ -490,7 +496,7 @@ std::vector<double> multiplierBasisTransform(ElementType type) {
   std::vector<double> T(static_cast<std::size_t>(n) * n, 0.0);
   for (int j = 0; j < n; ++j)
     T[j * n + j] = 1.0;
-  if (type != ElementType::Tri6 && type != ElementType::Quad8) return T;
+  if (!hasTransformedBasis(type)) return T;
   // Corner i gains alpha of the mid-edge functions beside it; mid-edge node c + i sits between
   // corners i and i + 1 (gmsh order) and keeps 1 - 2 alpha of its own.
   constexpr double alpha = 0.2;
@@ -545,7 +551,7 @@ MortarIntegrals integrateMortar(const Facet& slave,
     integrate3d(slave, slaveNormals, masters, out);
   if (dual && out.coveredArea > 0)
     toDualBasis(whole, multiplierBasisTransform(slave.type), ns, out);
-  else if (!dual && (slave.type == ElementType::Tri6 || slave.type == ElementType::Quad8))
+  else if (!dual && hasTransformedBasis(slave.type))
     changeBasis(multiplierBasisTransform(slave.type), ns, out);
   return out;
 }

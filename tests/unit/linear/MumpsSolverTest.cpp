@@ -119,7 +119,7 @@ TEST(MumpsSolver, TheAutomaticOrderingIsTheOneMumpsUses) {
     EXPECT_EQ(*other.orderingUsed(), o);
     EXPECT_LT(test::relativeDifference(*y, *x), 1e-12);
   }
-  // SCOTCH orders with threads and a clock seed unless told otherwise: the same matrix must get
+  // SCOTCH orders with a thread per core unless told otherwise: the same matrix must get
   // the same ordering, so the same solution to the last bit, in every solver and every run. On
   // one rank only: on several, MUMPS' dynamic scheduling of the factorization between the
   // processes already varies the last bits from run to run, whatever the ordering.
