@@ -8,24 +8,23 @@ An expectation `probes.tip.value.1=-0.0123@1e-3` compares a summary.json value (
 list indices allowed) with a relative tolerance; `@a1e-9` makes it absolute. A key `A/B` compares
 the ratio of two values (e.g. a friction force over the normal force), `A+B` their sum (e.g. a
 contact force and a spring force whose sum the load fixes)."""
-import csv, json, os, shutil, subprocess, sys
+import csv, json, os, shutil, sys
 
 import vtk
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 exe, scene, out, ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 sets, expectations = [], []
 args = iter(sys.argv[5:])
 for arg in args:
     if arg == "--set":
-        sets += ["--set", next(args)]
+        sets.append(next(args))
     else:
         expectations.append(arg)
 shutil.rmtree(out, ignore_errors=True)
-cmd = [exe, "run"] + ([scene] if scene != "-" else []) + ["--out", out] + sets
-if ranks > 1:
-    cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
+cmd, run = contactlab_run(exe, scene if scene != "-" else None, out, sets, ranks, timeout=600)
 print(run.stdout, run.stderr)
 assert run.returncode == 0, f"exit code {run.returncode}"
 assert "summary.json" in run.stdout and "result.pvd" in run.stdout

@@ -15,12 +15,15 @@ Each error is |sum| / |centrifugal resultant of the blade|; TOL bounds both.
 usage: check_blade_root.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--dead] [--set key=value ...]
 Prints "RESULT ..." lines for doc/verification.md (dofs, contact dofs, Newton iterations, wall
 time, the balance errors and the peak contact pressure)."""
-import argparse, json, os, shutil, subprocess, sys
+import argparse, json, os, shutil, sys
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import vtk
 import yaml
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("app")
@@ -33,13 +36,8 @@ ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
 shutil.rmtree(args.out, ignore_errors=True)
-cmd = [args.app, "run", args.scene, "--out", args.out, "--quiet"]
-for s in args.set:
-    cmd += ["--set", s]
-if args.ranks > 1:
-    cmd = ["mpirun", "-np", str(args.ranks), "--oversubscribe"] + cmd
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=900)
+cmd, run = contactlab_run(args.app, args.scene, args.out, args.set, args.ranks,
+                          options=["--quiet"])
 if run.returncode != 0:
     sys.exit(f"FAIL: {' '.join(cmd)} exited with {run.returncode}\n{run.stdout}\n{run.stderr}")
 summary = json.load(open(os.path.join(args.out, "summary.json")))

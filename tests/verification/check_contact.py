@@ -22,7 +22,10 @@ CASE:
              the run must stop with a named reason (exit code 1, failure not null) and keep
              its last converged step.
 Prints one line "RESULT case h error" for the documentation tables."""
-import argparse, csv, json, math, os, shutil, subprocess, sys
+import argparse, csv, json, math, os, shutil, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -45,13 +48,7 @@ ap.add_argument("--metric", choices=["max", "rms"], default="max",
 args = ap.parse_args()
 
 shutil.rmtree(args.out, ignore_errors=True)
-cmd = [args.exe, "run", args.scene, "--out", args.out]
-for s in args.set:
-    cmd += ["--set", s]
-if args.ranks > 1:
-    cmd = ["mpirun", "-np", str(args.ranks), "--oversubscribe"] + cmd
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=900)
+cmd, run = contactlab_run(args.exe, args.scene, args.out, args.set, args.ranks)
 print(" ".join(cmd)); print(run.stdout, run.stderr)
 summary = json.load(open(os.path.join(args.out, "summary.json")))
 
