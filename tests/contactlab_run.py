@@ -1,17 +1,34 @@
 """`contactlab run` as the test scripts start it: on one rank, or under mpirun on several (as root
 too, as the CI runs), with the output captured. Imported by scripts in tests/app and
 tests/verification (they put tests/ on sys.path)."""
+import json
 import os
+import shutil
 import subprocess
+import sys
 
 
-def contactlab_run(exe, scene, out, sets=(), ranks=1, options=(), timeout=900):
-    """Runs `exe run [SCENE] --out OUT [options] --set S ...` (no SCENE when `scene` is None: the
-    built-in one) on `ranks` ranks; returns the command and its CompletedProcess."""
-    cmd = [exe, "run"] + ([scene] if scene is not None else []) + ["--out", out] + list(options)
+def contactlab_run(exe, scene, out, sets=(), ranks=1, options=(), timeout=900, command="run"):
+    """Runs `exe COMMAND [SCENE] --out OUT [options] --set S ...` (COMMAND `run` or
+    `critical-mu`; no SCENE when `scene` is None: the built-in one) on `ranks` ranks; returns the
+    command and its CompletedProcess."""
+    cmd = [exe, command] + ([scene] if scene is not None else []) + ["--out", out] + list(options)
     for s in sets:
         cmd += ["--set", s]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     return cmd, subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)
+
+
+def converged_run(exe, scene, out, sets=(), ranks=1):
+    """A fresh `run --quiet` into OUT that must exit 0 and converge (else the script exits with
+    FAIL and why); returns its summary.json."""
+    shutil.rmtree(out, ignore_errors=True)
+    cmd, run = contactlab_run(exe, scene, out, sets, ranks, options=["--quiet"])
+    if run.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited with {run.returncode}\n{run.stdout}\n{run.stderr}")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    if not summary["converged"]:
+        sys.exit(f"FAIL: the run did not converge: {summary['failure']}: {summary['message']}")
+    return summary

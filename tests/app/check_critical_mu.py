@@ -6,17 +6,17 @@ why it is not computed.
 usage: check_critical_mu.py CONTACTLAB SCENES_DIR WORKDIR"""
 import json, os, shutil, subprocess, sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
+
 exe, scenes, work = sys.argv[1:4]
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
 def run(scene, ranks):
     out = os.path.join(work, f"{scene}-np{ranks}")
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "critical-mu", os.path.join(scenes, scene + ".yaml"), "--out", out]
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-    r = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
+    _, r = contactlab_run(exe, os.path.join(scenes, scene + ".yaml"), out, ranks=ranks,
+                          timeout=300, command="critical-mu")
     assert r.returncode == 0, r.stdout + r.stderr
     assert "critical-mu" in r.stdout, r.stdout
     return json.load(open(os.path.join(out, "summary.json")))["critical_mu"]

@@ -33,13 +33,11 @@ out = os.path.join(work, "out")
 r = subprocess.run([exe, "study", reduced, "--out", out, "--no-plots"], capture_output=True,
                    text=True, timeout=1200)
 print(r.stdout[-4000:], r.stderr[-2000:])
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from checklist import Checklist  # noqa: E402
 
-
-def check(what, ok):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+checklist = Checklist()
+check, failures = checklist.check, checklist.failures
 
 
 check("the study completes", r.returncode == 0)

@@ -12,13 +12,11 @@ import csv, os, shutil, subprocess, sys, time
 exe, scenes, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from checklist import Checklist  # noqa: E402
 
-
-def check(what, ok):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+checklist = Checklist()
+check, failures = checklist.check, checklist.failures
 
 
 study = os.path.join(work, "study.yaml")

@@ -15,7 +15,7 @@ Each error is |sum| / |centrifugal resultant of the blade|; TOL bounds both.
 usage: check_blade_root.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--dead] [--set key=value ...]
 Prints "RESULT ..." lines for doc/verification.md (dofs, contact dofs, Newton iterations, wall
 time, the balance errors and the peak contact pressure)."""
-import argparse, json, os, shutil, sys
+import argparse, json, os, sys
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -23,7 +23,7 @@ import vtk
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import contactlab_run  # noqa: E402
+from contactlab_run import converged_run  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("app")
@@ -35,14 +35,7 @@ ap.add_argument("--dead", action="store_true")
 ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
-shutil.rmtree(args.out, ignore_errors=True)
-cmd, run = contactlab_run(args.app, args.scene, args.out, args.set, args.ranks,
-                          options=["--quiet"])
-if run.returncode != 0:
-    sys.exit(f"FAIL: {' '.join(cmd)} exited with {run.returncode}\n{run.stdout}\n{run.stderr}")
-summary = json.load(open(os.path.join(args.out, "summary.json")))
-if not summary["converged"]:
-    sys.exit(f"FAIL: the run did not converge: {summary['failure']}: {summary['message']}")
+summary = converged_run(args.app, args.scene, args.out, args.set, args.ranks)
 
 scene = yaml.safe_load(open(args.scene))["contactlab"]
 spins = [l for l in scene["Loads"].values() if l.get("Type") == "centrifugal"]

@@ -15,7 +15,11 @@ tangential force within 1e-6)."""
 import json, os, shutil, subprocess, sys
 
 exe, scene, work, mu = sys.argv[1:5]
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from checklist import Checklist  # noqa: E402
+
+checklist = Checklist()
+check, failures = checklist.check, checklist.failures
 
 
 def run(name, *sets):
@@ -26,12 +30,6 @@ def run(name, *sets):
         cmd += ["--set", s]
     subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     return json.load(open(os.path.join(out, "summary.json")))
-
-
-def check(what, ok):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 converged = {}

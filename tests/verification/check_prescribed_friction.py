@@ -7,22 +7,23 @@ preset must converge, say once which nodes had a friction direction dropped, and
 must give the same contact forces (1e-6); on 1 and 2 ranks.
 
 usage: check_prescribed_friction.py CONTACTLAB SCENE WORKDIR RANKS"""
-import json, os, shutil, subprocess, sys
+import json, os, shutil, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 exe, scene, work, ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-launcher = ["mpirun", "-np", str(ranks), "--oversubscribe"] if ranks > 1 else []
 failures, forces = [], {}
 for formulation in ["augmented-lagrangian", "lagrange"]:
     for method in ["partial-newton", "generalized-newton", "fixed-point"]:
         out = os.path.join(work, f"{formulation}-{method}")
         shutil.rmtree(out, ignore_errors=True)
-        cmd = launcher + [exe, "run", scene, "--out", out,
-                          "--set", f"Contact/floor/Formulation/Type={formulation}",
-                          "--set", "Contact/floor/Formulation/lagrange/Normal Complementarity Constant=1000",
-                          "--set", "Contact/floor/Formulation/lagrange/Tangential Complementarity Constant=10",
-                          "--set", f"Algorithm/Method={method}"]
-        run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
+        _, run = contactlab_run(
+            exe, scene, out, ranks=ranks, timeout=300,
+            sets=[f"Contact/floor/Formulation/Type={formulation}",
+                  "Contact/floor/Formulation/lagrange/Normal Complementarity Constant=1000",
+                  "Contact/floor/Formulation/lagrange/Tangential Complementarity Constant=10",
+                  f"Algorithm/Method={method}"])
         summary = json.load(open(os.path.join(out, "summary.json")))
         said = [l for l in run.stderr.splitlines() if "friction multiplier is dropped" in l]
         label = f"{formulation} {method}: {summary['failure'] or 'converged'}"

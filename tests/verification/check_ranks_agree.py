@@ -4,19 +4,18 @@ compares contact.csv point by point (pressure, gap, tangential traction, status)
 summary's resultants and iteration counts.
 
 usage: check_ranks_agree.py CONTACTLAB SCENE OUTDIR [TOL]   (TOL relative to the max pressure)"""
-import csv, json, os, shutil, subprocess, sys
+import csv, json, os, shutil, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 exe, scene, out = sys.argv[1:4]
 tol = float(sys.argv[4]) if len(sys.argv) > 4 else 1e-8
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 results = {}
 for ranks in (1, 2):
     d = os.path.join(out, f"np{ranks}")
     shutil.rmtree(d, ignore_errors=True)
-    cmd = [exe, "run", scene, "--out", d]
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-    run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
+    _, run = contactlab_run(exe, scene, d, ranks=ranks, timeout=600)
     assert run.returncode == 0, run.stdout + run.stderr
     rows = {(r["zone"], r["node"]): r for r in csv.DictReader(open(os.path.join(d, "contact.csv")))}
     results[ranks] = (rows, json.load(open(os.path.join(d, "summary.json"))))

@@ -15,7 +15,11 @@ A scene with density 0 is refused before solving, with a sentence."""
 import json, os, shutil, subprocess, sys
 
 exe, scene, work = sys.argv[1:4]
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from checklist import Checklist  # noqa: E402
+
+checklist = Checklist()
+check, failures = checklist.check, checklist.failures
 
 
 def run(name, *sets):
@@ -27,12 +31,6 @@ def run(name, *sets):
     r = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     path = os.path.join(out, "summary.json")
     return json.load(open(path)) if os.path.exists(path) else None, r
-
-
-def check(what, ok):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 slow = ["Algorithm/Regularization=slow-dynamics"]

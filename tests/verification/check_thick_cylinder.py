@@ -31,11 +31,14 @@ CASE:
 Options: --pressure P, --hardening H and --nu NU set the scene's load, isotropic hardening
 modulus and Poisson ratio (and the reference's); --plot PNG draws the stresses against r; --ranks N.
 Prints "RESULT ..." lines for doc/verification.md."""
-import argparse, csv, json, math, os, shutil, subprocess, sys
+import argparse, csv, json, math, os, shutil, sys
 
 import numpy as np
 import vtk
 import yaml
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import contactlab_run  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -170,13 +173,7 @@ print(f"reference: p = {p:g}, k = {ref.k:.6g}, h = H/3G = {ref.h:.6g}, c = {ref.
       f"u(b) = {ref.displacement(b):.6g}")
 
 shutil.rmtree(args.out, ignore_errors=True)
-cmd = [args.exe, "run", args.scene, "--out", args.out]
-for s in sets:
-    cmd += ["--set", s]
-if args.ranks > 1:
-    cmd = ["mpirun", "-np", str(args.ranks), "--oversubscribe"] + cmd
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
+cmd, run = contactlab_run(args.exe, args.scene, args.out, sets, args.ranks, timeout=600)
 print(" ".join(cmd)); print(run.stdout, run.stderr)
 summary = json.load(open(os.path.join(args.out, "summary.json")))
 

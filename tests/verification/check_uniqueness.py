@@ -17,14 +17,12 @@ With friction switched off, or with the second solution gone, step 3 fails."""
 import csv, json, os, shutil, subprocess, sys
 
 exe, scene, work = sys.argv[1:4]
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from checklist import Checklist  # noqa: E402
+
+checklist = Checklist()
+check, failures = checklist.check, checklist.failures
 TOP = 0.05  # the largest prescribed displacement of the strut's top
-
-
-def check(what, ok):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def run(name, *sets, command="run"):
