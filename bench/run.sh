@@ -52,4 +52,12 @@ python3 bench/critical_mu.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-criti
 # Mortar against node-to-segment on the two-body 3D Hertz up to ~100 000 dofs (~25 minutes).
 python3 bench/mortar.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-mortar" \
   --doc doc/performance.md
-echo "bench: doc/performance.md updated"
+# The seed's 3D ironing: every slab x method on the shipped scene (~25 minutes); --large adds
+# the full travel (~40 minutes). Writes doc/verification.md.
+/usr/bin/python3 bench/ironing3d.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-ironing3d-small" \
+  --small --doc doc/verification.md
+if [[ "${1:-}" == "--large" ]]; then
+  /usr/bin/python3 bench/ironing3d.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-ironing3d" \
+    --doc doc/verification.md
+fi
+echo "bench: doc/performance.md and doc/verification.md updated"

@@ -20,6 +20,10 @@ std::vector<std::string> stepColumns(bool criticalMuColumn) {
                                    "contact_points",
                                    "stick_points",
                                    "slip_points",
+                                   "normal_force",
+                                   "contact_force_x",
+                                   "contact_force_y",
+                                   "contact_force_z",
                                    "cycling_events"};
   for (int k = 1; k < kCyclingKinds; ++k)
     columns.push_back(std::string("cycling_") + cyclingKindName(static_cast<CyclingKind>(k)));
@@ -59,7 +63,11 @@ void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
                                F::format(cr.contact),
                                F::format(cr.stick),
                                F::format(cr.slip),
-                               F::format(events)};
+                               F::format(cr.normalForceMagnitude)};
+  // The force history of a pressed or dragged body: the contact force on the slave surfaces.
+  for (int i = 0; i < 3; ++i)
+    row.push_back(F::format(cr.normalForce[i] + cr.tangentialForce[i]));
+  row.push_back(F::format(events));
   for (int k = 1; k < kCyclingKinds; ++k)
     row.push_back(F::format(s.cycling[k]));
   row.push_back(condition ? F::format(*condition) : std::string());

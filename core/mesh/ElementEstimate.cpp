@@ -26,6 +26,11 @@ bool simplex(const std::string& name) {
   }
 }
 
+// Hexahedra of a structured box of n[0] x n[1] x n[2] divisions.
+double boxCells(const std::array<int, 3>& n) {
+  return double(n[0]) * n[1] * n[2];
+}
+
 // Cells of a structured block: quads/hexes, or 2 triangles / 6 tetrahedra each.
 double structured(const std::string& type, double cells, int dim) {
   return simplex(type) ? cells * (dim == 2 ? 2 : 6) : cells;
@@ -127,8 +132,11 @@ double estimateElements(const StackedBlocks2DParams& p) {
 }
 
 double estimateElements(const StackedBlocks3DParams& p) {
-  const auto cells = [](const std::array<int, 3>& n) { return double(n[0]) * n[1] * n[2]; };
-  return structured(p.elementType, cells(p.lowerDivisions) + cells(p.upperDivisions), 3);
+  return structured(p.elementType, boxCells(p.lowerDivisions) + boxCells(p.upperDivisions), 3);
+}
+
+double estimateElements(const DieOnSlabParams& p) {
+  return structured(p.elementType, boxCells(p.slabDivisions) + boxCells(p.dieDivisions), 3);
 }
 
 double estimateElements(const HalfDiscParams& p) {

@@ -215,4 +215,28 @@ struct BladeRootParams {
 };
 Mesh generateBladeRoot(const BladeRootParams& p);
 
+// The ironing benchmark of Puso & Laursen (2004), two separately meshed bodies (disjoint
+// nodes): a slab [0, Slab Length] x [0, Slab Width] x [0, Slab Height] (structured) and a die,
+// a cylindrical shell segment with its axis along y: outer radius Die Radius, Die Thickness
+// thick, Die Width wide (centred on the slab's width, so a wider die overhangs both sides),
+// spanning Die Angle degrees centred on straight down. The die's lowest outer point is at
+// x = Die Start, Gap above the slab's top. Die Divisions are through the thickness, along the
+// width and along the arc. Types: tet4 tet10 hex8 hex20 hex27. Blocks "slab", "die"; faces
+// "slab-top", "slab-bottom", "slab-xmin", "slab-xmax", "slab-ymin", "slab-ymax", "die-outer"
+// (the convex contact face), "die-inner" (its back, where a tool would hold it), "die-sides"
+// (y faces), "die-ends" (the arc's ends).
+struct DieOnSlabParams {
+  std::array<double, 3> slabLengths{9.0, 4.0, 3.0};
+  std::array<int, 3> slabDivisions{18, 8, 6};
+  double dieRadius = 3.0;
+  double dieThickness = 0.2;
+  double dieWidth = 5.2;
+  double dieAngle = 180.0;
+  double dieStart = 2.5;
+  double gap = 0.0;
+  std::array<int, 3> dieDivisions{1, 10, 24};
+  std::string elementType = "hex8";
+};
+Mesh generateDieOnSlab(const DieOnSlabParams& p);
+
 }  // namespace contactlab

@@ -217,6 +217,34 @@ RCP<const ParameterList> stacked3DParameters() {
   return p;
 }
 
+RCP<const ParameterList> dieOnSlabParameters() {
+  auto p = Teuchos::rcp(new ParameterList("die-on-slab"));
+  DieOnSlabParams d;
+  const auto [l, w, h] = d.slabLengths;
+  p->set("Slab Length", l, "Slab length along x, the sliding direction (> 0)");
+  p->set("Slab Width", w, "Slab width along y (> 0)");
+  p->set("Slab Height", h,
+         "Slab height along z (> 0); its bottom is z = 0, its top z = Slab Height");
+  p->set("Slab Divisions",
+         arrayOf<int>({d.slabDivisions[0], d.slabDivisions[1], d.slabDivisions[2]}),
+         "nx, ny, nz of the slab");
+  p->set("Die Radius", d.dieRadius, "Outer radius of the die's cylindrical face (> 0)");
+  p->set("Die Thickness", d.dieThickness, "Radial thickness of the die (> 0, < Die Radius)");
+  p->set("Die Width", d.dieWidth,
+         "Die length along its axis (y), centred on the slab's width; wider than the slab, it "
+         "overhangs both sides");
+  p->set("Die Angle", d.dieAngle,
+         "Arc of the die in degrees, in (0, 180], centred on straight down (180: a half cylinder)");
+  p->set("Die Start", d.dieStart, "x of the die's lowest point, on the slab: [0, Slab Length]");
+  p->set("Gap", d.gap, "Initial gap between the die's lowest point and the slab's top");
+  p->set("Die Divisions", arrayOf<int>({d.dieDivisions[0], d.dieDivisions[1], d.dieDivisions[2]}),
+         "Divisions of the die through its thickness, along its width and along its arc (an "
+         "element spans at most 30 degrees of arc)");
+  p->set("Element", d.elementType, "Element type (tets: each hex split into 6)", oneOf(k3D));
+  addElementLimit(*p);
+  return p;
+}
+
 RCP<const ParameterList> bladeRootParameters() {
   auto p = Teuchos::rcp(new ParameterList("blade-root"));
   BladeRootParams d;
@@ -407,6 +435,26 @@ void registerMeshSources() {
            g.thickness = p.get<double>("Thickness");
            g.layers = p.get<int>("Layers");
            return std::make_unique<Mesh>(generateBladeRoot(withinLimit("blade-root", p, g)));
+         }});
+  r.add({"die-on-slab",
+         "Puso & Laursen's 3D ironing: a slab and a cylindrical shell-segment die above it, its "
+         "axis along y, meshed separately (structured). Blocks 'slab', 'die'; faces 'slab-top', "
+         "'slab-bottom', 'slab-xmin', 'slab-xmax', 'slab-ymin', 'slab-ymax', 'die-outer' (the "
+         "convex contact face), 'die-inner' (its back), 'die-sides', 'die-ends'.",
+         dieOnSlabParameters, [](const ParameterList& p, const std::string&) {
+           DieOnSlabParams g;
+           g.slabLengths = {p.get<double>("Slab Length"), p.get<double>("Slab Width"),
+                            p.get<double>("Slab Height")};
+           g.slabDivisions = fixed<3, int>(p, "Slab Divisions");
+           g.dieRadius = p.get<double>("Die Radius");
+           g.dieThickness = p.get<double>("Die Thickness");
+           g.dieWidth = p.get<double>("Die Width");
+           g.dieAngle = p.get<double>("Die Angle");
+           g.dieStart = p.get<double>("Die Start");
+           g.gap = p.get<double>("Gap");
+           g.dieDivisions = fixed<3, int>(p, "Die Divisions");
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(generateDieOnSlab(withinLimit("die-on-slab", p, g)));
          }});
   r.add({"stacked-blocks-2d",
          "Two separately meshed blocks, one on the other (contact patch test). Blocks 'lower', "

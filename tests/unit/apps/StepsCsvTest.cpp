@@ -59,6 +59,26 @@ TEST(StepsCsv, CriticalMuColumnOnlyWhenTheCheckRuns) {
   std::filesystem::remove(without);
 }
 
+// The force history: sum w p and the vector sum of the normal and tangential forces.
+TEST(StepsCsv, ContactForceColumns) {
+  const std::string path = scratch("force.csv");
+  StepsCsv csv(path, false);
+  StepReport s;
+  s.step = 1;
+  ContactResultants r;
+  r.normalForceMagnitude = 5.0;
+  r.normalForce = {0.5, 0.0, -4.0};
+  r.tangentialForce = {1.5, 0.25, 0.125};
+  csv.addStep(s, r, std::nullopt, 0, 0, std::nullopt);
+  csv.write();
+  const auto rows = readCsv(path);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "normal_force")), 5.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_x")), 2.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_y")), 0.25);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_z")), -3.875);
+  std::filesystem::remove(path);
+}
+
 // The contact problem's timers are cumulated over the run: each row gets its step's share, and
 // the contact terms come out of the assembly time, which includes them.
 TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
