@@ -11,7 +11,7 @@ usage: ironing3d.py CONTACTLAB SCENES OUTDIR [--doc doc/verification.md] [--only
                     [--reuse]
 Run it with Debian's /usr/bin/python3 (python3-matplotlib).
 """
-import argparse, csv, datetime, json, os, re, subprocess
+import argparse, csv, json, os, subprocess, sys
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scenes"); ap.add_argument("out")
@@ -109,10 +109,8 @@ plot = os.path.join(folder, f"{marker}-forces.png")
 fig.savefig(plot, dpi=110)
 
 if args.doc:
-    text = open(args.doc).read()
-    start, end = f"<!-- bench:{marker}:start -->", f"<!-- bench:{marker}:end -->"
-    how = "`bench/ironing3d.py --small`" if args.small else "`bench/ironing3d.py`"
-    block = (f"{start}\nMeasured {datetime.date.today()} by {how}:\n\n{table}\n\n"
-             f"![die forces](figures/{marker}-forces.png)\n{end}")
-    text = re.sub(re.escape(start) + ".*?" + re.escape(end), block, text, flags=re.S)
-    open(args.doc, "w").write(text)
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import docblock  # noqa: E402
+    how = "bench/ironing3d.py --small" if args.small else "bench/ironing3d.py"
+    docblock.write(args.doc, marker, how,
+                   f"{table}\n\n![die forces](figures/{marker}-forces.png)\n")

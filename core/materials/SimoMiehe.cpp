@@ -195,11 +195,13 @@ void SimoMiehe::evaluate(const MaterialInput& in, MaterialOutput& out) const {
     c2 = 6.0 * G * G * (dgamma / qTrial - 1.0 / (3.0 * G + H));
     alpha += dgamma;
     // Exponential map: b_e = exp(2 eps_e) in the same frame, C_p^-1 = F^-1 b_e F^-T.
+    const double beNewPrincipal[3] = {std::exp(2.0 * eps[0]), std::exp(2.0 * eps[1]),
+                                      std::exp(2.0 * eps[2])};
     Mat3 beNew{};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         for (int a = 0; a < 3; ++a)
-          beNew[i * 3 + j] += std::exp(2.0 * eps[a]) * Q[i * 3 + a] * Q[j * 3 + a];
+          beNew[i * 3 + j] += beNewPrincipal[a] * Q[i * 3 + a] * Q[j * 3 + a];
     toVoigt(multiplyTranspose(multiply(Finv, beNew), Finv), state + kInversePlasticStrain);
   }
 
@@ -234,20 +236,33 @@ void SimoMiehe::evaluate(const MaterialInput& in, MaterialOutput& out) const {
       principal[a][c] = M / (2.0 * b[c]);
       shear[a][c] = a == c ? 0.0 : 0.5 * G * c1 * logDividedDifference(b[a], b[c]);
     }
+  // D_ijkl = sum_ac principal_ac (n_a n_a)_ij (n_c n_c)_kl
+  //        + sum_(a != c) shear_ac (n_a n_c)_ij ((n_a n_c)_kl + (n_a n_c)_lk);
+  // (n_a n_c)_lk = (n_c n_a)_kl and shear_ac = shear_ca, so the second sum is over the pairs
+  // a < c of shear_ac S_ij S_kl with S = n_a n_c + n_c n_a: 3 + 3 products per entry.
+  constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  double pairBasis[3][9];
+  for (int p = 0; p < 3; ++p)
+    for (int ij = 0; ij < 9; ++ij)
+      pairBasis[p][ij] = basis[(kPairs[p][0] * 3 + kPairs[p][1]) * 9 + ij] +
+                         basis[(kPairs[p][1] * 3 + kPairs[p][0]) * 9 + ij];
   double D[81];
-  for (int ij = 0; ij < 9; ++ij)
-    for (int kl = 0; kl < 9; ++kl) {
-      const int lk = (kl % 3) * 3 + kl / 3;
-      double d = 0.0;
+  for (int ij = 0; ij < 9; ++ij) {
+    double left[3], leftPair[3];
+    for (int c = 0; c < 3; ++c) {
+      left[c] = 0.0;
       for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 3; ++c) {
-          d += principal[a][c] * basis[(a * 4) * 9 + ij] * basis[(c * 4) * 9 + kl];
-          if (a != c)
-            d += shear[a][c] * basis[(a * 3 + c) * 9 + ij] *
-                 (basis[(a * 3 + c) * 9 + kl] + basis[(a * 3 + c) * 9 + lk]);
-        }
+        left[c] += principal[a][c] * basis[(a * 4) * 9 + ij];
+    }
+    for (int p = 0; p < 3; ++p)
+      leftPair[p] = shear[kPairs[p][0]][kPairs[p][1]] * pairBasis[p][ij];
+    for (int kl = 0; kl < 9; ++kl) {
+      double d = 0.0;
+      for (int c = 0; c < 3; ++c)
+        d += left[c] * basis[(c * 4) * 9 + kl] + leftPair[c] * pairBasis[c][kl];
       D[ij * 9 + kl] = d;
     }
+  }
 
   // d b_e_mn / dF_kL = delta_mk B_Ln + delta_nk B_Lm with B = C_p^-1 F^T, so
   // d tau_ij / dF_kL = 2 D_ijkn B_Ln; d (F^-T)_jJ / dF_kL = -F^-1_Jk F^-1_Lj. Then

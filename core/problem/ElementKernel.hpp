@@ -83,6 +83,18 @@ class ElementKernel {
   // Throws std::invalid_argument when the material is not of this kernel's kinematics or has
   // internal variables but no state arrays were given.
   void checkMaterial(const Material& material, const double* stateOld, double* stateNew) const;
+  // Copies the strictly upper blocks K_ab (b > a, dim x dim each) of a numDofs()^2 row-major
+  // tangent onto K_ba^T, adding to what is there: the kernels accumulate only the blocks
+  // b >= a of a symmetric tangent.
+  template <int D>
+  void addMirroredUpperBlocks(double* tangent) const {
+    const int n = numNodes_, nd = D * n;
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        for (int i = 0; i < D; ++i)
+          for (int k = 0; k < D; ++k)
+            tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
+  }
 
   static constexpr int kMaxNodes = 27;
 

@@ -98,12 +98,7 @@ void SmallStrainKernel::computeImpl(const double* x, const double* u, const Mate
   }
   // Only the blocks b >= a were accumulated (plus unsymmetric corrections below the diagonal):
   // mirror the strictly upper blocks.
-  if (tangent)
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b)
-        for (int i = 0; i < D; ++i)
-          for (int k = 0; k < D; ++k)
-            tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
+  if (tangent) addMirroredUpperBlocks<D>(tangent);
   if (averageStress)
     for (int k = 0; k < 6; ++k)
       averageStress[k] /= volume;

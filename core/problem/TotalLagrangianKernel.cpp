@@ -46,6 +46,11 @@ void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const 
   // AB[(i D + J) nd + b D + k] = w sum_L dP_iJ/dF_kL dN_b/dX_L: the tangent's rows are then
   // D fused rows of AB, as in the small-strain kernel.
   double AB[D * D * kMaxNodes * D];
+  // A material whose dP/dF has the major symmetry dP_iJ/dF_kL = dP_kL/dF_iJ (symmetricTangent)
+  // gives a symmetric K: only the blocks b >= a are accumulated (row (a, i) from column a D on),
+  // and mirrored at the end, as in the small-strain kernel. Its dP/dF is symmetric up to
+  // round-off only, so the material's word decides, not a comparison.
+  const bool symmetric = material.symmetricTangent();
   MaterialInput in;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
@@ -104,15 +109,23 @@ void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const 
       }
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < D; ++i) {
+        // Row (a, i) is sum_J dN_a/dX_J AB[i D + J]: D fused rows, which vectorize.
         double* row = &tangent[(a * D + i) * nd];
-        for (int J = 0; J < D; ++J) {
-          const double g = dNdX[a * D + J];
-          const double* m = &AB[(i * D + J) * nd];
-          for (int c = 0; c < nd; ++c)
-            row[c] += g * m[c];
+        const double* g = &dNdX[a * D];
+        const double* m0 = &AB[(i * D) * nd];
+        const double* m1 = &AB[(i * D + 1) * nd];
+        const int first = symmetric ? a * D : 0;
+        if constexpr (D == 2) {
+          for (int c = first; c < nd; ++c)
+            row[c] += g[0] * m0[c] + g[1] * m1[c];
+        } else {
+          const double* m2 = &AB[(i * D + 2) * nd];
+          for (int c = first; c < nd; ++c)
+            row[c] += g[0] * m0[c] + g[1] * m1[c] + g[2] * m2[c];
         }
       }
   }
+  if (tangent && symmetric) addMirroredUpperBlocks<D>(tangent);
   if (averageStress)
     for (int k = 0; k < 6; ++k)
       averageStress[k] /= volume;
