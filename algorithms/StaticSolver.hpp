@@ -13,7 +13,8 @@
 //   partial-newton       geometry a fixed point, thresholds and statuses in Newton
 // Every Newton iterate feeds the cycling detector; the treatment (none, automatic, forced)
 // acts on the cycling points for the rest of the step. A failed step is cut in two, up to
-// Max Cuts times; steps that converge easily let the step grow back.
+// Max Cuts times and never below End Time / Steps / 2^Max Cuts; steps that converge without a
+// cut let the step grow back.
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/NewtonMethod.hpp"
 #include "core/problem/ContactControls.hpp"

@@ -129,5 +129,45 @@ TEST(StaticSolverForcedTreatment, AViolatingStateThatNewtonCannotLeaveIsNamed) {
   EXPECT_NE(report.message.find("max-iterations"), std::string::npos) << report.message;
 }
 
+// Fails the first attempt at every step and solves the retry: each step converges only after
+// a cut, so the step never grows back. After 100 solves it solves everything (the bound that
+// lets a run without the floor end instead of creeping towards t = 1 forever).
+class FailsEveryFirstAttempt : public NewtonMethod {
+ public:
+  explicit FailsEveryFirstAttempt(OnePointSystem& system) : system_(system) {}
+  int solves = 0;
+
+  NewtonOutcome solve(Vector& x, const NewtonRequest&, const Observer&) override {
+    NewtonOutcome out;
+    out.iterations = 1;
+    if (++solves % 2 == 1 && solves < 100) {
+      out.failure = "max-iterations";
+      out.message = "scripted";
+      return out;
+    }
+    x.getDataNonConst(0)[0] = system_.root();
+    return out;
+  }
+
+ private:
+  OnePointSystem& system_;
+};
+
+TEST(StaticSolverStepCuts, NoStepIsCutBelowTheSmallestMaxCutsAllows) {
+  OnePointSystem system(/*natural=*/1.0);
+  FailsEveryFirstAttempt newton(system);
+  StaticSolverOptions options;
+  options.maxCuts = 3;  // smallest step 1/8
+  StaticSolver solver(system, &system, newton, options);
+  auto u = system.createVector();
+  const RunReport report = solver.run(*u, {});
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, "step-too-small");
+  EXPECT_NE(report.message.find("the smallest step"), std::string::npos) << report.message;
+  // Steps to 1/2, 3/4 and 7/8 converge after one cut each; the next would need dt = 1/16.
+  EXPECT_EQ(report.steps, 3);
+  EXPECT_EQ(newton.solves, 7);
+}
+
 }  // namespace
 }  // namespace contactlab
