@@ -110,7 +110,8 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm()
   p->set("Cycling Treatment", "combined",
          "What to do at a point detected cycling (doc/algorithms.md): 'none' (count it), "
          "'automatic' (multiply its coefficients by 10, within [1e-2, 1e2] times the local "
-         "stiffness E/h; refused for penalty, whose coefficients are the model), 'forced' "
+         "stiffness E/h; refused for penalty, whose coefficients are the model; Lagrange's "
+         "points are forced, its constants only picking the status), 'forced' "
          "(impose its status for the rest of the step: closed for contact cycles, slip for "
          "stick-slip, stick for slip reversal), 'combined' ('forced' for the friction cycles, "
          "'automatic' for the contact cycles, 'forced' for them too with the geometry in "
