@@ -65,6 +65,10 @@ struct LawOutput {
   // Where the friction status switches, for a closed point: slip when > 0 ((|x| - rho) / rho of
   // the law's projection on its friction ball); 0 without friction.
   double frictionIndicator = 0.0;
+  // A closed point whose friction threshold is round-off (frictionThresholdIsRoundoff): it
+  // transmits no friction, so it neither sticks nor slips, whatever status the algorithms use
+  // (the results write it as closed without friction).
+  bool frictionlessClosed = false;
 };
 
 // Friction thresholds at or below the pressure of a penetration of kTouchingGap times the
@@ -100,6 +104,10 @@ class ContactLaw {
   // Whether the coefficients change the solution (penalty) rather than only the path to it;
   // the automatic cycling treatment, which adapts them, is refused for such laws.
   virtual bool coefficientsChangeSolution() const { return false; }
+  // Whether the coefficients enter the forces of a status (augmented Lagrangian, penalty),
+  // rather than only choosing the status (Lagrange): what the automatic cycling treatment, which
+  // scales them, relies on.
+  virtual bool coefficientsEnterForces() const { return true; }
   // Whether J is symmetric for a point with nt friction components, whatever its status (with
   // the kinematics' B, the point's tangent B^T J B is then symmetric too): the linear solver
   // may then take the assembled tangent as symmetric.

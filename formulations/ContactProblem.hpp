@@ -65,8 +65,11 @@ struct ContactPointResult {
   std::array<double, 3> normal{};
   std::array<double, 3> slip{};  // accumulated slip (sum of converged increments)
   ContactStatus status = ContactStatus::Free;
-  bool frictional = false;  // the point carries friction (mu > 0)
-  int cycling = 0;          // cycling kind detected in the step (CyclingKind), 0 none
+  // The point carries friction: mu > 0 and, if closed, a threshold above round-off
+  // (LawOutput::frictionlessClosed); otherwise a closed point is written as closed without
+  // friction, not as stick or slip.
+  bool frictional = false;
+  int cycling = 0;  // cycling kind detected in the step (CyclingKind), 0 none
 };
 
 // contact_status as written to contact.csv and the VTK output, one meaning everywhere: 0 free,
@@ -112,6 +115,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   std::vector<ContactPointState> pointStates() const override;
   void forceStatus(std::size_t point, int status) override;
   bool scaleCoefficients(std::size_t point, double factor) override;
+  bool scalingChangesForces(std::size_t point) const override;
   void releaseTreatments() override;
   void releaseForcedStatuses() override;
   void seedInitialStatuses(Vector& x, double t) override;
@@ -148,6 +152,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   struct MortarRow {
     std::map<std::int64_t, double> slave, master;
     std::array<double, 3> normal{};
+    bool quadratic = false;  // on quadratic slave facets
   };
   // The mortar rows of zone z's slave nodes at the current positions (the slave facets against
   // the master facets `search` finds within the search distance).

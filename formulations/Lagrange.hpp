@@ -18,6 +18,7 @@ class Lagrange : public MultiplierLaw {
   std::string name() const override { return "lagrange"; }
   // J(g, p) = -w always, J(p, g) = -w only on a closed point: not symmetric at an open one.
   bool symmetricJacobian(int /*nt*/) const override { return false; }
+  bool coefficientsEnterForces() const override { return false; }
 
  private:
   void writeNormalRow(const LawInput& in, const PointState& s, LawOutput& out) const override;

@@ -47,6 +47,7 @@ void MultiplierLaw::evaluate(const LawInput& in, LawOutput& out) const {
       out.r[lam + k] = w * in.Lambda[k];
       J(lam + k, lam + k) = w;
     }
+    out.frictionlessClosed = s.closed;
     if (s.closed && (in.frozenStatus == 2 || in.frozenStatus == kSlipOnset))
       out.status = ContactStatus::Slip;  // as frozen
     return;

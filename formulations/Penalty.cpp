@@ -49,6 +49,8 @@ void Penalty::evaluate(const LawInput& in, LawOutput& out) const {
   }
   out.threshold = tau;
   out.status = b.inside ? ContactStatus::Stick : ContactStatus::Slip;
+  // At zero penetration the threshold is zero and the point transmits no friction.
+  out.frictionlessClosed = frictionThresholdIsRoundoff(tau, in, epsN_);
 }
 
 }  // namespace contactlab

@@ -59,6 +59,9 @@ class ContactControls {
   // bound stops it).
   virtual void forceStatus(std::size_t point, int status) = 0;
   virtual bool scaleCoefficients(std::size_t point, double factor) = 0;
+  // Whether scaling a point's coefficients changes its forces within a status (the augmented
+  // Lagrangian's p - r_n g and P(Lambda + r_t v)); Lagrange's constants only pick the status.
+  virtual bool scalingChangesForces(std::size_t /*point*/) const { return true; }
   virtual void releaseTreatments() = 0;
   // Ends the forced statuses (and their frozen thresholds) only: the state is then judged by
   // the model's own contact law; coefficients and cycling marks stay.

@@ -10,7 +10,8 @@ and the two Newton presets (at mu = 0.45 these end with degraded-contact without
 predictor on the drag steps, doc/algorithms.md "Predictor": their forced state violates the contact
 law at two points by far more than the tolerance, Newton from it cycles again, and the run says so
 instead of reporting it converged; checked with Newton/Predictor none). Step cutting saves the
-untreated generalized Newton. Every run that converges ends in the same state (normal and
+untreated generalized Newton, and 'automatic' saves Lagrange's Newton presets too (its cycling
+points forced). Every run that converges ends in the same state (normal and
 tangential force within 1e-6)."""
 import json, os, shutil, subprocess, sys
 
@@ -62,6 +63,20 @@ check(f"mu={mu} generalized-newton none with step cutting: {s['failure'] or 'con
       f"{s['load_steps']['cuts']} cuts", s["converged"] and s["load_steps"]["cuts"] > 0)
 if s["converged"]:
     converged["generalized-newton none, cuts"] = s
+
+# Lagrange, its constants the scene's augmentations (c_n = 20, c_t = 100): they only pick the
+# status, so 'automatic' forces its cycling points instead of scaling them (before, both Newton
+# presets cycled to max-iterations at the first drag step, |R| 9e6, where the augmented
+# Lagrangian converges).
+for method in ["generalized-newton", "partial-newton"]:
+    s = run(f"{method}-automatic-lagrange", f"Algorithm/Method={method}",
+            "Algorithm/Cycling Treatment=automatic", "Contact/floor/Formulation/Type=lagrange",
+            "Contact/floor/Formulation/lagrange/Normal Complementarity Constant=20",
+            "Contact/floor/Formulation/lagrange/Tangential Complementarity Constant=100")
+    check(f"mu={mu} {method} automatic, lagrange: {s['failure'] or 'converged'} {s['cycling']}",
+          s["converged"])
+    if s["converged"]:
+        converged[f"{method} automatic, lagrange"] = s
 
 reference = converged.get("generalized-newton automatic")
 if reference:
