@@ -68,7 +68,7 @@ Mesh generateDieOnSlab(const DieOnSlabParams& p) {
       "generated die on slab (" + p.elementType + ", slab " + std::to_string(p.slabDivisions[0]) +
       "x" + std::to_string(p.slabDivisions[1]) + "x" + std::to_string(p.slabDivisions[2]) +
       ", die " + std::to_string(nr) + "x" + std::to_string(nw) + "x" + std::to_string(na) + ")";
-  // The index box sits below the slab, clear of it by a slab height.
+  // The index box sits below the slab, two slab heights clear of it.
   const std::array<double, 3> indexOrigin{0.0, 0.5 * (width - p.dieWidth), -2 * height - na};
   Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
