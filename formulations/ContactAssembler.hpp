@@ -1,0 +1,50 @@
+#pragma once
+// The assembly stage of the contact pipeline: the monolithic tangent's graph (the solid's plus
+// each contact point's couplings, rebuilt only when a pairing changes, since the direct solver
+// redoes its symbolic analysis then), and the insertion of the solid's residual and tangent and
+// of each point's element terms on the rows this rank owns. Dirichlet-constrained rows get no
+// contact terms and constrained columns are zeroed (the solid's rows there are identity rows).
+#include "base/LinearAlgebra.hpp"
+#include "formulations/ContactPoint.hpp"
+#include "formulations/ContactSurfaceState.hpp"
+
+#include <vector>
+
+namespace contactlab {
+
+class ContactAssembler {
+ public:
+  // `map`: the monolithic map, its first `ownedDisplacements` entries the solid's owned dofs.
+  ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplacements,
+                   const ContactSurfaceState& state);
+
+  // The graph of the solid's tangent plus every point's dofs x (dofs, geometryDofs); sets each
+  // point's rows and column indices.
+  void buildGraph(const Matrix& solidTangent, std::vector<ContactPoint>& points);
+  const Teuchos::RCP<Matrix>& matrix() const { return matrix_; }
+  // Whether the graph changed since the last call.
+  bool takePatternChanged();
+
+  // An assembly: begin() copies the solid's residual (null: none wanted) and tangent (null: no
+  // tangent) in, add() inserts one point's terms (`geometric`: ke carries the geometryDofs'
+  // columns too), end() completes the matrix.
+  void begin(Vector* residual, const Vector* solidResidual, const Matrix* solidTangent);
+  void add(const ContactPoint& pt, const std::vector<double>& re, const std::vector<double>& ke,
+           bool geometric);
+  void end();
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  LO ownedDisplacements_;
+  const ContactSurfaceState& state_;
+  Teuchos::RCP<Matrix> matrix_;
+  std::vector<std::size_t> solidOffsets_;  // solid CRS entry -> our CRS entry
+  bool patternChanged_ = true;
+  // The assembly in progress.
+  Teuchos::ArrayRCP<double> residual_;
+  bool withTangent_ = false;
+  std::vector<double> row_;
+  std::vector<LO> columns_;
+};
+
+}  // namespace contactlab

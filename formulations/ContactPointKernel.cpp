@@ -1,0 +1,178 @@
+#include "formulations/ContactPointKernel.hpp"
+
+#include "formulations/PrescribedSlip.hpp"
+
+namespace contactlab {
+namespace {
+
+double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+}  // namespace
+
+ContactPointKernel::ContactPointKernel(int dim, const std::vector<ContactZone>& zones,
+                                       const Discretizations& discretizations,
+                                       ContactSurfaceState& state)
+    : dim_(dim), zones_(zones), discretizations_(discretizations), state_(state) {}
+
+void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
+                                  std::vector<double>& re, std::vector<double>& ke) const {
+  const ContactZone& zone = zones_[pt.zone];
+  const ContactDiscretization& discretization = *discretizations_[pt.zone];
+  const ContactLaw& law = *zone.law;
+  const int nt = pt.nt, nk = 1 + nt, n = law.size(nt);
+  const int nu = pt.displacementDofs(dim_);
+  const int nd = static_cast<int>(pt.dofs.size());
+  auto s = state_.values();
+
+  // Operators B_i (i = 0: gap, 1..nt: slip components) on the displacement dofs.
+  std::vector<double> B(static_cast<std::size_t>(nk) * nu, 0.0);
+  const std::array<double, 3>* dirs[3] = {&pt.normal, &pt.t1, &pt.t2};
+  LawInput in;
+  in.weight = pt.weight;
+  in.mu = zone.friction * frictionScale_;
+  in.nt = nt;
+  const auto xs = state_.position(pt.node);
+  std::array<double, 3> rel{}, slip{};  // x_s - x_m, and the slip increment
+  if (pt.paired) {
+    const auto us = state_.displacement(pt.node, false);
+    const auto usc = state_.displacement(pt.node, true);
+    for (int c = 0; c < 3; ++c) {
+      rel[c] = pt.self * xs[c];
+      slip[c] = pt.self * (us[c] - usc[c]);
+    }
+    discretization.subtractMasterSide(pt, state_, t, tConverged_, rel, slip);
+    for (int i = 0; i < nk; ++i) {
+      const auto& d = *dirs[i];
+      for (int c = 0; c < dim_; ++c) {
+        B[i * nu + c] = pt.self * d[c];
+        for (std::size_t a = 0; a < pt.master.size(); ++a)
+          B[i * nu + (1 + a) * dim_ + c] = -pt.N[a] * d[c];
+      }
+    }
+    in.gap = dot(pt.normal, rel);
+    for (int k = 0; k < nt; ++k)
+      in.slip[k] = dot(*dirs[1 + k], slip);
+  } else {
+    in.gap = discretization.searchDistance();  // apart: no master within reach
+  }
+  if (pt.multiplier >= 0) {
+    const int m = state_.multiplierPosition(pt.multiplier);
+    in.p = s[m];
+    for (int k = 0; k < nt; ++k)
+      in.Lambda[k] = s[m + 1 + k];
+  }
+  for (int k = 0; k < nt; ++k)
+    in.tangentialOld[k] = dot(*dirs[1 + k], pt.resistanceOld);
+  in.frozenStatus = pt.forcedStatus >= 0 ? pt.forcedStatus : pt.frozenStatus;
+  // Without a master point there is nothing to be closed on, whatever the multiplier says.
+  if (!pt.paired) in.frozenStatus = 0;
+  in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
+  in.coefficientScale = pt.coefficientScale;
+  LawOutput out;
+  law.evaluate(in, out);
+  pt.prescribedSlip = 0;
+  if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_) {
+    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, pt.freeDofs);
+    pt.prescribedSlip = prescribed.prescribed;
+    dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
+  }
+  pt.threshold = out.threshold;
+  pt.indicator = out.indicator;
+  pt.frictionIndicator = out.frictionIndicator;
+
+  ContactPointResult& r = pt.result;
+  r.zone = pt.zone;
+  r.node = pt.node;
+  r.x = xs;
+  r.weight = pt.weight;
+  r.paired = pt.paired;
+  r.gap = in.gap;
+  // An open point transmits nothing: its multiplier's last bits (1e-75 with lagrange) are not
+  // a pressure.
+  r.pressure = out.status == ContactStatus::Free ? 0.0 : out.pressure;
+  r.normal = pt.normal;
+  r.status = out.status;
+  r.frictional = pt.nt > 0 && !out.frictionlessClosed;
+  r.cycling = pt.cycling;
+  r.traction = {0, 0, 0};
+  pt.slipIncrement = {0, 0, 0};
+  for (int k = 0; k < nt; ++k)
+    for (int c = 0; c < 3; ++c) {
+      if (out.status != ContactStatus::Free)
+        r.traction[c] += out.tangentialTraction[k] * (*dirs[1 + k])[c];
+      pt.slipIncrement[c] += in.slip[k] * (*dirs[1 + k])[c];
+    }
+  for (int c = 0; c < 3; ++c)
+    r.slip[c] = pt.slipTotal[c] + pt.slipIncrement[c];
+
+  // Element residual and tangent on (displacement dofs, multipliers).
+  re.assign(nd, 0.0);
+  for (int d = 0; d < nu; ++d)
+    for (int i = 0; i < nk; ++i)
+      re[d] += out.r[i] * B[i * nu + d];
+  for (int j = nu; j < nd; ++j)
+    re[j] = out.r[nk + (j - nu)];
+  if (!withTangent) return;
+  ke.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+  auto J = [&](int i, int j) { return out.J[i * n + j]; };
+  // Law variable index of element dof column/row j >= nu: nk + (j - nu).
+  for (int a = 0; a < nd; ++a) {
+    for (int b = 0; b < nd; ++b) {
+      double v = 0;
+      if (a < nu && b < nu) {
+        for (int i = 0; i < nk; ++i) {
+          if (B[i * nu + a] == 0.0) continue;
+          for (int j = 0; j < nk; ++j)
+            v += B[i * nu + a] * J(i, j) * B[j * nu + b];
+        }
+      } else if (a < nu) {
+        for (int i = 0; i < nk; ++i)
+          v += B[i * nu + a] * J(i, nk + (b - nu));
+      } else if (b < nu) {
+        for (int j = 0; j < nk; ++j)
+          v += J(nk + (a - nu), j) * B[j * nu + b];
+      } else {
+        v = J(nk + (a - nu), nk + (b - nu));
+      }
+      ke[static_cast<std::size_t>(a) * nd + b] = v;
+    }
+  }
+}
+
+void ContactPointKernel::geometricColumns(const ContactPoint& pt, double t, GeometricTerms terms,
+                                          std::vector<double>& ke) const {
+  const ContactDiscretization& discretization = *discretizations_[pt.zone];
+  const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
+  const int nc = nd + ng;
+  const int nu = pt.displacementDofs(dim_);
+  // The multiplier columns stay the law's (exact); every displacement column is a central
+  // difference of the residual with the geometry recomputed. The status piece is kept (the
+  // generalized Jacobian of that piece, as the frozen-geometry tangent).
+  std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
+  for (int i = 0; i < nd; ++i)
+    for (int j = nu; j < nd; ++j)
+      full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
+  const double h = 1e-7 * pt.length(dim_);
+  auto s = state_.mutableValues();
+  std::vector<double> plus, minus, unused;
+  for (int j = 0; j < nc; ++j) {
+    if (j >= nu && j < nd) continue;
+    const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
+    const double saved = s[pos];
+    for (int side : {1, -1}) {
+      s[pos] = saved + side * h;
+      ContactPoint copy = pt;
+      copy.forcedStatus = static_cast<int>(pt.result.status);
+      discretization.refreshGeometry(copy, state_, t, terms);
+      evaluate(copy, t, false, side > 0 ? plus : minus, unused);
+    }
+    s[pos] = saved;
+    for (int i = 0; i < nd; ++i)
+      full[static_cast<std::size_t>(i) * nc + j] = (plus[i] - minus[i]) / (2 * h);
+  }
+  ke.swap(full);
+}
+
+}  // namespace contactlab

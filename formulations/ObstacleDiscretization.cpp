@@ -1,0 +1,54 @@
+#include "formulations/ObstacleDiscretization.hpp"
+
+#include "core/contact/SurfaceFrames.hpp"
+
+namespace contactlab {
+
+ObstacleDiscretization::ObstacleDiscretization(const ContactZone& zone, const Mesh& mesh, int dim)
+    : ContactDiscretization(dim, resolvedSearchDistance(zone, mesh)),
+      obstacle_(*zone.obstacle, dim) {}
+
+double ObstacleDiscretization::place(ContactPoint& pt, const std::array<double, 3>& xs,
+                                     double t) const {
+  const ObstacleProjection proj = obstacle_.project(xs.data(), t);
+  pt.normal = proj.normal;
+  const auto shift = obstacle_.translation(t);
+  for (int c = 0; c < 3; ++c)
+    pt.obstaclePoint[c] = proj.point[c] - shift[c];
+  return proj.gap;
+}
+
+PointPairing ObstacleDiscretization::pair(ContactPoint& pt, const std::array<double, 3>& xs,
+                                          const ContactSurfaceState& /*state*/, double t) {
+  PointPairing result;
+  result.size = searchDistance_ / 2;
+  result.gap = place(pt, xs, t);
+  pt.paired = result.gap < searchDistance_;
+  return result;
+}
+
+std::array<double, 3> ObstacleDiscretization::masterPoint(
+    const ContactPoint& pt, const std::array<double, 3>& /*xs*/,
+    const ContactSurfaceState& /*state*/) const {
+  return pt.obstaclePoint;
+}
+
+void ObstacleDiscretization::subtractMasterSide(const ContactPoint& pt,
+                                                const ContactSurfaceState& /*state*/, double t,
+                                                double tConverged, std::array<double, 3>& relative,
+                                                std::array<double, 3>& slip) const {
+  const auto now = obstacle_.translation(t);
+  const auto then = obstacle_.translation(tConverged);
+  for (int c = 0; c < 3; ++c) {
+    relative[c] -= pt.obstaclePoint[c] + now[c];
+    slip[c] -= now[c] - then[c];
+  }
+}
+
+void ObstacleDiscretization::refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state,
+                                             double t, GeometricTerms /*terms*/) const {
+  place(pt, state.position(pt.node), t);
+  tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+}
+
+}  // namespace contactlab
