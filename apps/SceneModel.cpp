@@ -267,6 +267,10 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   } catch (const std::invalid_argument& e) {
     throw InputError(path + "/Formulation/" + zone.formulation + ": " + e.what());
   }
+  if (zone.law->hasNormalField() && zone.discretization == Discretization::mortar)
+    throw InputError(path + "/Formulation: " + zone.formulation +
+                     " runs with node-to-segment or an obstacle, not mortar (its normal is the "
+                     "master's at a point, which mortar does not pair)");
   if (zone.initialContact != InitialContact::interpenetrated && !zone.law->hasMultipliers())
     throw InputError(path + "/Initial Contact: '" + initial + "' sets the starting statuses " +
                      "through the contact multipliers, and " + zone.formulation +

@@ -2,8 +2,8 @@
 # Runs the benchmarks and writes their tables into doc/performance.md (between markers).
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
-#   ironing, algorithms, critical-mu, mortar, ironing3d) run only those tables, all by
-#   default (ironing3d writes doc/verification.md).
+#   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field) run only those tables,
+#   all by default (ironing3d and normal-field write doc/verification.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
@@ -84,5 +84,10 @@ if want ironing3d; then
     /usr/bin/python3 bench/ironing3d.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-ironing3d" \
       --doc doc/verification.md
   fi
+fi
+if want normal-field; then
+  # The normal-field augmented Lagrangian against the augmented Lagrangian (~5 minutes).
+  /usr/bin/python3 bench/normal_field.py "$BUILD/apps/contactlab" scenes \
+    "$BUILD/bench-normal-field" --doc doc/verification.md
 fi
 echo "bench: doc/performance.md and doc/verification.md updated"

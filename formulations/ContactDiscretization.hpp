@@ -57,6 +57,14 @@ class ContactDiscretization {
                                   double t, double tConverged, std::array<double, 3>& relative,
                                   std::array<double, 3>& slip) const;
 
+  // The master's normal at the point's frozen master point, at the state's positions (the
+  // normal-field formulation's n(u)); by default the pairing's normal.
+  virtual std::array<double, 3> currentNormal(const ContactPoint& pt,
+                                              const ContactSurfaceState& /*state*/,
+                                              double /*t*/) const {
+    return pt.normal;
+  }
+
   // The geometry in Newton. Whether this discretization's pairing has derivatives in the tangent
   // (finite differences of refreshGeometry); the nodes, beyond the point's own, its normal
   // depends on with `full` terms; and the point's geometry recomputed at the state's positions.

@@ -98,6 +98,16 @@ class ContactLaw {
   virtual bool hasMultipliers() const = 0;
   // Number of law variables: kinematic (1 + nt) plus multipliers (1 + nt, if any).
   int size(int nt) const { return (1 + nt) * (hasMultipliers() ? 2 : 1); }
+  // The unknowns the formulation gives each contact point in a dim-dimensional problem, which
+  // the layout of the system's unknowns reserves: the multipliers (p, Lambda) the law evaluates,
+  // then any of the formulation's own that the kernel handles (the normal field's n_s).
+  virtual int pointUnknowns(int nt, int /*dim*/) const { return hasMultipliers() ? 1 + nt : 0; }
+  // Normal-field formulations: the point's last dim unknowns are a slave normal n_s, which the
+  // gap is measured along, tied to the master normal n(u) by the equation
+  // w kappa_n (n_s - n(u)) = 0 (ContactPointKernel). kappa_n for a point of the given size
+  // (its tributary length, or the root of its area); only called when hasNormalField().
+  virtual bool hasNormalField() const { return false; }
+  virtual double normalFieldPenalty(double /*size*/) const { return 0.0; }
   virtual void evaluate(const LawInput& in, LawOutput& out) const = 0;
   // The normal coefficient (c_n, r_n or eps_n) before any local scaling.
   virtual double normalCoefficient() const = 0;

@@ -19,8 +19,9 @@ struct ContactPoint {
   std::int64_t node = -1;
   double weight = 0;           // of the contact conditions (mortar: sum_k D_jk, nominal)
   double referenceWeight = 0;  // tributary area in the reference configuration
-  GO multiplier = -1;          // first multiplier GID (-1: none)
-  int nt = 0;                  // friction directions (0: frictionless)
+  GO multiplier = -1;          // first GID of the point's unknowns (-1: none)
+  int unknowns = 0;  // the formulation's unknowns at the point (ContactLaw::pointUnknowns)
+  int nt = 0;        // friction directions (0: frictionless)
   // Frozen geometry. The gap is n . (self x_s - sum_a N_a x_a): node-to-segment has self = 1 and
   // `master` the master facet's nodes; mortar has self = D_jj / w_j and `master` the other slave
   // nodes (N = -D_jk / w_j) then the master nodes (N = M_jl / w_j).

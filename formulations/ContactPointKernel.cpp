@@ -24,11 +24,19 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   const int nt = pt.nt, nk = 1 + nt, n = law.size(nt);
   const int nu = pt.displacementDofs(dim_);
   const int nd = static_cast<int>(pt.dofs.size());
+  const int nl = nu + (n - nk);  // the dofs the law's variables cover: displacements, multipliers
   auto s = state_.values();
+  // The gap's normal: the pairing's, or the normal-field formulation's unknown n_s (the point's
+  // last dim unknowns, after the law's multipliers).
+  const bool field = law.hasNormalField() && pt.multiplier >= 0;
+  std::array<double, 3> gapNormal = pt.normal;
+  if (field)
+    for (int c = 0; c < dim_; ++c)
+      gapNormal[c] = s[state_.multiplierPosition(pt.multiplier) + (n - nk) + c];
 
   // Operators B_i (i = 0: gap, 1..nt: slip components) on the displacement dofs.
   std::vector<double> B(static_cast<std::size_t>(nk) * nu, 0.0);
-  const std::array<double, 3>* dirs[3] = {&pt.normal, &pt.t1, &pt.t2};
+  const std::array<double, 3>* dirs[3] = {&gapNormal, &pt.t1, &pt.t2};
   LawInput in;
   in.weight = pt.weight;
   in.mu = zone.friction * frictionScale_;
@@ -51,7 +59,7 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
           B[i * nu + (1 + a) * dim_ + c] = -pt.N[a] * d[c];
       }
     }
-    in.gap = dot(pt.normal, rel);
+    in.gap = dot(gapNormal, rel);
     for (int k = 0; k < nt; ++k)
       in.slip[k] = dot(*dirs[1 + k], slip);
   } else {
@@ -112,14 +120,21 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   for (int d = 0; d < nu; ++d)
     for (int i = 0; i < nk; ++i)
       re[d] += out.r[i] * B[i * nu + d];
-  for (int j = nu; j < nd; ++j)
+  for (int j = nu; j < nl; ++j)
     re[j] = out.r[nk + (j - nu)];
+  // The normal field's kinematic rows w kappa_n (n_s - n(u)).
+  const double fieldStiffness = field ? pt.weight * law.normalFieldPenalty(pt.length(dim_)) : 0.0;
+  if (field) {
+    const auto target = discretization.currentNormal(pt, state_, t);
+    for (int c = 0; c < dim_; ++c)
+      re[nl + c] = fieldStiffness * (gapNormal[c] - target[c]);
+  }
   if (!withTangent) return;
   ke.assign(static_cast<std::size_t>(nd) * nd, 0.0);
   auto J = [&](int i, int j) { return out.J[i * n + j]; };
   // Law variable index of element dof column/row j >= nu: nk + (j - nu).
-  for (int a = 0; a < nd; ++a) {
-    for (int b = 0; b < nd; ++b) {
+  for (int a = 0; a < nl; ++a) {
+    for (int b = 0; b < nl; ++b) {
       double v = 0;
       if (a < nu && b < nu) {
         for (int i = 0; i < nk; ++i) {
@@ -139,6 +154,51 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
       ke[static_cast<std::size_t>(a) * nd + b] = v;
     }
   }
+  if (!field) return;
+  // The n_s columns: the gap is n_s . rel, and the gap row's operator B_0 = n_s . (self, -N_a)
+  // carries n_s too; the slips use the pairing's tangents, free of n_s. Then the kinematic
+  // rows' own block w kappa_n I (their u columns: normalFieldColumns).
+  for (int a = 0; a < nl; ++a)
+    for (int c = 0; c < dim_; ++c) {
+      double v = 0;
+      if (a < nu) {
+        for (int i = 0; i < nk; ++i)
+          v += B[i * nu + a] * J(i, 0) * rel[c];
+        if (pt.paired && a % dim_ == c) v += out.r[0] * (a < dim_ ? pt.self : -pt.N[a / dim_ - 1]);
+      } else {
+        v = J(nk + (a - nu), 0) * rel[c];
+      }
+      ke[static_cast<std::size_t>(a) * nd + nl + c] = v;
+    }
+  for (int c = 0; c < dim_; ++c)
+    ke[static_cast<std::size_t>(nl + c) * nd + nl + c] = fieldStiffness;
+}
+
+void ContactPointKernel::normalFieldColumns(const ContactPoint& pt, double t,
+                                            std::vector<double>& ke) const {
+  const ContactDiscretization& discretization = *discretizations_[pt.zone];
+  const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
+  const int nc = nd + ng, nu = pt.displacementDofs(dim_), f0 = nd - dim_;
+  std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
+  for (int i = 0; i < nd; ++i)
+    for (int j = 0; j < nd; ++j)
+      full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
+  const double stiffness = pt.weight * zones_[pt.zone].law->normalFieldPenalty(pt.length(dim_));
+  const double h = 1e-7 * pt.length(dim_);
+  auto s = state_.mutableValues();
+  for (int j = 0; j < nc; ++j) {
+    if (j >= nu && j < nd) continue;
+    const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
+    const double saved = s[pos];
+    s[pos] = saved + h;
+    const auto plus = discretization.currentNormal(pt, state_, t);
+    s[pos] = saved - h;
+    const auto minus = discretization.currentNormal(pt, state_, t);
+    s[pos] = saved;
+    for (int c = 0; c < dim_; ++c)
+      full[static_cast<std::size_t>(f0 + c) * nc + j] = -stiffness * (plus[c] - minus[c]) / (2 * h);
+  }
+  ke.swap(full);
 }
 
 void ContactPointKernel::geometricColumns(const ContactPoint& pt, double t, GeometricTerms terms,

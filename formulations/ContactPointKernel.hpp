@@ -42,6 +42,10 @@ class ContactPointKernel {
   // geometryDofs: ke becomes dofs x (dofs + geometryDofs).
   void geometricColumns(const ContactPoint& pt, double t, GeometricTerms terms,
                         std::vector<double>& ke) const;
+  // Normal-field formulations, with the geometry frozen: appends the geometryDofs' columns to
+  // `ke` and fills the kinematic rows' displacement columns, -w kappa_n dn(u)/du, by central
+  // differences of ContactDiscretization::currentNormal.
+  void normalFieldColumns(const ContactPoint& pt, double t, std::vector<double>& ke) const;
 
  private:
   int dim_;

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace contactlab {
@@ -39,6 +40,17 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     const ContactZone& zone = zones_[z];
     if (!zone.law) throw InputError("Contact/" + zone.name + ": no formulation");
     discretizations_.push_back(makeContactDiscretization(zone, mesh, dim_));
+    std::map<std::int64_t, std::array<double, 3>> slaveNormals;
+    if (zone.law->hasNormalField()) {
+      if (zone.discretization == Discretization::mortar)
+        throw InputError("Contact/" + zone.name + ": " + zone.law->name() +
+                         " runs with node-to-segment or an obstacle, not mortar (its normal is "
+                         "the master's at a point, which mortar does not pair)");
+      std::vector<std::int64_t> facetNodes;
+      for (const CellGroup* g : mesh.findBoundaries(zone.slave))
+        facetNodes.insert(facetNodes.end(), g->nodes.begin(), g->nodes.end());
+      slaveNormals = nodalNormals(facetsOf(mesh, zone.slave), facetNodes);
+    }
     // No Friction Group: nodes whose friction the user removed (code_aster's SANS_GROUP_NO_FR).
     std::vector<std::int64_t> noFriction;
     if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);
@@ -51,11 +63,20 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       if (dofs.globalNode(node) < 0) continue;
       const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);
       const int nt = zone.friction > 0 && !frictionless ? dim_ - 1 : 0;
-      const int multipliers = zone.law->hasMultipliers() ? 1 + nt : 0;
+      const int multipliers = zone.law->pointUnknowns(nt, dim_);
       ContactPoint pt;
       pt.zone = static_cast<int>(z);
       pt.node = node;
       pt.nt = nt;
+      pt.unknowns = multipliers;
+      // A normal field is tied to the pairing's normal, and to this one before any pairing:
+      // the slave's own, turned towards it (as mortar's).
+      if (zone.law->hasNormalField()) {
+        const auto it = slaveNormals.find(node);
+        if (it != slaveNormals.end())
+          for (int c = 0; c < 3; ++c)
+            pt.normal[c] = -it->second[c];
+      }
       const auto w = weights.find(node);
       pt.weight = pt.referenceWeight = w == weights.end() ? 0.0 : w->second;
       if (multipliers > 0) {
@@ -237,10 +258,24 @@ void ContactProblem::seedInitialStatuses(Vector& x, double t) {
   const bool any = std::any_of(zones_.begin(), zones_.end(), [](const ContactZone& z) {
     return z.initialContact != InitialContact::interpenetrated;
   });
-  if (!any) return;
+  const bool field = std::any_of(zones_.begin(), zones_.end(),
+                                 [](const ContactZone& z) { return z.law->hasNormalField(); });
+  if (!any && !field) return;
   if (!frozenOnce_) updateGeometry(x, t);
-  evaluateAll(x, t);  // the gaps at x
   auto values = x.getDataNonConst(0);
+  // Normal fields start at their pairing's normals (zero would close every point: g = 0).
+  for (const ContactPoint& pt : points_) {
+    if (!zones_[pt.zone].law->hasNormalField() || pt.multiplier < 0) continue;
+    const GO first = pt.multiplier + pt.unknowns - dim_;
+    for (int c = 0; c < dim_; ++c) {
+      const LO lid = map_->getLocalElement(first + c);
+      if (lid != Teuchos::OrdinalTraits<LO>::invalid()) values[lid] = pt.normal[c];
+    }
+  }
+  if (!any) return;
+  values = Teuchos::null;
+  evaluateAll(x, t);  // the gaps at x
+  values = x.getDataNonConst(0);
   for (const ContactPoint& pt : points_) {
     const InitialContact initial = zones_[pt.zone].initialContact;
     if (initial == InitialContact::interpenetrated || pt.multiplier < 0 || !pt.paired) continue;
@@ -386,14 +421,16 @@ void ContactProblem::layOutPointDofs() {
     addNode(pt.node);
     for (std::int64_t m : pt.master)
       addNode(m);
-    const int multipliers = pt.multiplier < 0 ? 0 : 1 + pt.nt;
-    for (int k = 0; k < multipliers; ++k) {
+    for (int k = 0; k < pt.unknowns; ++k) {
       pt.dofs.push_back(pt.multiplier + k);
       pt.surfacePos.push_back(state_->multiplierPosition(pt.multiplier + k));
     }
     pt.geometryDofs.clear();
     pt.geometrySurfacePos.clear();
-    if (geometricTerms_ != GeometricTerms::full || !pt.paired) continue;
+    // The nodes the normal depends on: for the full geometric terms, and for a normal field,
+    // whose kinematic rows depend on them whatever the algorithm.
+    const bool field = zones_[pt.zone].law->hasNormalField() && pt.multiplier >= 0;
+    if ((geometricTerms_ != GeometricTerms::full && !field) || !pt.paired) continue;
     for (std::int64_t node : discretizations_[pt.zone]->normalNodes(pt)) {
       if (node == pt.node || std::find(pt.master.begin(), pt.master.end(), node) != pt.master.end())
         continue;
@@ -425,8 +462,11 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
     if (pt.result.status != before) ++statusChanges_;
     const bool geometric = withTangent && geometricTerms_ != GeometricTerms::none && pt.paired &&
                            discretizations_[pt.zone]->linearizesGeometry();
+    const bool field = withTangent && !geometric && pt.paired && pt.multiplier >= 0 &&
+                       zones_[pt.zone].law->hasNormalField();
     if (geometric) kernel_->geometricColumns(pt, t, geometricTerms_, ke);
-    assembler_->add(pt, re, ke, geometric);
+    if (field) kernel_->normalFieldColumns(pt, t, ke);
+    assembler_->add(pt, re, ke, geometric || field);
   }
   assembler_->end();
   contactSeconds_ += secondsSince(start);

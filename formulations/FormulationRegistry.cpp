@@ -2,6 +2,7 @@
 
 #include "formulations/AugmentedLagrangian.hpp"
 #include "formulations/Lagrange.hpp"
+#include "formulations/NormalFieldAugmentedLagrangian.hpp"
 #include "formulations/Penalty.hpp"
 
 namespace contactlab {
@@ -96,6 +97,34 @@ void registerFormulations() {
              throw named(e, "Normal Augmentation, Tangential Augmentation");
            }
          }});
+  r.add(
+      {"normal-field-augmented-lagrangian",
+       "The seed's non-standard augmented Lagrangian: the augmented Lagrangian with a slave "
+       "normal n_s as unknown at each point (the gap measured along it), tied to the master's "
+       "normal by w kappa_n (n_s - n(u)) = 0; node-to-segment and rigid obstacles",
+       [] {
+         auto p = Teuchos::rcp(new ParameterList(*coefficients(
+             "Normal Augmentation", 0.0, "r_n > 0 (pressure per length; required). Start near E/h",
+             "Tangential Augmentation", 0.0,
+             "r_t > 0 (inverse length; required with friction, unused without). Start near "
+             "1/h")));
+         p->set("Normal Field Penalty", 0.0,
+                "kappa_n >= 0 (pressure): weighs the kinematic condition n_s = n(u); 0 = "
+                "automatic, r_n times the point's size. It changes the Newton path, not the "
+                "converged state");
+         return Teuchos::RCP<const ParameterList>(p);
+       },
+       [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
+         try {
+           const double rn = p.get<double>("Normal Augmentation");
+           double rt = p.get<double>("Tangential Augmentation");
+           if (rt == 0.0 && rn > 0) rt = 1.0;  // unused without friction
+           return std::make_unique<NormalFieldAugmentedLagrangian>(
+               rn, rt, p.get<double>("Normal Field Penalty"));
+         } catch (const std::invalid_argument& e) {
+           throw named(e, "Normal Augmentation, Tangential Augmentation, Normal Field Penalty");
+         }
+       }});
 }
 
 }  // namespace contactlab

@@ -86,6 +86,29 @@ std::vector<std::int64_t> NodeToSegmentDiscretization::normalNodes(const Contact
   return around;
 }
 
+std::map<std::int64_t, std::array<double, 3>> NodeToSegmentDiscretization::nodalNormalsAround(
+    const ContactPoint& pt, const ContactSurfaceState& state) const {
+  std::vector<Facet> around;
+  std::vector<std::int64_t> aroundNodes;
+  for (int f : master_.facetsAround(pt.master)) {
+    around.push_back(master_.currentFacet(state, f));
+    for (int a = 0; a < master_.nodesPerFacet(); ++a)
+      aroundNodes.push_back(master_.node(static_cast<std::size_t>(f), a));
+  }
+  return nodalNormals(around, aroundNodes);
+}
+
+std::array<double, 3> NodeToSegmentDiscretization::currentNormal(const ContactPoint& pt,
+                                                                 const ContactSurfaceState& state,
+                                                                 double /*t*/) const {
+  if (!pt.paired) return pt.normal;
+  ContactPoint copy;
+  copy.master = pt.master;
+  copy.N = pt.N;
+  setSmoothedNormal(copy, nodalNormalsAround(pt, state), pt.normal.data());
+  return copy.normal;
+}
+
 void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,
                                                   const ContactSurfaceState& state, double /*t*/,
                                                   GeometricTerms terms) const {
@@ -112,14 +135,7 @@ void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,
   ReferenceElement::get(type).shape(proj.xi, pt.N.data());
   // `pairing`: the smoothed normal (and its tangents) is held, only the master point moves.
   if (terms != GeometricTerms::full) return;
-  std::vector<Facet> around;
-  std::vector<std::int64_t> aroundNodes;
-  for (int f : master_.facetsAround(pt.master)) {
-    around.push_back(master_.currentFacet(state, f));
-    for (int a = 0; a < master_.nodesPerFacet(); ++a)
-      aroundNodes.push_back(master_.node(static_cast<std::size_t>(f), a));
-  }
-  setSmoothedNormal(pt, nodalNormals(around, aroundNodes), proj.normal);
+  setSmoothedNormal(pt, nodalNormalsAround(pt, state), proj.normal);
   tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
 }
 

@@ -21,6 +21,10 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
   void prepare(const ContactSurfaceState& state, double t) override;
   PointPairing pair(ContactPoint& pt, const std::array<double, 3>& xs,
                     const ContactSurfaceState& state, double t) override;
+  // The smoothed normal at the frozen master point (shape values N) from the nodal normals of
+  // the facets around its master nodes at the current positions.
+  std::array<double, 3> currentNormal(const ContactPoint& pt, const ContactSurfaceState& state,
+                                      double t) const override;
   bool linearizesGeometry() const override { return true; }
   std::vector<std::int64_t> normalNodes(const ContactPoint& pt) const override;
   void refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state, double t,
@@ -28,6 +32,8 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
 
  private:
   // The smoothed normal at the point's master point (fallback: the facet's own normal).
+  std::map<std::int64_t, std::array<double, 3>> nodalNormalsAround(
+      const ContactPoint& pt, const ContactSurfaceState& state) const;
   void setSmoothedNormal(ContactPoint& pt,
                          const std::map<std::int64_t, std::array<double, 3>>& nodal,
                          const double* facetNormal) const;

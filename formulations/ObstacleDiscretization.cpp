@@ -45,6 +45,13 @@ void ObstacleDiscretization::subtractMasterSide(const ContactPoint& pt,
   }
 }
 
+std::array<double, 3> ObstacleDiscretization::currentNormal(const ContactPoint& pt,
+                                                            const ContactSurfaceState& state,
+                                                            double t) const {
+  const auto xs = state.position(pt.node);
+  return obstacle_.project(xs.data(), t).normal;
+}
+
 void ObstacleDiscretization::refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state,
                                              double t, GeometricTerms /*terms*/) const {
   place(pt, state.position(pt.node), t);

@@ -19,6 +19,9 @@ class ObstacleDiscretization : public ContactDiscretization {
   void subtractMasterSide(const ContactPoint& pt, const ContactSurfaceState& state, double t,
                           double tConverged, std::array<double, 3>& relative,
                           std::array<double, 3>& slip) const override;
+  // The obstacle's normal at the projection of the slave's current position.
+  std::array<double, 3> currentNormal(const ContactPoint& pt, const ContactSurfaceState& state,
+                                      double t) const override;
   bool linearizesGeometry() const override { return true; }
   void refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state, double t,
                        GeometricTerms terms) const override;

@@ -111,20 +111,24 @@ JsonValue SummaryJson::algorithm() const {
       .set("newton", toJson(params.sublist("Newton")));
 }
 
-// Displacement dofs, and the multipliers of the points that have them (one normal, and d - 1
-// friction ones with friction).
+// Displacement dofs, the multipliers of the points that have them (one normal, and d - 1
+// friction ones with friction), and the normal-field formulation's slave normals (d each).
 JsonValue SummaryJson::unknowns() const {
-  long long contactMultipliers = 0, frictionMultipliers = 0;
+  long long contactMultipliers = 0, frictionMultipliers = 0, normalField = 0;
   if (contact_)
-    for (const auto& p : contact_->results())
-      if (sm_.contact[p.zone].law->hasMultipliers()) {
+    for (const auto& p : contact_->results()) {
+      const ContactLaw& law = *sm_.contact[p.zone].law;
+      if (law.hasMultipliers()) {
         ++contactMultipliers;
         frictionMultipliers += sm_.contact[p.zone].friction > 0 ? problem_.dim() - 1 : 0;
       }
+      if (law.hasNormalField()) normalField += problem_.dim();
+    }
   return JsonValue::object()
       .set("displacement", static_cast<long long>(problem_.dofs().numGlobalDofs()))
       .set("contact_multipliers", contactMultipliers)
-      .set("friction_multipliers", frictionMultipliers);
+      .set("friction_multipliers", frictionMultipliers)
+      .set("normal_field", normalField);
 }
 
 JsonValue SummaryJson::forces(const std::vector<Reaction>& list) const {

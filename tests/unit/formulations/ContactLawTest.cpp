@@ -697,12 +697,14 @@ TEST(FormulationRegistry, DefaultsOfRequiredCoefficientsAreRejectedByName) {
   registerFormulations();
   registerFormulations();  // idempotent
   auto& registry = formulationRegistry();
-  EXPECT_EQ(registry.names().size(), 3u);
+  EXPECT_EQ(registry.names().size(), 4u);
   for (const char* name : kLawNames)
     ASSERT_TRUE(registry.has(name)) << name;
 
   const std::pair<const char*, const char*> required[] = {
-      {"penalty", "Normal Penalty"}, {"augmented-lagrangian", "Normal Augmentation"}};
+      {"penalty", "Normal Penalty"},
+      {"augmented-lagrangian", "Normal Augmentation"},
+      {"normal-field-augmented-lagrangian", "Normal Augmentation"}};
   for (const auto& [name, key] : required) {
     const auto& entry = registry.get(name);
     const auto defaults = entry.validParameters();
