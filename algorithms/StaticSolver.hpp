@@ -17,9 +17,9 @@
 // cut let the step grow back.
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/NewtonMethod.hpp"
-#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SlowDynamics.hpp"
+#include "formulations/ContactControls.hpp"
 #include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>

@@ -38,9 +38,9 @@
 #include "core/contact/ContactSearch.hpp"
 #include "core/contact/RigidObstacle.hpp"
 #include "core/io/MeshPiece.hpp"
-#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/Problem.hpp"
+#include "formulations/ContactControls.hpp"
 #include "formulations/ContactZone.hpp"
 
 #include <array>
