@@ -4,10 +4,11 @@
 // Per load step: prescribed values at the new time (spread through the body by the tangent
 // predictor when they moved), the geometry paired at the predictor, then a Newton solve
 // (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to them,
-// innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
-// Newton" follows the iterate instead (statuses and thresholds through the formulation's
-// generalized Jacobian; the geometry re-paired at every iterate, its derivatives in the tangent
-// as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
+// innermost first: contact statuses, friction thresholds, geometry, each a FixedPointLoop that
+// the preset composed (algorithms/AlgorithmPresets.hpp) and that solveStep runs generically. A
+// nonlinearity "in Newton" follows the iterate instead (statuses and thresholds through the
+// formulation's generalized Jacobian; the geometry re-paired at every iterate, its derivatives
+// in the tangent as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
 //   fixed-point          geometry, thresholds, statuses all fixed points
 //   generalized-newton   all three in Newton
 //   partial-newton       geometry a fixed point, thresholds and statuses in Newton
@@ -16,6 +17,7 @@
 // Max Cuts times and never below End Time / Steps / 2^Max Cuts; steps that converge without a
 // cut let the step grow back.
 #include "algorithms/CyclingDetector.hpp"
+#include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SlowDynamics.hpp"
@@ -26,7 +28,9 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -148,6 +152,8 @@ class StaticSolver {
   const StaticSolverOptions options_;
   LinearSolver* solver_;
   CyclingDetector detector_;
+  // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
+  std::vector<std::unique_ptr<FixedPointLoop>> loops_;
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;

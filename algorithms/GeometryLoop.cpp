@@ -1,0 +1,30 @@
+#include "algorithms/GeometryLoop.hpp"
+
+#include "algorithms/StaticSolver.hpp"
+
+#include <algorithm>
+
+namespace contactlab {
+
+std::string GeometryLoop::failureMessage() const {
+  return "the contact geometry still moved after " + std::to_string(updates()) +
+         " updates (Newton/Max Geometry Iterations)";
+}
+
+FixedPointLoop::MovedStateTest GeometryLoop::testMovedState(const Vector& x, double t,
+                                                            double reference, Vector& residual) {
+  // Newton converged at a geometry frozen at this very iterate: when the update changes the
+  // residual by less than the geometry tolerance, the fixed point has converged too.
+  system_.assemble(x, t, &residual, false);
+  MovedStateTest test;
+  test.tested = true;
+  test.residual = residual.norm2();
+  test.target = std::max(absoluteTolerance_, tolerance_ * reference);
+  return test;
+}
+
+void GeometryLoop::count(StepReport& report) const {
+  ++report.geometryIterations;
+}
+
+}  // namespace contactlab

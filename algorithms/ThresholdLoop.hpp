@@ -1,0 +1,33 @@
+#pragma once
+// The friction thresholds mu p as a loop: as a fixed point, frozen at the last update while
+// Newton runs (Tresca friction), then updated from the converged pressures; an update that
+// moves a threshold by more than Threshold Tolerance times the largest restarts Newton, at most
+// Algorithm/Max Threshold Iterations times per geometry update.
+#include "algorithms/FixedPointLoop.hpp"
+#include "formulations/ContactControls.hpp"
+
+namespace contactlab {
+
+class ThresholdLoop : public FixedPointLoop {
+ public:
+  ThresholdLoop(ContactControls& controls, bool inNewton, int maxUpdates, double tolerance)
+      : FixedPointLoop(inNewton, maxUpdates), controls_(controls), tolerance_(tolerance) {}
+
+  std::string name() const override { return "thresholds"; }
+  void freeze() override { controls_.freezeThresholds(true); }
+  bool update(const Vector& x, double t) override {
+    return controls_.updateThresholds(x, t) > tolerance_;
+  }
+  std::string failure() const override { return "thresholds-not-converged"; }
+  std::string failureMessage() const override;
+
+ protected:
+  void release() override { controls_.freezeThresholds(false); }
+  void count(StepReport& report) const override;
+
+ private:
+  ContactControls& controls_;
+  double tolerance_;
+};
+
+}  // namespace contactlab
