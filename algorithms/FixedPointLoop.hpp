@@ -9,25 +9,34 @@
 // Newton; the step ends when none moves, or when a loop's own test accepts the moved state. A
 // preset is an ordered list of loops (composeLoops, algorithms/AlgorithmPresets.hpp), so a new
 // nonlinearity is a new class here, not a new branch in the solver.
+#include "algorithms/StepReport.hpp"
 #include "base/LinearAlgebra.hpp"
 
 #include <string>
+#include <utility>
 
 namespace contactlab {
 
-struct StepReport;
-
 class FixedPointLoop {
  public:
+  // How a loop is named in reports and failures.
+  struct Identity {
+    std::string name;     // "statuses", "thresholds", "geometry"
+    std::string failure;  // the step's failure at the cap: "statuses-not-converged", ...
+    // The failure's message is capBefore + the count + capAfter ("contact statuses still
+    // changed after " 30 " fixed-point updates (Algorithm/Max Status Iterations)").
+    std::string capBefore, capAfter;
+    int StepReport::*counter;  // the StepReport field that counts the updates that moved
+  };
   // maxUpdates: the updates that moved allowed before the loop fails, counted from the step's
   // start or from the last time an enclosing loop renewed the cap (renewsInnerCaps).
-  FixedPointLoop(bool inNewton, int maxUpdates) : inNewton_(inNewton), maxUpdates_(maxUpdates) {}
+  FixedPointLoop(Identity identity, bool inNewton, int maxUpdates)
+      : identity_(std::move(identity)), inNewton_(inNewton), maxUpdates_(maxUpdates) {}
   virtual ~FixedPointLoop() = default;
   FixedPointLoop(const FixedPointLoop&) = delete;
   FixedPointLoop& operator=(const FixedPointLoop&) = delete;
 
-  // For reports and tests: "statuses", "thresholds", "geometry".
-  virtual std::string name() const = 0;
+  const std::string& name() const { return identity_.name; }
   bool inNewton() const { return inNewton_; }
 
   // At the start of each attempt at a step, before the predictor and the step's first
@@ -47,11 +56,13 @@ class FixedPointLoop {
   // has used maxUpdates(), and otherwise counts it (recordUpdate).
   int updates() const { return updates_; }
   int maxUpdates() const { return maxUpdates_; }
-  virtual std::string failure() const = 0;         // "statuses-not-converged", ...
-  virtual std::string failureMessage() const = 0;  // one clause, with the count and the key
+  const std::string& failure() const { return identity_.failure; }
+  std::string failureMessage() const {
+    return identity_.capBefore + std::to_string(updates_) + identity_.capAfter;
+  }
   void recordUpdate(StepReport& report) {
     ++updates_;
-    count(report);
+    ++(report.*identity_.counter);
   }
   void renewCap() { updates_ = 0; }
   // Whether an update that moved gives the loops inside it a fresh cap (the geometry: a new
@@ -82,10 +93,9 @@ class FixedPointLoop {
  protected:
   // Releases what the loop freezes (beginStep).
   virtual void release() {}
-  // Adds one moved update to the loop's counter in the step's report.
-  virtual void count(StepReport& report) const = 0;
 
  private:
+  Identity identity_;
   bool inNewton_;
   int maxUpdates_;
   int updates_ = 0;

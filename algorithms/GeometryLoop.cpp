@@ -1,15 +1,8 @@
 #include "algorithms/GeometryLoop.hpp"
 
-#include "algorithms/StaticSolver.hpp"
-
 #include <algorithm>
 
 namespace contactlab {
-
-std::string GeometryLoop::failureMessage() const {
-  return "the contact geometry still moved after " + std::to_string(updates()) +
-         " updates (Newton/Max Geometry Iterations)";
-}
 
 FixedPointLoop::MovedStateTest GeometryLoop::testMovedState(const Vector& x, double t,
                                                             double reference, Vector& residual) {
@@ -21,10 +14,6 @@ FixedPointLoop::MovedStateTest GeometryLoop::testMovedState(const Vector& x, dou
   test.residual = residual.norm2();
   test.target = std::max(absoluteTolerance_, tolerance_ * reference);
   return test;
-}
-
-void GeometryLoop::count(StepReport& report) const {
-  ++report.geometryIterations;
 }
 
 }  // namespace contactlab

@@ -16,21 +16,18 @@ class GeometryLoop : public FixedPointLoop {
   // absoluteTolerance: Newton/Absolute Tolerance, its floor.
   GeometryLoop(NonlinearSystem& system, bool inNewton, int maxUpdates, double tolerance,
                double absoluteTolerance)
-      : FixedPointLoop(inNewton, maxUpdates),
+      : FixedPointLoop(
+            {"geometry", "geometry-not-converged", "the contact geometry still moved after ",
+             " updates (Newton/Max Geometry Iterations)", &StepReport::geometryIterations},
+            inNewton, maxUpdates),
         system_(system),
         tolerance_(tolerance),
         absoluteTolerance_(absoluteTolerance) {}
 
-  std::string name() const override { return "geometry"; }
   bool update(const Vector& x, double t) override { return system_.updateGeometry(x, t); }
-  std::string failure() const override { return "geometry-not-converged"; }
-  std::string failureMessage() const override;
   bool renewsInnerCaps() const override { return true; }
   MovedStateTest testMovedState(const Vector& x, double t, double reference,
                                 Vector& residual) override;
-
- protected:
-  void count(StepReport& report) const override;
 
  private:
   NonlinearSystem& system_;

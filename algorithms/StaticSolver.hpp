@@ -19,6 +19,7 @@
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
+#include "algorithms/StepReport.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SlowDynamics.hpp"
 #include "formulations/ContactControls.hpp"
@@ -66,25 +67,6 @@ struct StaticSolverOptions {
   static StaticSolverOptions from(const Teuchos::ParameterList& loadSteps,
                                   const Teuchos::ParameterList& newton,
                                   const Teuchos::ParameterList& algorithm);
-};
-
-struct PhaseSeconds {
-  double assembly = 0, linearSolve = 0, output = 0;
-};
-
-using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind (0 unused)
-
-struct StepReport {
-  int step = 0;  // 1-based, converged steps
-  double time = 0;
-  int cuts = 0;                 // bisections before this step converged
-  int iterations = 0;           // Newton iterations (linear solves), failed attempts included
-  int statusIterations = 0;     // status fixed-point updates that changed a status
-  int thresholdIterations = 0;  // threshold fixed-point updates that moved a threshold
-  int geometryIterations = 0;   // geometry updates that moved and restarted Newton
-  double residual = 0;
-  CyclingCounts cycling{};
-  PhaseSeconds seconds;
 };
 
 struct RunReport {

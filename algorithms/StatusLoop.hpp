@@ -10,20 +10,21 @@ namespace contactlab {
 class StatusLoop : public FixedPointLoop {
  public:
   StatusLoop(ContactControls& controls, bool inNewton, int maxUpdates)
-      : FixedPointLoop(inNewton, maxUpdates), controls_(controls) {}
+      : FixedPointLoop(
+            {"statuses", "statuses-not-converged", "contact statuses still changed after ",
+             " fixed-point updates (Algorithm/Max Status Iterations)",
+             &StepReport::statusIterations},
+            inNewton, maxUpdates),
+        controls_(controls) {}
 
-  std::string name() const override { return "statuses"; }
   void freeze() override { controls_.freezeStatuses(true); }
   bool update(const Vector& x, double t) override { return controls_.updateStatuses(x, t) > 0; }
-  std::string failure() const override { return "statuses-not-converged"; }
-  std::string failureMessage() const override;
   bool changesStatuses() const override { return true; }
   // A forced point's frozen status is the forced one: the model's law decides it again.
   bool reviseForcedState(const Vector& x, double t) override { return update(x, t); }
 
  protected:
   void release() override { controls_.freezeStatuses(false); }
-  void count(StepReport& report) const override;
 
  private:
   ContactControls& controls_;

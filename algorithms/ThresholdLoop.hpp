@@ -11,19 +11,21 @@ namespace contactlab {
 class ThresholdLoop : public FixedPointLoop {
  public:
   ThresholdLoop(ContactControls& controls, bool inNewton, int maxUpdates, double tolerance)
-      : FixedPointLoop(inNewton, maxUpdates), controls_(controls), tolerance_(tolerance) {}
+      : FixedPointLoop(
+            {"thresholds", "thresholds-not-converged", "friction thresholds still moved after ",
+             " fixed-point updates (Algorithm/Max Threshold Iterations)",
+             &StepReport::thresholdIterations},
+            inNewton, maxUpdates),
+        controls_(controls),
+        tolerance_(tolerance) {}
 
-  std::string name() const override { return "thresholds"; }
   void freeze() override { controls_.freezeThresholds(true); }
   bool update(const Vector& x, double t) override {
     return controls_.updateThresholds(x, t) > tolerance_;
   }
-  std::string failure() const override { return "thresholds-not-converged"; }
-  std::string failureMessage() const override;
 
  protected:
   void release() override { controls_.freezeThresholds(false); }
-  void count(StepReport& report) const override;
 
  private:
   ContactControls& controls_;
