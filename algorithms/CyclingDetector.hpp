@@ -11,7 +11,7 @@
 //   contact-flip-flop  any other open <-> closed alternation
 //   stick-slip         a closed point alternating stick and slip
 //   slip-reversal      a slipping point whose friction direction reverses twice in a row
-#include "core/problem/ContactControls.hpp"
+#include "formulations/ContactControls.hpp"
 
 #include <array>
 #include <deque>

@@ -3,8 +3,8 @@
 // thresholds, geometry) held by the system: the inner loop of the seed's nested algorithms.
 // StaticSolver runs the load steps and the fixed points around it; PlainNewton and NoxNewton
 // implement it.
-#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
+#include "formulations/ContactControls.hpp"
 
 #include <functional>
 #include <string>

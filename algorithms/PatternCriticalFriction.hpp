@@ -9,8 +9,8 @@
 // J1 = J(1) factorized once and X = J1^-1 E_R (k solves, E_R the identity's columns at those
 // rows), det J(s) = det J1 det(I_k + (s - 1) B_R X): a k x k dense generalized eigenvalue
 // problem (CriticalFriction.hpp), exact, in place of a sparse eigensolver on the n x n pencil.
-#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
+#include "formulations/ContactControls.hpp"
 #include "linear/LinearSolver.hpp"
 
 #include <optional>

@@ -1,5 +1,6 @@
 #include "algorithms/StaticSolver.hpp"
 
+#include "algorithms/AlgorithmPresets.hpp"
 #include "core/io/Interruption.hpp"
 #include "core/io/ParameterValidation.hpp"
 
@@ -28,6 +29,13 @@ std::string sci(double v) {
 
 Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
   return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
+}
+
+Teuchos::RCP<Teuchos::StringValidator> presetChoices() {
+  Teuchos::Array<std::string> names;
+  for (const AlgorithmPreset& preset : algorithmPresets())
+    names.push_back(preset.name);
+  return Teuchos::rcp(new Teuchos::StringValidator(names));
 }
 
 }  // namespace
@@ -92,7 +100,7 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm()
          "friction thresholds and statuses are fixed points around Newton), "
          "'generalized-newton' (all three in Newton), 'partial-newton' (geometry a fixed point, "
          "thresholds and statuses in Newton)",
-         choices({"fixed-point", "generalized-newton", "partial-newton"}));
+         presetChoices());
   const auto perLoop = choices({"method", "fixed-point", "newton"});
   p->set("Geometry", "method", "Overrides Method for the pairing and normals", perLoop);
   p->set("Friction Threshold", "method", "Overrides Method for the friction threshold mu p",
@@ -184,15 +192,14 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
                                   sci(value) + ")");
 
   o.method = algorithm.get<std::string>("Method");
-  const bool all = o.method == "generalized-newton";
-  const bool partial = o.method == "partial-newton";
+  const AlgorithmPreset& preset = algorithmPreset(o.method);
   const auto inNewton = [&](const char* key, bool byMethod) {
     const std::string v = algorithm.get<std::string>(key);
     return v == "method" ? byMethod : v == "newton";
   };
-  o.geometryInNewton = inNewton("Geometry", all);
-  o.thresholdsInNewton = inNewton("Friction Threshold", all || partial);
-  o.statusesInNewton = inNewton("Contact Statuses", all || partial);
+  o.geometryInNewton = inNewton("Geometry", preset.geometryInNewton);
+  o.thresholdsInNewton = inNewton("Friction Threshold", preset.thresholdsInNewton);
+  o.statusesInNewton = inNewton("Contact Statuses", preset.statusesInNewton);
   o.maxStatusIterations = algorithm.get<int>("Max Status Iterations");
   o.maxThresholdIterations = algorithm.get<int>("Max Threshold Iterations");
   o.thresholdTolerance = algorithm.get<double>("Threshold Tolerance");
@@ -224,7 +231,8 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
       newton_(newton),
       options_(std::move(options)),
       solver_(solver),
-      detector_(options_.grazingTolerance) {
+      detector_(options_.grazingTolerance),
+      loops_(composeLoops(options_, problem, controls)) {
   if (controls_)
     controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
                                                            : GeometricTerms::none);
@@ -266,12 +274,14 @@ bool StaticSolver::forcedStateHolds(const Vector& x, double t, double target, Ve
   if (forcedPoints_.empty() || !treating_) return true;
   treating_ = false;
   controls_->releaseForcedStatuses();
-  // With the statuses a fixed point, a forced point's frozen status is the forced one: the
-  // model's law decides it again here.
-  const bool statusesMoved = !options_.statusesInNewton && controls_->updateStatuses(x, t) > 0;
+  // A fixed point whose frozen state the forcing set (a forced point's frozen status is the
+  // forced one) takes it from the model's law again here.
+  bool revised = false;
+  for (const auto& loop : loops_)
+    if (!loop->inNewton() && loop->reviseForcedState(x, t)) revised = true;
   problem_.assemble(x, t, &residual, false);
   forcedResidual_ = residual.norm2();
-  return !statusesMoved && forcedResidual_ <= target;
+  return !revised && forcedResidual_ <= target;
 }
 
 StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepReport& sr,
@@ -349,16 +359,14 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   const double t = sr.time;
   x.assign(u);
   problem_.applyDirichlet(t, x);
-  const bool statusFixedPoint = controls_ && !options_.statusesInNewton;
-  const bool thresholdFixedPoint = controls_ && !options_.thresholdsInNewton;
   forcedPoints_.clear();
   treating_ = true;
   if (controls_) {
     controls_->releaseTreatments();
-    controls_->freezeStatuses(false);
-    controls_->freezeThresholds(false);
     detector_.reset();
   }
+  for (const auto& loop : loops_)
+    loop->beginStep();
   problem_.updateGeometry(x, t);
   const Prediction prediction = predict(u, x, sr, report);
   if (prediction.done) problem_.updateGeometry(x, t);
@@ -371,8 +379,8 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
     if (!prediction.done) reference = residual->norm2();
   }
   // The fixed points start from the statuses and thresholds of the predictor.
-  if (statusFixedPoint) controls_->freezeStatuses(true);
-  if (thresholdFixedPoint) controls_->freezeThresholds(true);
+  for (const auto& loop : loops_)
+    if (!loop->inNewton()) loop->freeze();
 
   const auto fail = [&](const std::string& failure, const std::string& message) {
     report.failure = failure;
@@ -414,10 +422,6 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
-  // The status and threshold fixed points are capped per geometry update: each update moves
-  // the pairing and restarts them (a sliding step of ironing-2d needs ~6 threshold updates per
-  // geometry update and 60 in all; a cap on the step's total failed it).
-  int statusUpdates = 0, thresholdUpdates = 0;
   for (;;) {
     const NewtonOutcome outcome = newton_.solve(x, request, observer);
     solves += outcome.iterations;
@@ -432,46 +436,31 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
       if (!assembly.code.empty()) return fail(assembly.code, assembly.message);
       return fail(outcome.failure, outcome.message);
     }
-    if (statusFixedPoint && controls_->updateStatuses(x, t) > 0) {
-      // A status that flips from one fixed-point update to the next cycles too.
-      treatCycling(detector_.observe(controls_->pointStates()), sr);
-      if (statusUpdates == options_.maxStatusIterations)
-        return fail("statuses-not-converged",
-                    "contact statuses still changed after " + std::to_string(statusUpdates) +
-                        " fixed-point updates (Algorithm/Max Status Iterations)");
-      ++statusUpdates;
-      ++sr.statusIterations;
+    // The innermost fixed point whose update moves restarts Newton; the loops outside it are
+    // not updated until it settles.
+    std::size_t k = 0;
+    while (k < loops_.size() && (loops_[k]->inNewton() || !loops_[k]->update(x, t)))
+      ++k;
+    if (k == loops_.size()) {
+      // A forced state that violates the model's law is not a solution: Newton goes on from
+      // it with the law restored (near a solution, it converges in a few iterations).
+      if (forcedStateHolds(x, t, request.target, *residual)) return true;
       continue;
     }
-    if (thresholdFixedPoint && controls_->updateThresholds(x, t) > options_.thresholdTolerance) {
-      if (thresholdUpdates == options_.maxThresholdIterations)
-        return fail("thresholds-not-converged",
-                    "friction thresholds still moved after " + std::to_string(thresholdUpdates) +
-                        " fixed-point updates (Algorithm/Max Threshold Iterations)");
-      ++thresholdUpdates;
-      ++sr.thresholdIterations;
-      continue;
-    }
-    if (!options_.geometryInNewton && problem_.updateGeometry(x, t)) {
-      if (sr.geometryIterations == options_.maxGeometryIterations)
-        return fail("geometry-not-converged", "the contact geometry still moved after " +
-                                                  std::to_string(sr.geometryIterations) +
-                                                  " updates (Newton/Max Geometry Iterations)");
-      ++sr.geometryIterations;
-      statusUpdates = thresholdUpdates = 0;
-      // Newton converged at a geometry frozen at this very iterate: when the update changes
-      // the residual by less than the geometry tolerance, the fixed point has converged too.
-      problem_.assemble(x, t, residual.get(), false);
-      sr.residual = residual->norm2();
-      const double geometryTarget =
-          std::max(options_.absoluteTolerance, options_.geometryTolerance * reference);
-      if (sr.residual <= geometryTarget && forcedStateHolds(x, t, geometryTarget, *residual))
+    FixedPointLoop& moved = *loops_[k];
+    // A status that flips from one fixed-point update to the next cycles too.
+    if (moved.changesStatuses()) treatCycling(detector_.observe(controls_->pointStates()), sr);
+    if (moved.updates() == moved.maxUpdates()) return fail(moved.failure(), moved.failureMessage());
+    moved.recordUpdate(sr);
+    if (moved.renewsInnerCaps())
+      for (std::size_t inner = 0; inner < k; ++inner)
+        loops_[inner]->renewCap();
+    const FixedPointLoop::MovedStateTest test = moved.testMovedState(x, t, reference, *residual);
+    if (test.tested) {
+      sr.residual = test.residual;
+      if (test.residual <= test.target && forcedStateHolds(x, t, test.target, *residual))
         return true;
-      continue;
     }
-    // A forced state that violates the model's law is not a solution: Newton goes on from it
-    // with the law restored (near a solution, it converges in a few iterations).
-    if (forcedStateHolds(x, t, request.target, *residual)) return true;
   }
 }
 

@@ -4,10 +4,11 @@
 // Per load step: prescribed values at the new time (spread through the body by the tangent
 // predictor when they moved), the geometry paired at the predictor, then a Newton solve
 // (PlainNewton or NoxNewton) inside fixed points on whatever the method leaves to them,
-// innermost first: contact statuses, friction thresholds, geometry. A nonlinearity "in
-// Newton" follows the iterate instead (statuses and thresholds through the formulation's
-// generalized Jacobian; the geometry re-paired at every iterate, its derivatives in the tangent
-// as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
+// innermost first: contact statuses, friction thresholds, geometry, each a FixedPointLoop that
+// the preset composed (algorithms/AlgorithmPresets.hpp) and that solveStep runs generically. A
+// nonlinearity "in Newton" follows the iterate instead (statuses and thresholds through the
+// formulation's generalized Jacobian; the geometry re-paired at every iterate, its derivatives
+// in the tangent as Algorithm/Geometric Terms says: see doc/algorithms.md). Presets:
 //   fixed-point          geometry, thresholds, statuses all fixed points
 //   generalized-newton   all three in Newton
 //   partial-newton       geometry a fixed point, thresholds and statuses in Newton
@@ -16,17 +17,21 @@
 // Max Cuts times and never below End Time / Steps / 2^Max Cuts; steps that converge without a
 // cut let the step grow back.
 #include "algorithms/CyclingDetector.hpp"
+#include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
-#include "core/problem/ContactControls.hpp"
+#include "algorithms/StepReport.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SlowDynamics.hpp"
+#include "formulations/ContactControls.hpp"
 #include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -62,25 +67,6 @@ struct StaticSolverOptions {
   static StaticSolverOptions from(const Teuchos::ParameterList& loadSteps,
                                   const Teuchos::ParameterList& newton,
                                   const Teuchos::ParameterList& algorithm);
-};
-
-struct PhaseSeconds {
-  double assembly = 0, linearSolve = 0, output = 0;
-};
-
-using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind (0 unused)
-
-struct StepReport {
-  int step = 0;  // 1-based, converged steps
-  double time = 0;
-  int cuts = 0;                 // bisections before this step converged
-  int iterations = 0;           // Newton iterations (linear solves), failed attempts included
-  int statusIterations = 0;     // status fixed-point updates that changed a status
-  int thresholdIterations = 0;  // threshold fixed-point updates that moved a threshold
-  int geometryIterations = 0;   // geometry updates that moved and restarted Newton
-  double residual = 0;
-  CyclingCounts cycling{};
-  PhaseSeconds seconds;
 };
 
 struct RunReport {
@@ -148,6 +134,8 @@ class StaticSolver {
   const StaticSolverOptions options_;
   LinearSolver* solver_;
   CyclingDetector detector_;
+  // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
+  std::vector<std::unique_ptr<FixedPointLoop>> loops_;
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;

@@ -29,6 +29,8 @@ CASES = [
      ["Contact/floor/Discretization=node-to-segment"], "3D, frictionless, tet4"),
     ("ironing-3d", "ironing", {"Normal Augmentation": "0.2", "Tangential Augmentation": "0.2"},
      [], "3D, friction, finite strain, the die's curved master slides"),
+    ("polyurethane-block-2d", "press", {"Normal Augmentation": "20"}, [],
+     "the seed's case: SVK block pressed by a strongly curved master"),
 ]
 
 
@@ -104,6 +106,75 @@ for kappa in ["0", "1e-2", "1", "1e2", "1e4"]:
     print(line, flush=True)
     sweep += line + "\n"
 table += sweep
+
+
+
+# The seed's own case side by side: the polyurethane block's pressure under the roller with each
+# formulation (partial Newton), against the augmented Lagrangian on a mesh 2.5 times finer.
+def profile(points):
+    closed = sorted((float(p["reference_x"]), float(p["pressure"])) for p in points)
+    return [x for x, _ in closed], [p for _, p in closed]
+
+
+def roughness(x, p):
+    # The largest second difference of the closed points' pressures, relative to the peak: the
+    # node-to-node scatter a smooth field does not have.
+    inside = [i for i in range(1, len(p) - 1) if p[i - 1] > 0 and p[i] > 0 and p[i + 1] > 0]
+    peak = max(p) or 1.0
+    return max((abs(p[i] - 0.5 * (p[i - 1] + p[i + 1])) for i in inside), default=0.0) / peak
+
+
+def interpolate(xr, pr, x):
+    for k in range(1, len(xr)):
+        if xr[k] >= x:
+            a = (x - xr[k - 1]) / (xr[k] - xr[k - 1])
+            return (1 - a) * pr[k - 1] + a * pr[k]
+    return pr[-1]
+
+
+scene, zone, coefficients, _, _ = CASES[-1]
+fine_sets = formulation_sets(zone, "augmented-lagrangian", coefficients) + [
+    "Mesh/roller-on-base/Size Contact=0.1"]
+s_fine, fine, wall = run(scene, fine_sets, os.path.join(work, "polyurethane-fine"))
+xr, pr = profile(fine)
+curves = {}
+compare = ("\n`polyurethane-block-2d` (the seed's case), partial Newton: the pressure under the "
+           "roller against the augmented Lagrangian at Size Contact 0.1 (reference, "
+           f"{s_fine['iterations']['newton'] if s_fine else '–'} Newton iterations):\n\n"
+           "| formulation | Newton its | cycling events | max abs(p − p_ref) / max p_ref "
+           "| roughness (max second difference / p_max) |\n|---|---|---|---|---|\n")
+for formulation in ["augmented-lagrangian", NF]:
+    out = os.path.join(work, f"{scene}-{formulation}-partial-newton")
+    s = json.load(open(os.path.join(out, "summary.json")))
+    x, p = profile(list(csv.DictReader(open(os.path.join(out, "contact.csv")))))
+    curves[formulation] = (x, p)
+    error = max(abs(pi - interpolate(xr, pr, xi)) for xi, pi in zip(x, p)) / max(pr)
+    line = (f"| {formulation} | {s['iterations']['newton']} | {sum(s['cycling'].values())} | "
+            f"{error:.3f} | {roughness(x, p):.3f} |")
+    print(line, flush=True)
+    compare += line + "\n"
+compare += f"| reference (fine) | – | – | – | {roughness(xr, pr):.3f} |\n"
+table += compare
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.plot(xr, pr, "k-", lw=1, label="augmented Lagrangian, Size Contact 0.1 (reference)")
+    for (formulation, (x, p)), style in zip(curves.items(), ["o", "x"]):
+        ax.plot(x, p, style, ms=4, label=f"{formulation}, Size Contact 0.25")
+    ax.set_xlabel("x on the block's top, reference position (mm)")
+    ax.set_ylabel("contact pressure (MPa)")
+    ax.set_xlim(-9, 9)
+    ax.set_title("Polyurethane block (SVK, E 4.07 MPa, nu 0.48) pressed 3 mm by a roller R 10 mm")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    figure = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "doc", "figures",
+                          "normal-field-polyurethane.png")
+    fig.savefig(figure, dpi=110)
+    table += "\n![pressure under the roller](figures/normal-field-polyurethane.png)\n"
+except ImportError:
+    print("bench: no matplotlib, no figure")
 
 if doc:
     docblock.write(doc, "normal-field", "bench/normal_field.py", table)

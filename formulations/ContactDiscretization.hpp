@@ -10,7 +10,7 @@
 //   rigid-obstacle   ObstacleDiscretization        a slave node against an analytic surface
 #include "base/Registry.hpp"
 #include "core/mesh/Mesh.hpp"
-#include "core/problem/ContactControls.hpp"
+#include "formulations/ContactControls.hpp"
 #include "formulations/ContactPoint.hpp"
 #include "formulations/ContactSurfaceState.hpp"
 #include "formulations/ContactZone.hpp"

@@ -6,7 +6,7 @@
 // tangent B^T J B (with the law's multiplier rows and columns). Between two pairings g and v are
 // linear in u, so the tangent is exact for the frozen geometry; the geometric columns add the
 // geometry's derivatives by central differences of the residual with the geometry recomputed.
-#include "core/problem/ContactControls.hpp"
+#include "formulations/ContactControls.hpp"
 #include "formulations/ContactDiscretization.hpp"
 #include "formulations/ContactPoint.hpp"
 #include "formulations/ContactSurfaceState.hpp"

@@ -25,9 +25,9 @@
 // owns. The tangent's graph is the solid's plus the contact couplings and is rebuilt only when
 // a pairing changes.
 #include "core/io/MeshPiece.hpp"
-#include "core/problem/ContactControls.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/Problem.hpp"
+#include "formulations/ContactControls.hpp"
 #include "formulations/ContactPointResult.hpp"
 #include "formulations/ContactZone.hpp"
 

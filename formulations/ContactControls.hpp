@@ -2,7 +2,10 @@
 // What the algorithms steer in a system with contact, beside R(x, t) = 0: the fixed points on
 // the contact statuses and friction thresholds, the per-point state that cycling detection
 // watches, and the per-point treatments of cycling. A NonlinearSystem without contact has none
-// of this; drivers take a ContactControls pointer that may be null.
+// of this; drivers take a ContactControls pointer that may be null. It lives in formulations,
+// not core: it names the algorithms' notions (cycling treatments, the critical-mu scale), which
+// the finite-element model below knows nothing of; ContactProblem implements it and the
+// algorithms above steer through it.
 #include "base/LinearAlgebra.hpp"
 
 #include <array>

@@ -1,0 +1,37 @@
+#pragma once
+// The geometry (each slave point's pairing with a master point, and the normal there) as a
+// loop. In Newton, the system re-pairs at every iterate (NewtonRequest::geometryInNewton). As a
+// fixed point, it is re-paired at the converged iterate; a pairing that moved restarts Newton,
+// at most Newton/Max Geometry Iterations times per step, and gives the status and threshold
+// fixed points a fresh cap (each new pairing starts them over: a sliding step of ironing-2d
+// needs ~6 threshold updates per geometry update and 60 in all).
+#include "algorithms/FixedPointLoop.hpp"
+#include "core/problem/NonlinearSystem.hpp"
+
+namespace contactlab {
+
+class GeometryLoop : public FixedPointLoop {
+ public:
+  // tolerance: Newton/Geometry Tolerance, relative to the step's reference residual;
+  // absoluteTolerance: Newton/Absolute Tolerance, its floor.
+  GeometryLoop(NonlinearSystem& system, bool inNewton, int maxUpdates, double tolerance,
+               double absoluteTolerance)
+      : FixedPointLoop(
+            {"geometry", "geometry-not-converged", "the contact geometry still moved after ",
+             " updates (Newton/Max Geometry Iterations)", &StepReport::geometryIterations},
+            inNewton, maxUpdates),
+        system_(system),
+        tolerance_(tolerance),
+        absoluteTolerance_(absoluteTolerance) {}
+
+  bool update(const Vector& x, double t) override { return system_.updateGeometry(x, t); }
+  bool renewsInnerCaps() const override { return true; }
+  MovedStateTest testMovedState(const Vector& x, double t, double reference,
+                                Vector& residual) override;
+
+ private:
+  NonlinearSystem& system_;
+  double tolerance_, absoluteTolerance_;
+};
+
+}  // namespace contactlab

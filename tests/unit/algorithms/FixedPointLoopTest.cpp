@@ -1,0 +1,249 @@
+// The algorithm loops: which loops a preset composes, and how StaticSolver runs them. A fake
+// system records every call the solver makes through NonlinearSystem and ContactControls, and
+// answers the fixed-point updates from scripts; a fake Newton converges at once. The expected
+// call sequences are the nesting of doc/algorithms.md: after each Newton solve, the innermost
+// fixed point that moves restarts Newton, the loops outside it wait.
+#include "algorithms/AlgorithmPresets.hpp"
+#include "algorithms/StaticSolver.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <deque>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace contactlab {
+namespace {
+
+class RecordingSystem : public NonlinearSystem, public ContactControls {
+ public:
+  RecordingSystem() : map_(Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()))) {}
+
+  std::vector<std::string> calls;    // "newton" and each fixed-point update, in order
+  std::vector<std::string> freezes;  // freezeStatuses / freezeThresholds, in order
+  std::deque<int> statusChangesScript;
+  std::deque<double> thresholdMoves;
+  std::deque<bool> geometryMoves;  // the first answers the pairing at the step's start
+  double residualNorm = 1.0;       // every assembly's |R|
+  double residualAfterGeometryMove = 1.0;
+
+  Teuchos::RCP<Vector> createVector() const override { return Teuchos::rcp(new Vector(map_)); }
+  void applyDirichlet(double, Vector&) const override {}
+  void assemble(const Vector&, double, Vector* residual, bool) override {
+    if (residual) residual->putScalar(residualNorm);
+  }
+  const Teuchos::RCP<Matrix>& tangent() const override { return tangent_; }
+  void commitState(const Vector&, double) override {}
+  bool updateGeometry(const Vector&, double) override {
+    calls.push_back("geometry");
+    const bool moved = pop(geometryMoves, false);
+    if (moved) residualNorm = residualAfterGeometryMove;
+    return moved;
+  }
+
+  void freezeStatuses(bool frozen) override {
+    freezes.push_back(std::string("statuses ") + (frozen ? "frozen" : "released"));
+  }
+  void freezeThresholds(bool frozen) override {
+    freezes.push_back(std::string("thresholds ") + (frozen ? "frozen" : "released"));
+  }
+  int updateStatuses(const Vector&, double) override {
+    calls.push_back("statuses");
+    return pop(statusChangesScript, 0);
+  }
+  double updateThresholds(const Vector&, double) override {
+    calls.push_back("thresholds");
+    return pop(thresholdMoves, 0.0);
+  }
+  int statusChanges() const override { return 0; }
+  std::vector<ContactPointState> pointStates() const override { return {}; }
+  void forceStatus(std::size_t, int) override {}
+  bool scaleCoefficients(std::size_t, double) override { return false; }
+  void releaseTreatments() override {}
+  void releaseForcedStatuses() override {}
+  void seedInitialStatuses(Vector&, double) override {}
+  void markCycling(std::size_t, int) override {}
+  void setFrictionScale(double) override {}
+  void setGeometricTerms(GeometricTerms) override {}
+
+ private:
+  template <class T>
+  static T pop(std::deque<T>& script, T otherwise) {
+    if (script.empty()) return otherwise;
+    const T value = script.front();
+    script.pop_front();
+    return value;
+  }
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<Matrix> tangent_;
+};
+
+// Converges at once, in one iteration, and records the solve.
+class RecordingNewton : public NewtonMethod {
+ public:
+  explicit RecordingNewton(RecordingSystem& system) : system_(system) {}
+  NewtonOutcome solve(Vector&, const NewtonRequest&, const Observer&) override {
+    system_.calls.push_back("newton");
+    NewtonOutcome out;
+    out.iterations = 1;
+    return out;
+  }
+
+ private:
+  RecordingSystem& system_;
+};
+
+StaticSolverOptions optionsFor(const std::string& method,
+                               const std::vector<std::pair<std::string, std::string>>& loops = {}) {
+  Teuchos::ParameterList algorithm = *StaticSolverOptions::validAlgorithm();
+  algorithm.set("Method", method);
+  for (const auto& [key, choice] : loops)
+    algorithm.set(key, choice);
+  return StaticSolverOptions::from(*StaticSolverOptions::validLoadSteps(),
+                                   *StaticSolverOptions::validNewton(), algorithm);
+}
+
+// "name:newton" or "name:fixed-point" per loop, innermost first.
+std::vector<std::string> describe(const std::vector<std::unique_ptr<FixedPointLoop>>& loops) {
+  std::vector<std::string> out;
+  for (const auto& loop : loops)
+    out.push_back(loop->name() + (loop->inNewton() ? ":newton" : ":fixed-point"));
+  return out;
+}
+
+RunReport runOneStep(RecordingSystem& system, const StaticSolverOptions& options) {
+  RecordingNewton newton(system);
+  StaticSolver solver(system, &system, newton, options);
+  auto u = system.createVector();
+  return solver.run(*u, {});
+}
+
+using Calls = std::vector<std::string>;
+
+TEST(AlgorithmPresets, EachPresetComposesTheThreeLoopsInnermostFirst) {
+  RecordingSystem system;
+  EXPECT_EQ(describe(composeLoops(optionsFor("fixed-point"), system, &system)),
+            (Calls{"statuses:fixed-point", "thresholds:fixed-point", "geometry:fixed-point"}));
+  EXPECT_EQ(describe(composeLoops(optionsFor("partial-newton"), system, &system)),
+            (Calls{"statuses:newton", "thresholds:newton", "geometry:fixed-point"}));
+  EXPECT_EQ(describe(composeLoops(optionsFor("generalized-newton"), system, &system)),
+            (Calls{"statuses:newton", "thresholds:newton", "geometry:newton"}));
+}
+
+TEST(AlgorithmPresets, APerLoopChoiceOverridesThePresetForThatLoopOnly) {
+  RecordingSystem system;
+  const auto options = optionsFor("partial-newton", {{"Contact Statuses", "fixed-point"}});
+  EXPECT_EQ(describe(composeLoops(options, system, &system)),
+            (Calls{"statuses:fixed-point", "thresholds:newton", "geometry:fixed-point"}));
+  const auto mixed =
+      optionsFor("fixed-point", {{"Geometry", "newton"}, {"Friction Threshold", "method"}});
+  EXPECT_EQ(describe(composeLoops(mixed, system, &system)),
+            (Calls{"statuses:fixed-point", "thresholds:fixed-point", "geometry:newton"}));
+}
+
+TEST(AlgorithmPresets, WithoutContactOnlyTheGeometryLoopIsComposed) {
+  RecordingSystem system;
+  EXPECT_EQ(describe(composeLoops(optionsFor("fixed-point"), system, nullptr)),
+            (Calls{"geometry:fixed-point"}));
+  EXPECT_THROW(algorithmPreset("no-such-method"), std::invalid_argument);
+}
+
+TEST(FixedPointLoops, TheInnermostLoopThatMovesRestartsNewtonAndTheOuterOnesWait) {
+  RecordingSystem system;
+  system.statusChangesScript = {2, 1, 0, 0, 0};
+  system.thresholdMoves = {0.1, 0.0, 0.0};
+  system.geometryMoves = {false, true, false};
+  const RunReport report = runOneStep(system, optionsFor("fixed-point"));
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(system.calls, (Calls{"geometry",                                      // step start
+                                 "newton", "statuses",                            // 2 changed
+                                 "newton", "statuses",                            // 1 changed
+                                 "newton", "statuses", "thresholds",              // moved by 0.1
+                                 "newton", "statuses", "thresholds", "geometry",  // moved
+                                 "newton", "statuses", "thresholds", "geometry"}));
+  EXPECT_EQ(report.iterations, 5);
+  EXPECT_EQ(report.statusIterations, 2);
+  EXPECT_EQ(report.thresholdIterations, 1);
+  EXPECT_EQ(report.geometryIterations, 1);
+  // Released at the step's start, frozen at the state of its first assembly.
+  EXPECT_EQ(system.freezes, (Calls{"statuses released", "thresholds released", "statuses frozen",
+                                   "thresholds frozen"}));
+}
+
+TEST(FixedPointLoops, LoopsInNewtonAreNeitherFrozenNorUpdated) {
+  RecordingSystem system;
+  system.statusChangesScript = {1, 1, 1};
+  system.thresholdMoves = {1.0, 1.0};
+  system.geometryMoves = {false, true, false};
+  const RunReport report = runOneStep(system, optionsFor("partial-newton"));
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "geometry", "newton", "geometry"}));
+  EXPECT_EQ(system.freezes, (Calls{"statuses released", "thresholds released"}));
+  EXPECT_EQ(report.statusIterations + report.thresholdIterations, 0);
+  EXPECT_EQ(report.geometryIterations, 1);
+}
+
+TEST(FixedPointLoops, AGeometryUpdateGivesTheInnerLoopsAFreshCap) {
+  RecordingSystem system;
+  system.statusChangesScript = {1, 0, 1, 0};
+  system.thresholdMoves = {0.0, 0.0};
+  system.geometryMoves = {false, true, false};
+  auto options = optionsFor("fixed-point");
+  options.maxStatusIterations = 1;
+  const RunReport report = runOneStep(system, options);
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(report.statusIterations, 2);  // one per geometry update
+  EXPECT_EQ(report.geometryIterations, 1);
+}
+
+TEST(FixedPointLoops, AThresholdUpdateKeepsTheStatusCapOfItsGeometryUpdate) {
+  RecordingSystem system;
+  system.statusChangesScript = {1, 0, 1};
+  system.thresholdMoves = {0.1};
+  auto options = optionsFor("fixed-point");
+  options.maxStatusIterations = 1;
+  const RunReport report = runOneStep(system, options);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, "statuses-not-converged");
+  EXPECT_NE(report.message.find("after 1 fixed-point updates"), std::string::npos)
+      << report.message;
+  EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "statuses", "newton", "statuses",
+                                 "thresholds", "newton", "statuses"}));
+}
+
+TEST(FixedPointLoops, EachLoopFailsWithItsOwnNameAtItsCap) {
+  {
+    RecordingSystem system;
+    system.thresholdMoves = {0.1, 0.1, 0.1};
+    auto options = optionsFor("fixed-point");
+    options.maxThresholdIterations = 2;
+    const RunReport report = runOneStep(system, options);
+    EXPECT_EQ(report.failure, "thresholds-not-converged");
+    EXPECT_EQ(report.thresholdIterations, 2);
+  }
+  {
+    RecordingSystem system;
+    system.geometryMoves = {false, true, true};
+    auto options = optionsFor("partial-newton");
+    options.maxGeometryIterations = 1;
+    const RunReport report = runOneStep(system, options);
+    EXPECT_EQ(report.failure, "geometry-not-converged");
+    EXPECT_NE(report.message.find("after 1 updates (Newton/Max Geometry Iterations)"),
+              std::string::npos)
+        << report.message;
+  }
+}
+
+TEST(FixedPointLoops, AMovedGeometryWithinItsToleranceEndsTheStep) {
+  RecordingSystem system;
+  system.geometryMoves = {false, true};
+  system.residualAfterGeometryMove = 1e-9;  // below Geometry Tolerance 1e-6 x |R_0| = 1
+  const RunReport report = runOneStep(system, optionsFor("partial-newton"));
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "geometry"}));
+  EXPECT_EQ(report.geometryIterations, 1);
+}
+
+}  // namespace
+}  // namespace contactlab
