@@ -166,8 +166,10 @@ try:
     ax.set_xlabel("x on the block's top, reference position (mm)")
     ax.set_ylabel("contact pressure (MPa)")
     ax.set_xlim(-9, 9)
-    ax.set_title("Polyurethane block (SVK, E 4.07 MPa, nu 0.48) pressed 3 mm by a roller R 10 mm")
-    ax.legend(fontsize=8)
+    ax.set_ylim(-0.45 * max(pr), 1.1 * max(pr))  # room for the legend below the profile
+    ax.set_title("Polyurethane block (SVK, E 4.07 MPa, nu 0.48) pressed 3 mm by a roller, R 10 mm",
+                 fontsize=9)
+    ax.legend(fontsize=8, loc="lower center")
     fig.tight_layout()
     figure = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "doc", "figures",
                           "normal-field-polyurethane.png")
