@@ -169,6 +169,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   ContactCsv contactCsv(outDir + "/contact.csv");
   ProbeValues probes(sm, *problem);
   VtkSteps vtk(outDir, rawMpiComm(comm));
+  // The series starts from rest: a t = 0 frame before step 1 (also what a run that converges
+  // no step leaves).
+  if (sm.writeVtk) vtk.writeRest(*problem, contact.get());
   SummaryJson summary(sm, *problem, contact.get());
   // Output/Critical Mu Check: the uniqueness check after each converged step.
   std::unique_ptr<StepUniquenessCheck> uniqueness;
@@ -216,7 +219,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       const std::vector<std::int64_t> nodes = contact->prescribedSlipNodes(z);
       if (root && !nodes.empty())
         std::cerr << "contactlab: Contact/" << sm.contact[z].name << ": at " << nodes.size()
-                  << " slave node(s) (e.g. node " << nodes.front() + 1
+                  << " slave node(s) (e.g. node " << sm.model.mesh->nodeId(nodes.front())
                   << ") the Dirichlet conditions fix a friction direction: its friction "
                      "multiplier is dropped (the support carries that force)\n";
     }

@@ -150,7 +150,7 @@ void addPointGroups(const ParameterList& groups, Mesh& mesh, const std::string& 
     const auto [node, distance] = nearestNode(mesh, point, elementNode);
     if (!(distance <= tolerance))
       throw InputError(where + ": " + path + "/Point: the nearest mesh node (" +
-                       std::to_string(node + 1) + ") is " + std::to_string(distance) +
+                       std::to_string(mesh.nodeId(node)) + ") is " + std::to_string(distance) +
                        " away, farther than Tolerance " + std::to_string(tolerance));
     CellGroup group;
     group.name = name;
@@ -207,7 +207,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
     if (!shared.empty())
       throw InputError(path + ": Slave '" + zone.slave + "' and Master '" + zone.master +
                        "' share " + std::to_string(shared.size()) + " node(s) (e.g. node " +
-                       std::to_string(shared.front() + 1) +
+                       std::to_string(mesh.nodeId(shared.front())) +
                        "): a node cannot be paired with its own surface; make the groups "
                        "disjoint");
   }

@@ -247,7 +247,10 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
   ParameterList p("Output");
   p.set("Directory", "",
         "Results folder; empty means results/<scene name> (the --out option overrides it)");
-  p.set("VTK", true, "Write result.pvd and one .vtu (.pvtu on several ranks) per step");
+  p.set("VTK", true,
+        "Write result.pvd and one .vtu (.pvtu on several ranks) per frame: a rest frame at "
+        "t = 0 (the undeformed state, every contact point free), then one per converged step; "
+        "a point field node_id holds each node's id (contact.csv's node column)");
   p.set("Critical Mu Check", false,
         "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
         "patterns around the state, determinant signs, critical mu): a warning when mu >= "

@@ -6,6 +6,7 @@ import os
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 
 def contactlab_run(exe, scene, out, sets=(), ranks=1, options=(), timeout=900, command="run"):
@@ -32,3 +33,21 @@ def converged_run(exe, scene, out, sets=(), ranks=1):
     if not summary["converged"]:
         sys.exit(f"FAIL: the run did not converge: {summary['failure']}: {summary['message']}")
     return summary
+
+
+def result_frames(out):
+    """The frames OUT/result.pvd lists, in order: (time, path of the .vtu or .pvtu) each; the
+    first is the rest frame at t = 0."""
+    datasets = ET.parse(os.path.join(out, "result.pvd")).getroot().findall(".//DataSet")
+    return [(float(d.get("timestep")), os.path.join(out, d.get("file"))) for d in datasets]
+
+
+def read_grid(path):
+    """The unstructured grid of a .vtu (1 rank) or .pvtu (several) file, by VTK's own readers
+    (vtk is imported here: a script that reads no VTK file needs no VTK)."""
+    import vtk
+    reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
+              else vtk.vtkXMLUnstructuredGridReader())
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()

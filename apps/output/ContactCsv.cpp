@@ -15,11 +15,11 @@ void ContactCsv::write(const ContactProblem& contact, const std::vector<ContactZ
                    "gap", "pressure", "traction_x", "traction_y", "traction_z", "slip_x", "slip_y",
                    "slip_z", "status"});
   for (const auto& p : contact.results())
-    table.addRow(zones[p.zone].name, static_cast<long long>(p.node + 1), p.x[0], p.x[1], p.x[2],
-                 mesh.coords[3 * p.node], mesh.coords[3 * p.node + 1], mesh.coords[3 * p.node + 2],
-                 p.paired ? p.gap : std::numeric_limits<double>::quiet_NaN(), p.pressure,
-                 p.traction[0], p.traction[1], p.traction[2], p.slip[0], p.slip[1], p.slip[2],
-                 outputStatus(p));
+    table.addRow(
+        zones[p.zone].name, static_cast<long long>(mesh.nodeId(p.node)), p.x[0], p.x[1], p.x[2],
+        mesh.coords[3 * p.node], mesh.coords[3 * p.node + 1], mesh.coords[3 * p.node + 2],
+        p.paired ? p.gap : std::numeric_limits<double>::quiet_NaN(), p.pressure, p.traction[0],
+        p.traction[1], p.traction[2], p.slip[0], p.slip[1], p.slip[2], outputStatus(p));
   table.write(path_);
 }
 

@@ -1,16 +1,41 @@
 #include "apps/output/VtkSteps.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace contactlab {
 
 VtkSteps::VtkSteps(std::string folder, MPI_Comm comm) : folder_(std::move(folder)), comm_(comm) {}
 
+void VtkSteps::writeRest(const Problem& problem, const ContactProblem* contact) {
+  const auto u = problem.createVector();
+  u->putScalar(0.0);
+  MeshPiece piece = problem.outputPiece(*u);
+  if (contact) {
+    // The contact fields a step writes, by the contact problem's own list, zeroed: the state
+    // left by the initial pairing is not a converged one.
+    const std::size_t solidFields = piece.pointData.size();
+    contact->addPointData(piece);
+    for (std::size_t f = solidFields; f < piece.pointData.size(); ++f)
+      std::fill(piece.pointData[f].values.begin(), piece.pointData[f].values.end(), 0.0);
+  }
+  writeFrame(0.0, std::move(piece), problem);
+}
+
 void VtkSteps::write(double time, const Problem& problem, const ContactProblem* contact,
                      const Vector& u) {
-  if (!series_) series_ = std::make_unique<VtkSeriesWriter>(folder_, "result", comm_);
   MeshPiece piece = problem.outputPiece(u);
   if (contact) contact->addPointData(piece);
+  writeFrame(time, std::move(piece), problem);
+}
+
+void VtkSteps::writeFrame(double time, MeshPiece piece, const Problem& problem) {
+  const Mesh& mesh = *problem.model().mesh;
+  FieldData ids{"node_id", 1, {}};
+  for (std::int64_t node : problem.dofs().overlapNodes())
+    ids.values.push_back(static_cast<double>(mesh.nodeId(node)));
+  piece.pointData.push_back(std::move(ids));
+  if (!series_) series_ = std::make_unique<VtkSeriesWriter>(folder_, "result", comm_);
   series_->writeStep(time, piece);
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-// result.pvd and one .vtu (.pvtu + a piece per rank in parallel) per converged step: the
-// solid's fields and, with contact, the contact point data. The series starts at the first
-// converged step, so a run that converges none leaves no result.pvd behind.
+// result.pvd and one .vtu (.pvtu + a piece per rank in parallel) per frame: first the rest
+// frame at t = 0 (the undeformed state, written before step 1 so that an animation starts from
+// rest), then one per converged step: the solid's fields and, with contact, the contact point
+// data. Every frame has a point field node_id, each point's mesh node id (Mesh::nodeId: the
+// gmsh node tag of a mesh file, index + 1 for a generated mesh; contact.csv's node column). A
+// run that converges no step leaves the rest frame alone in the series.
 #include "base/LinearAlgebra.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/Problem.hpp"
@@ -17,13 +20,19 @@ class VtkSteps {
  public:
   VtkSteps(std::string folder, MPI_Comm comm);
 
+  // Collective. The rest frame at t = 0: zero displacement (so zero stresses), and with
+  // contact the same point fields as a step's, all zero (every point free). Call once, before
+  // the first step.
+  void writeRest(const Problem& problem, const ContactProblem* contact);
   // Collective. u: the displacement at `time`; contact may be null.
   void write(double time, const Problem& problem, const ContactProblem* contact, const Vector& u);
 
-  // Empty until a step was written.
+  // Empty until a frame was written.
   std::optional<std::string> pvdPath() const;
 
  private:
+  void writeFrame(double time, MeshPiece piece, const Problem& problem);
+
   const std::string folder_;
   const MPI_Comm comm_;
   std::unique_ptr<VtkSeriesWriter> series_;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 namespace contactlab {
 namespace {
@@ -51,8 +52,9 @@ std::vector<CellGroup> readGroup(int dim, int tag, const std::string& label) {
   return groups;
 }
 
-// Renumbers connectivity from gmsh tags to 0..n-1 and fills the coordinates.
-void renumberNodes(Mesh& mesh, const std::string& label) {
+// Renumbers connectivity from gmsh tags to 0..n-1 and fills the coordinates; returns the tags
+// of nodes 0..n-1.
+std::vector<std::int64_t> renumberNodes(Mesh& mesh, const std::string& label) {
   std::vector<std::int64_t> used;
   for (auto* list : {&mesh.blocks, &mesh.boundaries})
     for (const auto& g : *list)
@@ -83,11 +85,12 @@ void renumberNodes(Mesh& mesh, const std::string& label) {
   if (missing != found.end())
     throw std::runtime_error(label + " uses node " + std::to_string(used[missing - found.begin()]) +
                              " in an element but does not define its coordinates");
+  return used;
 }
 
 }  // namespace
 
-Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
+Mesh meshFromGmshModel(const std::string& source, const std::string& label, NodeIds ids) {
   gmsh::vectorpair physicals;
   gmsh::model::getPhysicalGroups(physicals);
   if (physicals.empty())
@@ -113,7 +116,8 @@ Mesh meshFromGmshModel(const std::string& source, const std::string& label) {
   if (mesh.blocks.empty())
     throw std::runtime_error(label + " has physical groups of dimension " +
                              std::to_string(mesh.dim) + " but they contain no elements");
-  renumberNodes(mesh, label);
+  std::vector<std::int64_t> tags = renumberNodes(mesh, label);
+  if (ids == NodeIds::gmshTags) mesh.nodeTags = std::move(tags);
   checkMesh(mesh);
   orientBoundaryFacets(mesh);
   return mesh;

@@ -25,7 +25,7 @@ Mesh readGmshFile(const std::string& path) {
   const std::string label = "mesh file '" + path + "'";
   return inGmshModel("gmsh could not read " + label, [&] {
     gmsh::merge(path);
-    return meshFromGmshModel(path, label);
+    return meshFromGmshModel(path, label, NodeIds::gmshTags);
   });
 }
 

@@ -2,6 +2,8 @@
 // The whole mesh, as read or generated: every rank holds a copy (contact surfaces and
 // partitioning need the global picture; 600 000 dofs is ~200 000 nodes, a few tens of MB).
 // Nodes are numbered 0..numNodes()-1; connectivity uses those indices in gmsh node order.
+// Users know a node by its id (nodeId): the gmsh node tag of a mesh read from a .msh file,
+// index + 1 for a generated mesh.
 #include "core/mesh/ElementType.hpp"
 
 #include <cstdint>
@@ -30,9 +32,15 @@ class Mesh {
   std::vector<CellGroup> blocks;      // cells of dimension `dim` (element blocks)
   std::vector<CellGroup> boundaries;  // cells of lower dimension (facets, edges, points)
   std::string source;                 // file name or generator description, for messages
+  // The gmsh node tag of each node of a mesh read from a file; empty for a generated mesh.
+  std::vector<std::int64_t> nodeTags;
 
   std::size_t numNodes() const { return coords.size() / 3; }
   std::size_t numElements() const;
+  // The id a user knows node `node` by (outputs, messages): its gmsh tag, else node + 1.
+  std::int64_t nodeId(std::int64_t node) const {
+    return nodeTags.empty() ? node + 1 : nodeTags[static_cast<std::size_t>(node)];
+  }
 
   // Groups with that name, among blocks or boundaries. Empty if none.
   std::vector<const CellGroup*> findBlocks(const std::string& name) const;

@@ -102,6 +102,7 @@ void broadcastMesh(Mesh& mesh, MPI_Comm comm, int root) {
     w.put<std::int32_t>(mesh.dim);
     w.putString(mesh.source);
     w.putVector(mesh.coords);
+    w.putVector(mesh.nodeTags);
     putGroups(w, mesh.blocks);
     putGroups(w, mesh.boundaries);
     bytes = std::move(w.bytes);
@@ -120,6 +121,7 @@ void broadcastMesh(Mesh& mesh, MPI_Comm comm, int root) {
   copy.dim = r.get<std::int32_t>();
   copy.source = r.getString();
   copy.coords = r.getVector<double>();
+  copy.nodeTags = r.getVector<std::int64_t>();
   copy.blocks = getGroups(r);
   copy.boundaries = getGroups(r);
   mesh = std::move(copy);

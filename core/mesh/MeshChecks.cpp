@@ -43,6 +43,9 @@ void checkMesh(const Mesh& mesh) {
     fail(mesh, "has " + std::to_string(mesh.coords.size()) +
                    " coordinate values, which is not a positive multiple of 3");
   if (mesh.blocks.empty()) fail(mesh, "has no element block (no cells of its top dimension)");
+  if (!mesh.nodeTags.empty() && mesh.nodeTags.size() != mesh.numNodes())
+    fail(mesh, "has " + std::to_string(mesh.nodeTags.size()) + " node tags for " +
+                   std::to_string(mesh.numNodes()) + " nodes");
   double extent = 0;
   for (double c : mesh.coords) {
     if (!std::isfinite(c)) fail(mesh, "has a coordinate that is not a finite number");
@@ -55,8 +58,8 @@ void checkMesh(const Mesh& mesh) {
       if (std::abs(mesh.coords[3 * i + 2]) > tol) {
         std::ostringstream z;
         z << mesh.coords[3 * i + 2];
-        fail(mesh, "is 2D but node " + std::to_string(i) + " has z = " + z.str() +
-                       "; 2D meshes must lie in z = 0");
+        fail(mesh, "is 2D but node " + std::to_string(mesh.nodeId(static_cast<std::int64_t>(i))) +
+                       " has z = " + z.str() + "; 2D meshes must lie in z = 0");
       }
   }
   for (const auto& g : mesh.blocks)

@@ -302,7 +302,10 @@ MeshSourceRegistry& meshSourceRegistry() {
 
 void registerMeshSources() {
   auto& r = meshSourceRegistry();
-  r.add({"file", "A gmsh .msh file (format 4 or 2.2); physical groups name blocks and boundaries.",
+  r.add({"file",
+         "A gmsh .msh file (format 4 or 2.2); physical groups name blocks and boundaries, "
+         "and its node tags name the nodes in contact.csv and the VTK output (a "
+         "generator's nodes are named by index + 1).",
          fileParameters, [](const ParameterList& p, const std::string& dir) {
            std::filesystem::path path = p.get<std::string>("Path");
            if (path.empty()) throw InputError("Mesh/file/Path is empty");

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """SIGTERM and SIGINT end a run cleanly: after the first converged step, the signal stops the
 run at its next Newton iterate; summary.json says `failure: interrupted`, the exit code is
-128 + signal, the VTK series, steps.csv and contact.csv describe the same converged steps, and
-no temporary file is left.
+128 + signal, the VTK series (after its rest frame), steps.csv and contact.csv describe the same
+converged steps, and no temporary file is left.
 
 usage: check_interrupt.py CONTACTLAB SCENES_DIR WORKDIR"""
 import csv, json, os, re, shutil, signal, subprocess, sys, time
@@ -31,8 +31,9 @@ for sig in (signal.SIGTERM, signal.SIGINT):
         problems.append(f"summary failure {summary['failure']!r}: {summary['message']!r}")
     steps = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
     pvd = re.findall(r'file="([^"]+)"', open(os.path.join(out, "result.pvd")).read())
-    if not (len(steps) == len(pvd) == summary["load_steps"]["converged"] >= 1):
-        problems.append(f"steps.csv {len(steps)} rows, result.pvd {len(pvd)} steps, summary "
+    # result.pvd: the rest frame at t = 0, then one frame per converged step.
+    if not (len(steps) == len(pvd) - 1 == summary["load_steps"]["converged"] >= 1):
+        problems.append(f"steps.csv {len(steps)} rows, result.pvd {len(pvd)} frames, summary "
                         f"{summary['load_steps']['converged']} converged")
     vtus = sorted(f for f in os.listdir(out) if f.endswith(".vtu"))
     if vtus != sorted(pvd):

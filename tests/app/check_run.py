@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Runs a scene with the contactlab command and checks the results contract (DESIGN.md §5):
-result.pvd and its pieces readable by VTK, steps.csv, summary.json with probes.
+result.pvd and its pieces readable by VTK (a rest frame at t = 0, then one per converged step),
+steps.csv, summary.json with probes, contact.csv's points named by the VTK field node_id.
 
 usage: check_run.py CONTACTLAB SCENE OUTDIR RANKS [--set key/path=value ...]
                     [--without-scene-expectations] [key=expected ...]
@@ -12,10 +13,8 @@ the ratio of two values (e.g. a friction force over the normal force), `A+B` the
 contact force and a spring force whose sum the load fixes)."""
 import csv, json, os, shutil, sys
 
-import vtk
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import contactlab_run  # noqa: E402
+from contactlab_run import contactlab_run, read_grid, result_frames  # noqa: E402
 
 exe, scene, out, ranks = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 sets, expectations, scene_expectations = [], [], True
@@ -45,18 +44,32 @@ assert len(rows) == steps["converged"] >= steps["requested"], (steps, len(rows))
 assert steps["cuts"] > 0 or len(rows) == steps["requested"], steps
 assert float(rows[-1]["time"]) > 0
 
-reader = vtk.vtkPVDReader() if hasattr(vtk, "vtkPVDReader") else None
-pvd = open(os.path.join(out, "result.pvd")).read()
-assert pvd.count("<DataSet") == len(rows)
-last = pvd.split('file="')[-1].split('"')[0]
-path = os.path.join(out, last)
-r = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
-r.SetFileName(path)
-r.Update()
-grid = r.GetOutput()
+
+
+def values(array):
+    return [array.GetComponent(i, c) for i in range(array.GetNumberOfTuples())
+            for c in range(array.GetNumberOfComponents())]
+
+
+# The series: the rest frame at t = 0, then one frame per converged step at its time.
+frames = result_frames(out)
+times = [t for t, _ in frames]
+want = [0.0] + [float(row["time"]) for row in rows]
+assert len(times) == len(want) and times[0] == 0.0 and all(
+    abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in zip(times, want)), (times, want)
+grid = read_grid(frames[-1][1])
+rest = read_grid(frames[0][1])
 assert grid.GetNumberOfCells() == summary["elements"], (grid.GetNumberOfCells(), summary["elements"])
-for name in ["displacement"]:
+for name in ["displacement", "node_id"]:
     assert grid.GetPointData().GetArray(name) is not None, name
+# The rest frame has the fields of a step's, at rest: no displacement, no contact (all free).
+point_fields = {grid.GetPointData().GetArrayName(i) for i in range(grid.GetPointData().GetNumberOfArrays())}
+assert point_fields == {rest.GetPointData().GetArrayName(i)
+                        for i in range(rest.GetPointData().GetNumberOfArrays())}, point_fields
+assert rest.GetNumberOfCells() == grid.GetNumberOfCells()
+for name in point_fields - {"node_id"}:
+    assert not any(values(rest.GetPointData().GetArray(name))), f"rest frame: {name} is not zero"
+assert values(rest.GetPointData().GetArray("node_id")) == values(grid.GetPointData().GetArray("node_id"))
 for name in ["stress", "von_mises", "material", "rank"]:
     assert grid.GetCellData().GetArray(name) is not None, name
 if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN.md §5)
@@ -74,20 +87,22 @@ if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN
     counts = {1: "stick_points", 2: "slip_points", 3: "closed_frictionless_points"}
     for s, key in counts.items():
         assert tally[s] == summary["contact"][key], (key, tally[s], summary["contact"][key])
-    # Each point's reference coordinates are a mesh node's (a VTK point), and its current ones
-    # are those plus the node's displacement (two bodies may have nodes at one position).
+    # Each point's node is a VTK point's node_id (the mesh's node id), its reference
+    # coordinates that point's, and its current ones those plus the node's displacement.
     displacement = grid.GetPointData().GetArray("displacement")
-    nodes = {}
+    node_id = grid.GetPointData().GetArray("node_id")
+    nodes = {}  # node id -> (position, displacement): one per piece holding the node
     for i in range(grid.GetNumberOfPoints()):
         u = list(displacement.GetTuple(i)) + [0.0] * (3 - displacement.GetNumberOfComponents())
-        nodes.setdefault(tuple(round(c, 9) for c in grid.GetPoint(i)), []).append(u)
+        nodes.setdefault(int(node_id.GetValue(i)), []).append((grid.GetPoint(i), u))
     for p in points:
         reference = [float(p[f"reference_{c}"]) for c in "xyz"]
-        candidates = nodes.get(tuple(round(c, 9) for c in reference), [])
-        assert candidates, f"contact.csv node {p['node']}: reference {reference} is no mesh node"
+        assert int(p["node"]) in nodes, f"contact.csv node {p['node']} is no VTK point's node_id"
         scale = 1 + max(abs(c) for c in reference)
-        assert any(all(abs(float(p[c]) - reference[k] - u[k]) <= 1e-9 * scale
-                       for k, c in enumerate("xyz")) for u in candidates), p
+        for x, u in nodes[int(p["node"])]:
+            assert all(abs(reference[k] - x[k]) <= 1e-12 * scale for k in range(3)), (p, x)
+            assert all(abs(float(p[c]) - reference[k] - u[k]) <= 1e-9 * scale
+                       for k, c in enumerate("xyz")), (p, u)
 rank_array = grid.GetCellData().GetArray("rank")
 ranks_seen = {int(rank_array.GetValue(i)) for i in range(rank_array.GetNumberOfTuples())}
 assert ranks_seen == set(range(ranks)), ranks_seen

@@ -16,14 +16,13 @@ usage: check_blade_root.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--dead] [--s
 Prints "RESULT ..." lines for doc/verification.md (dofs, contact dofs, Newton iterations, wall
 time, the balance errors and the peak contact pressure)."""
 import argparse, json, os, sys
-import xml.etree.ElementTree as ET
 
 import numpy as np
 import vtk
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import converged_run  # noqa: E402
+from contactlab_run import converged_run, read_grid, result_frames  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("app")
@@ -45,14 +44,7 @@ rho_w2 = float(spins[0]["Density"]) * float(spins[0]["Angular Velocity"]) ** 2
 centre = np.array([float(c) for c in spins[0].get("Centre", [0, 0])][:2])
 
 # The last output of the series.
-pvd = ET.parse(os.path.join(args.out, "result.pvd")).getroot()
-last = pvd.findall(".//DataSet")[-1].get("file")
-path = os.path.join(args.out, last)
-reader = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else \
-    vtk.vtkXMLUnstructuredGridReader()
-reader.SetFileName(path)
-reader.Update()
-grid = reader.GetOutput()
+grid = read_grid(result_frames(args.out)[-1][1])
 points = np.array([grid.GetPoint(i)[:2] for i in range(grid.GetNumberOfPoints())])
 disp = grid.GetPointData().GetArray("displacement")
 u = np.array([disp.GetTuple(i)[:2] for i in range(grid.GetNumberOfPoints())])

@@ -34,11 +34,10 @@ Prints "RESULT ..." lines for doc/verification.md."""
 import argparse, csv, json, math, os, shutil, sys
 
 import numpy as np
-import vtk
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import contactlab_run  # noqa: E402
+from contactlab_run import contactlab_run, read_grid, result_frames  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -196,13 +195,7 @@ assert run.returncode == 0, f"exit code {run.returncode}"
 assert summary["converged"] is True and summary["failure"] is None
 
 # The last result: cells with their radial and angular extent, stress and plastic strain.
-pvd = open(os.path.join(args.out, "result.pvd")).read()
-path = os.path.join(args.out, pvd.split('file="')[-1].split('"')[0])
-reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
-          else vtk.vtkXMLUnstructuredGridReader())
-reader.SetFileName(path)
-reader.Update()
-grid = reader.GetOutput()
+grid = read_grid(result_frames(args.out)[-1][1])
 stress = grid.GetCellData().GetArray("stress")
 plastic = grid.GetCellData().GetArray("equivalent_plastic_strain")
 assert stress is not None and plastic is not None

@@ -71,6 +71,43 @@ TEST(GmshReader, KeepsInvertedElementsNamesUnnamedGroupsAndDropsUnusedNodes) {
   EXPECT_GT(test::cellMeasure(mesh, mesh.blocks[0], 0), 0.0);
   EXPECT_LT(test::cellMeasure(mesh, mesh.blocks[0], 1), 0.0);  // inverted, not "fixed"
   EXPECT_EQ(mesh.boundaryNames(), std::vector<std::string>{"curve-3"});
+  EXPECT_EQ(mesh.nodeTags, (std::vector<std::int64_t>{1, 2, 3, 4}));
+}
+
+// The ids users see in gmsh are the node tags: a file whose tags are not 1..N (nor in order)
+// keeps them, node i (in increasing tag order) known by its tag.
+TEST(GmshReader, KeepsNonContiguousNodeTags) {
+  const std::string path = test::freshTempDir("reader") + "/tags.msh";
+  test::writeText(path,
+                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                  "$PhysicalNames\n2\n1 5 \"edge\"\n2 7 \"plate\"\n$EndPhysicalNames\n"
+                  "$Entities\n0 1 1 0\n"
+                  "3 0 0 0 2 0 0 1 5 0\n"
+                  "1 0 0 0 2 1 0 1 7 0\n$EndEntities\n"
+                  "$Nodes\n1 6 3 90\n2 1 0 6\n90\n3\n41\n17\n58\n22\n"
+                  "0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n$EndNodes\n"
+                  "$Elements\n2 3 1 12\n2 1 3 2\n11 90 3 58 17\n12 3 41 22 58\n"
+                  "1 3 1 1\n1 90 3\n$EndElements\n");
+  const Mesh mesh = readGmshFile(path);
+  ASSERT_EQ(mesh.numNodes(), 6u);
+  EXPECT_EQ(mesh.nodeTags, (std::vector<std::int64_t>{3, 17, 22, 41, 58, 90}));
+  for (std::size_t i = 0; i < mesh.numNodes(); ++i)
+    EXPECT_EQ(mesh.nodeId(static_cast<std::int64_t>(i)), mesh.nodeTags[i]);
+  // Tag 90 is the node at the origin, tag 41 the one at (2, 0).
+  EXPECT_EQ(test::node(mesh, 5), (std::array<double, 3>{0, 0, 0}));
+  EXPECT_EQ(test::node(mesh, 3), (std::array<double, 3>{2, 0, 0}));
+  EXPECT_EQ(mesh.boundaryNodes("edge"), (std::vector<std::int64_t>{0, 5}));
+}
+
+// A generated mesh has no tags: its nodes are known by index + 1.
+TEST(GmshReader, GeneratedMeshesNameNodesByIndexPlusOne) {
+  HalfDiscParams disc;
+  for (const Mesh& mesh : {generateRectangle(RectangleParams{}), generateHalfDisc(disc)}) {
+    EXPECT_TRUE(mesh.nodeTags.empty()) << mesh.source;
+    EXPECT_EQ(mesh.nodeId(0), 1);
+    EXPECT_EQ(mesh.nodeId(static_cast<std::int64_t>(mesh.numNodes()) - 1),
+              static_cast<std::int64_t>(mesh.numNodes()));
+  }
 }
 
 TEST(GmshReader, MissingFile) {

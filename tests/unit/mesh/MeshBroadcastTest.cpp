@@ -19,6 +19,7 @@ std::uint64_t fingerprint(const Mesh& m) {
   mix(&m.dim, sizeof m.dim);
   mix(m.source.data(), m.source.size());
   mix(m.coords.data(), m.coords.size() * sizeof(double));
+  mix(m.nodeTags.data(), m.nodeTags.size() * sizeof(std::int64_t));
   for (const auto* list : {&m.blocks, &m.boundaries}) {
     const std::size_t n = list->size();
     mix(&n, sizeof n);
@@ -63,6 +64,23 @@ TEST(MeshBroadcast, EveryRankGetsRootsMesh) {
     EXPECT_EQ(mesh.boundaryNodes("upper-top").size(), 7u * 7u - 9u);
     expectIdenticalOnAllRanks(mesh);
   }
+}
+
+// A file's node tags travel with the mesh: every rank names the nodes as the file does.
+TEST(MeshBroadcast, NodeTagsTravel) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  Mesh mesh;
+  if (rank == 0) {
+    mesh = generateRectangle(RectangleParams{});
+    mesh.nodeTags.resize(mesh.numNodes());
+    for (std::size_t i = 0; i < mesh.numNodes(); ++i)
+      mesh.nodeTags[i] = 1000 + 7 * static_cast<std::int64_t>(i);
+  }
+  broadcastMesh(mesh, MPI_COMM_WORLD, 0);
+  ASSERT_EQ(mesh.nodeTags.size(), mesh.numNodes());
+  EXPECT_EQ(mesh.nodeId(3), 1021);
+  expectIdenticalOnAllRanks(mesh);
 }
 
 }  // namespace

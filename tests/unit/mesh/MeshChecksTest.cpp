@@ -55,5 +55,17 @@ TEST(MeshChecks, Rejects2DMeshOffPlaneAndMissingBlocks) {
   EXPECT_NE(errorOf(m).find("dimension 2 in a 3D mesh"), std::string::npos);
 }
 
+// A node is named by its id: its gmsh tag when the mesh has tags, else its index + 1.
+TEST(MeshChecks, NamesOffPlaneNodeByItsIdAndRefusesMiscountedTags) {
+  auto m = twoTriangles();
+  m.coords[5] = 0.5;  // node index 1
+  EXPECT_NE(errorOf(m).find("node 2 has z = 0.5"), std::string::npos) << errorOf(m);
+  m.nodeTags = {40, 7, 12, 3};
+  EXPECT_NE(errorOf(m).find("node 7 has z = 0.5"), std::string::npos) << errorOf(m);
+  m = twoTriangles();
+  m.nodeTags = {40, 7, 12};
+  EXPECT_EQ(errorOf(m), "mesh test.msh: has 3 node tags for 4 nodes");
+}
+
 }  // namespace
 }  // namespace contactlab
