@@ -364,10 +364,10 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
       }
       tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
       if (!frozenOnce_ && pt.paired && pairing.gap < -pairing.size)
-        deep.push_back("node " + std::to_string(pt.node + 1) + " of '" + zones_[z].slave +
-                       "' (zone " + zones_[z].name + ") is " + std::to_string(-pairing.gap) +
-                       " inside its master, more than the facet size " +
-                       std::to_string(pairing.size));
+        deep.push_back(
+            "node " + std::to_string(solid_.model().mesh->nodeId(pt.node)) + " of '" +
+            zones_[z].slave + "' (zone " + zones_[z].name + ") is " + std::to_string(-pairing.gap) +
+            " inside its master, more than the facet size " + std::to_string(pairing.size));
       // Repaired: other master nodes (a new graph). Moved: a different normal or master point
       // at this state (Newton must run again); the same point reached through another facet
       // of a shared vertex is not a move.
