@@ -2,6 +2,8 @@
 
 #include "formulations/PrescribedSlip.hpp"
 
+#include <functional>
+
 namespace contactlab {
 namespace {
 
@@ -174,65 +176,63 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
     ke[static_cast<std::size_t>(nl + c) * nd + nl + c] = fieldStiffness;
 }
 
-void ContactPointKernel::normalFieldColumns(const ContactPoint& pt, double t,
-                                            std::vector<double>& ke) const {
-  const ContactDiscretization& discretization = *discretizations_[pt.zone];
+void ContactPointKernel::differenceColumns(const ContactPoint& pt, int firstRow, double scale,
+                                           const std::function<void(std::vector<double>&)>& rowsAt,
+                                           std::vector<double>& ke) const {
   const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
-  const int nc = nd + ng, nu = pt.displacementDofs(dim_), f0 = nd - dim_;
+  const int nc = nd + ng, nu = pt.displacementDofs(dim_);
   std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
   for (int i = 0; i < nd; ++i)
     for (int j = 0; j < nd; ++j)
       full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
-  const double stiffness = pt.weight * zones_[pt.zone].law->normalFieldPenalty(pt.length(dim_));
   const double h = 1e-7 * pt.length(dim_);
   auto s = state_.mutableValues();
+  std::vector<double> plus, minus;
   for (int j = 0; j < nc; ++j) {
-    if (j >= nu && j < nd) continue;
+    if (j >= nu && j < nd) continue;  // the point's unknowns: their columns stay exact
     const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
     const double saved = s[pos];
     s[pos] = saved + h;
-    const auto plus = discretization.currentNormal(pt, state_, t);
+    rowsAt(plus);
     s[pos] = saved - h;
-    const auto minus = discretization.currentNormal(pt, state_, t);
+    rowsAt(minus);
     s[pos] = saved;
-    for (int c = 0; c < dim_; ++c)
-      full[static_cast<std::size_t>(f0 + c) * nc + j] = -stiffness * (plus[c] - minus[c]) / (2 * h);
+    for (std::size_t i = 0; i < plus.size(); ++i)
+      full[static_cast<std::size_t>(firstRow + static_cast<int>(i)) * nc + j] =
+          scale * (plus[i] - minus[i]) / (2 * h);
   }
   ke.swap(full);
 }
 
+void ContactPointKernel::normalFieldColumns(const ContactPoint& pt, double t,
+                                            std::vector<double>& ke) const {
+  const ContactDiscretization& discretization = *discretizations_[pt.zone];
+  const double stiffness = pt.weight * zones_[pt.zone].law->normalFieldPenalty(pt.length(dim_));
+  differenceColumns(
+      pt, static_cast<int>(pt.dofs.size()) - dim_, -stiffness,
+      [&](std::vector<double>& rows) {
+        const auto n = discretization.currentNormal(pt, state_, t);
+        rows.assign(n.begin(), n.begin() + dim_);
+      },
+      ke);
+}
+
 void ContactPointKernel::geometricColumns(const ContactPoint& pt, double t, GeometricTerms terms,
                                           std::vector<double>& ke) const {
+  // Every displacement column is a central difference of the residual with the geometry
+  // recomputed. The status piece is kept (the generalized Jacobian of that piece, as the
+  // frozen-geometry tangent).
   const ContactDiscretization& discretization = *discretizations_[pt.zone];
-  const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
-  const int nc = nd + ng;
-  const int nu = pt.displacementDofs(dim_);
-  // The multiplier columns stay the law's (exact); every displacement column is a central
-  // difference of the residual with the geometry recomputed. The status piece is kept (the
-  // generalized Jacobian of that piece, as the frozen-geometry tangent).
-  std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
-  for (int i = 0; i < nd; ++i)
-    for (int j = nu; j < nd; ++j)
-      full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
-  const double h = 1e-7 * pt.length(dim_);
-  auto s = state_.mutableValues();
-  std::vector<double> plus, minus, unused;
-  for (int j = 0; j < nc; ++j) {
-    if (j >= nu && j < nd) continue;
-    const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
-    const double saved = s[pos];
-    for (int side : {1, -1}) {
-      s[pos] = saved + side * h;
-      ContactPoint copy = pt;
-      copy.forcedStatus = static_cast<int>(pt.result.status);
-      discretization.refreshGeometry(copy, state_, t, terms);
-      evaluate(copy, t, false, side > 0 ? plus : minus, unused);
-    }
-    s[pos] = saved;
-    for (int i = 0; i < nd; ++i)
-      full[static_cast<std::size_t>(i) * nc + j] = (plus[i] - minus[i]) / (2 * h);
-  }
-  ke.swap(full);
+  std::vector<double> unused;
+  differenceColumns(
+      pt, 0, 1.0,
+      [&](std::vector<double>& rows) {
+        ContactPoint copy = pt;
+        copy.forcedStatus = static_cast<int>(pt.result.status);
+        discretization.refreshGeometry(copy, state_, t, terms);
+        evaluate(copy, t, false, rows, unused);
+      },
+      ke);
 }
 
 }  // namespace contactlab

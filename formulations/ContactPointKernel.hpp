@@ -12,6 +12,7 @@
 #include "formulations/ContactSurfaceState.hpp"
 #include "formulations/ContactZone.hpp"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,13 @@ class ContactPointKernel {
   void normalFieldColumns(const ContactPoint& pt, double t, std::vector<double>& ke) const;
 
  private:
+  // Widens ke (dofs x dofs) to dofs x (dofs + geometryDofs) and replaces, in every displacement
+  // column (the point's, then its geometryDofs'), rows firstRow.. by scale times the central
+  // difference of rowsAt, evaluated with that surface position moved by +-h.
+  void differenceColumns(const ContactPoint& pt, int firstRow, double scale,
+                         const std::function<void(std::vector<double>&)>& rowsAt,
+                         std::vector<double>& ke) const;
+
   int dim_;
   const std::vector<ContactZone>& zones_;
   const Discretizations& discretizations_;

@@ -55,10 +55,7 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     std::vector<std::int64_t> noFriction;
     if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);
     // Tributary areas by HRZ lumping in the reference configuration.
-    const auto weights = tributaryAreas(mesh, zone.slave, dim_, [&mesh](std::int64_t node) {
-      return std::array<double, 3>{mesh.coords[3 * node], mesh.coords[3 * node + 1],
-                                   mesh.coords[3 * node + 2]};
-    });
+    const auto weights = tributaryAreas(mesh, zone.slave, dim_, referencePositions(mesh));
     for (std::int64_t node : mesh.boundaryNodes(zone.slave)) {
       if (dofs.globalNode(node) < 0) continue;
       const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);
@@ -265,7 +262,7 @@ void ContactProblem::seedInitialStatuses(Vector& x, double t) {
   auto values = x.getDataNonConst(0);
   // Normal fields start at their pairing's normals (zero would close every point: g = 0).
   for (const ContactPoint& pt : points_) {
-    if (!zones_[pt.zone].law->hasNormalField() || pt.multiplier < 0) continue;
+    if (!hasNormalField(pt)) continue;
     const GO first = pt.multiplier + pt.unknowns - dim_;
     for (int c = 0; c < dim_; ++c) {
       const LO lid = map_->getLocalElement(first + c);
@@ -429,8 +426,7 @@ void ContactProblem::layOutPointDofs() {
     pt.geometrySurfacePos.clear();
     // The nodes the normal depends on: for the full geometric terms, and for a normal field,
     // whose kinematic rows depend on them whatever the algorithm.
-    const bool field = zones_[pt.zone].law->hasNormalField() && pt.multiplier >= 0;
-    if ((geometricTerms_ != GeometricTerms::full && !field) || !pt.paired) continue;
+    if ((geometricTerms_ != GeometricTerms::full && !hasNormalField(pt)) || !pt.paired) continue;
     for (std::int64_t node : discretizations_[pt.zone]->normalNodes(pt)) {
       if (node == pt.node || std::find(pt.master.begin(), pt.master.end(), node) != pt.master.end())
         continue;
@@ -462,8 +458,7 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
     if (pt.result.status != before) ++statusChanges_;
     const bool geometric = withTangent && geometricTerms_ != GeometricTerms::none && pt.paired &&
                            discretizations_[pt.zone]->linearizesGeometry();
-    const bool field = withTangent && !geometric && pt.paired && pt.multiplier >= 0 &&
-                       zones_[pt.zone].law->hasNormalField();
+    const bool field = withTangent && !geometric && pt.paired && hasNormalField(pt);
     if (geometric) kernel_->geometricColumns(pt, t, geometricTerms_, ke);
     if (field) kernel_->normalFieldColumns(pt, t, ke);
     assembler_->add(pt, re, ke, geometric || field);
@@ -485,11 +480,7 @@ void ContactProblem::commitState(const Vector& x, double t) {
     pt.slipIncrement = {0, 0, 0};
     if (pt.result.status != ContactStatus::Free) everInContact_ = true;
   }
-  std::vector<ContactPointResult> points;
-  points.reserve(points_.size());
-  for (const ContactPoint& pt : points_)
-    points.push_back(pt.result);
-  recoveredPressure_ = recoveredPressures(*solid_.model().mesh, zones_, points);
+  recoveredPressure_ = recoveredPressures(*solid_.model().mesh, zones_, lawResults());
   state_->commit();
   kernel_->setConvergedTime(t);
   solid_.commitState(*displacement(x), t);
@@ -508,27 +499,35 @@ std::vector<std::int64_t> ContactProblem::prescribedSlipNodes(std::size_t zone) 
   return nodes;
 }
 
-std::vector<ContactPointResult> ContactProblem::results() const {
+bool ContactProblem::hasNormalField(const ContactPoint& pt) const {
+  return zones_[pt.zone].law->hasNormalField() && pt.multiplier >= 0;
+}
+
+std::vector<ContactPointResult> ContactProblem::lawResults() const {
   std::vector<ContactPointResult> out;
   out.reserve(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    out.push_back(points_[i].result);
-    const bool recovered = i < recoveredPressure_.size() && !std::isnan(recoveredPressure_[i]);
-    if (recovered) out.back().pressure = recoveredPressure_[i];
-  }
+  for (const ContactPoint& pt : points_)
+    out.push_back(pt.result);
+  return out;
+}
+
+double ContactProblem::outputPressure(std::size_t i) const {
+  const bool recovered = i < recoveredPressure_.size() && !std::isnan(recoveredPressure_[i]);
+  return recovered ? recoveredPressure_[i] : points_[i].result.pressure;
+}
+
+std::vector<ContactPointResult> ContactProblem::results() const {
+  std::vector<ContactPointResult> out = lawResults();
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i].pressure = outputPressure(i);
   return out;
 }
 
 ContactResultants ContactProblem::resultants() const {
-  std::vector<ContactPointResult> points;
-  points.reserve(points_.size());
-  for (const ContactPoint& pt : points_)
-    points.push_back(pt.result);
-  std::vector<double> output(points.size());
-  const std::vector<ContactPointResult> written = results();
-  for (std::size_t i = 0; i < points.size(); ++i)
-    output[i] = written[i].pressure;
-  return contactResultants(points, output);
+  std::vector<double> output(points_.size());
+  for (std::size_t i = 0; i < output.size(); ++i)
+    output[i] = outputPressure(i);
+  return contactResultants(lawResults(), output);
 }
 
 void ContactProblem::addPointData(MeshPiece& piece) const {

@@ -101,6 +101,12 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
 
  private:
   void layOutPointDofs();
+  // Whether the point carries a normal-field formulation's slave normal among its unknowns.
+  bool hasNormalField(const ContactPoint& pt) const;
+  // The points' results with the law's pressures; the pressure a user reads (recovered where
+  // the law's is not a pressure field, SurfacePressure.hpp).
+  std::vector<ContactPointResult> lawResults() const;
+  double outputPressure(std::size_t point) const;
   void evaluateAll(const Vector& x, double t);
   void computeLocalStiffness();
 

@@ -5,6 +5,8 @@
 #include "formulations/NormalFieldAugmentedLagrangian.hpp"
 #include "formulations/Penalty.hpp"
 
+#include <utility>
+
 namespace contactlab {
 namespace {
 
@@ -21,6 +23,22 @@ Teuchos::RCP<const ParameterList> coefficients(const std::string& normal, double
   p->set(normal, normalDefault, normalDoc);
   p->set(tangential, tangentialDefault, tangentialDoc);
   return p;
+}
+
+// The augmented Lagrangian's coefficients, shared by its normal-field variant.
+Teuchos::RCP<ParameterList> augmentation() {
+  return Teuchos::rcp(new ParameterList(*coefficients(
+      "Normal Augmentation", 0.0, "r_n > 0 (pressure per length; required). Start near E/h",
+      "Tangential Augmentation", 0.0,
+      "r_t > 0 (inverse length; required with friction, unused without). Start near 1/h")));
+}
+
+// r_n and r_t as given; r_t, unused without friction, is 1 when left at its default 0.
+std::pair<double, double> augmentationOf(const ParameterList& p) {
+  const double rn = p.get<double>("Normal Augmentation");
+  double rt = p.get<double>("Tangential Augmentation");
+  if (rt == 0.0 && rn > 0) rt = 1.0;
+  return {rn, rt};
 }
 
 std::invalid_argument named(const std::invalid_argument& e, const std::string& keys) {
@@ -79,52 +97,36 @@ void registerFormulations() {
   r.add({"augmented-lagrangian",
          "The seed's augmented Lagrangian: multipliers p and Lambda, augmented p^ = p - r_n g "
          "and Lambda^ = Lambda + r_t v, generalized Newton on the statuses",
-         [] {
-           return coefficients(
-               "Normal Augmentation", 0.0,
-               "r_n > 0 (pressure per length; required). Start near E/h", "Tangential Augmentation",
-               0.0,
-               "r_t > 0 (inverse length; required with friction, unused without). Start near "
-               "1/h");
-         },
+         [] { return Teuchos::RCP<const ParameterList>(augmentation()); },
          [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
            try {
-             const double rn = p.get<double>("Normal Augmentation");
-             double rt = p.get<double>("Tangential Augmentation");
-             if (rt == 0.0 && rn > 0) rt = 1.0;  // unused without friction
+             const auto [rn, rt] = augmentationOf(p);
              return std::make_unique<AugmentedLagrangian>(rn, rt);
            } catch (const std::invalid_argument& e) {
              throw named(e, "Normal Augmentation, Tangential Augmentation");
            }
          }});
-  r.add(
-      {"normal-field-augmented-lagrangian",
-       "The seed's non-standard augmented Lagrangian: the augmented Lagrangian with a slave "
-       "normal n_s as unknown at each point (the gap measured along it), tied to the master's "
-       "normal by w kappa_n (n_s - n(u)) = 0; node-to-segment and rigid obstacles",
-       [] {
-         auto p = Teuchos::rcp(new ParameterList(*coefficients(
-             "Normal Augmentation", 0.0, "r_n > 0 (pressure per length; required). Start near E/h",
-             "Tangential Augmentation", 0.0,
-             "r_t > 0 (inverse length; required with friction, unused without). Start near "
-             "1/h")));
-         p->set("Normal Field Penalty", 0.0,
-                "kappa_n >= 0 (pressure): weighs the kinematic condition n_s = n(u); 0 = "
-                "automatic, r_n times the point's size. It changes the Newton path, not the "
-                "converged state");
-         return Teuchos::RCP<const ParameterList>(p);
-       },
-       [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
-         try {
-           const double rn = p.get<double>("Normal Augmentation");
-           double rt = p.get<double>("Tangential Augmentation");
-           if (rt == 0.0 && rn > 0) rt = 1.0;  // unused without friction
-           return std::make_unique<NormalFieldAugmentedLagrangian>(
-               rn, rt, p.get<double>("Normal Field Penalty"));
-         } catch (const std::invalid_argument& e) {
-           throw named(e, "Normal Augmentation, Tangential Augmentation, Normal Field Penalty");
-         }
-       }});
+  r.add({"normal-field-augmented-lagrangian",
+         "The seed's non-standard augmented Lagrangian: the augmented Lagrangian with a slave "
+         "normal n_s as unknown at each point (the gap measured along it), tied to the master's "
+         "normal by w kappa_n (n_s - n(u)) = 0; node-to-segment and rigid obstacles",
+         [] {
+           auto p = augmentation();
+           p->set("Normal Field Penalty", 0.0,
+                  "kappa_n >= 0 (pressure): weighs the kinematic condition n_s = n(u); 0 = "
+                  "automatic, r_n times the point's size. It changes the Newton path, not the "
+                  "converged state");
+           return Teuchos::RCP<const ParameterList>(p);
+         },
+         [](const ParameterList& p) -> std::unique_ptr<ContactLaw> {
+           try {
+             const auto [rn, rt] = augmentationOf(p);
+             return std::make_unique<NormalFieldAugmentedLagrangian>(
+                 rn, rt, p.get<double>("Normal Field Penalty"));
+           } catch (const std::invalid_argument& e) {
+             throw named(e, "Normal Augmentation, Tangential Augmentation, Normal Field Penalty");
+           }
+         }});
 }
 
 }  // namespace contactlab

@@ -48,7 +48,7 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
   ReferenceElement::get(type).shape(pairing.projection.xi, pt.N.data());
   pt.xi[0] = pairing.projection.xi[0];
   pt.xi[1] = pairing.projection.xi[1];
-  setSmoothedNormal(pt, nodalNormals_, pairing.projection.normal);
+  pt.normal = smoothedNormal(pt, nodalNormals_, pairing.projection.normal);
   for (int c = 0; c < 3; ++c)
     result.gap += pt.normal[c] * (xs[c] - pairing.projection.point[c]);
   const auto& fc = search_->facets()[pt.facet].coords;
@@ -61,8 +61,8 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
   return result;
 }
 
-void NodeToSegmentDiscretization::setSmoothedNormal(
-    ContactPoint& pt, const std::map<std::int64_t, std::array<double, 3>>& nodal,
+std::array<double, 3> NodeToSegmentDiscretization::smoothedNormal(
+    const ContactPoint& pt, const std::map<std::int64_t, std::array<double, 3>>& nodal,
     const double* facetNormal) const {
   // Smoothed normal (Code_Aster's LISSAGE): the nodal normals interpolated at the master point,
   // continuous across the kinks of the deformed master surface, where the facet normal jumps
@@ -72,8 +72,10 @@ void NodeToSegmentDiscretization::setSmoothedNormal(
     for (int c = 0; c < 3; ++c)
       n[c] += pt.N[a] * nodal.at(pt.master[a])[c];
   const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  std::array<double, 3> normal{};
   for (int c = 0; c < 3; ++c)
-    pt.normal[c] = norm > 0 ? n[c] / norm : facetNormal[c];
+    normal[c] = norm > 0 ? n[c] / norm : facetNormal[c];
+  return normal;
 }
 
 std::vector<std::int64_t> NodeToSegmentDiscretization::normalNodes(const ContactPoint& pt) const {
@@ -102,11 +104,7 @@ std::array<double, 3> NodeToSegmentDiscretization::currentNormal(const ContactPo
                                                                  const ContactSurfaceState& state,
                                                                  double /*t*/) const {
   if (!pt.paired) return pt.normal;
-  ContactPoint copy;
-  copy.master = pt.master;
-  copy.N = pt.N;
-  setSmoothedNormal(copy, nodalNormalsAround(pt, state), pt.normal.data());
-  return copy.normal;
+  return smoothedNormal(pt, nodalNormalsAround(pt, state), pt.normal.data());
 }
 
 void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,
@@ -135,7 +133,7 @@ void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,
   ReferenceElement::get(type).shape(proj.xi, pt.N.data());
   // `pairing`: the smoothed normal (and its tangents) is held, only the master point moves.
   if (terms != GeometricTerms::full) return;
-  setSmoothedNormal(pt, nodalNormalsAround(pt, state), proj.normal);
+  pt.normal = smoothedNormal(pt, nodalNormalsAround(pt, state), proj.normal);
   tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
 }
 

@@ -31,12 +31,14 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
                        GeometricTerms terms) const override;
 
  private:
-  // The smoothed normal at the point's master point (fallback: the facet's own normal).
+  // The nodal normals of the facets around the point's master nodes, at the state's positions.
   std::map<std::int64_t, std::array<double, 3>> nodalNormalsAround(
       const ContactPoint& pt, const ContactSurfaceState& state) const;
-  void setSmoothedNormal(ContactPoint& pt,
-                         const std::map<std::int64_t, std::array<double, 3>>& nodal,
-                         const double* facetNormal) const;
+  // The smoothed normal at the point's master point, from its master nodes' normals and shape
+  // values (fallback: the facet's own normal).
+  std::array<double, 3> smoothedNormal(const ContactPoint& pt,
+                                       const std::map<std::int64_t, std::array<double, 3>>& nodal,
+                                       const double* facetNormal) const;
 
   MasterSurface master_;
   std::unique_ptr<ContactSearch> search_;  // at the last prepare()

@@ -9,6 +9,13 @@
 
 namespace contactlab {
 
+NodePosition referencePositions(const Mesh& mesh) {
+  return [&mesh](std::int64_t node) {
+    return std::array<double, 3>{mesh.coords[3 * node], mesh.coords[3 * node + 1],
+                                 mesh.coords[3 * node + 2]};
+  };
+}
+
 std::map<std::int64_t, double> tributaryAreas(const Mesh& mesh, const std::string& group, int dim,
                                               const NodePosition& position) {
   std::map<std::int64_t, double> weights;

@@ -15,6 +15,9 @@ namespace contactlab {
 
 using NodePosition = std::function<std::array<double, 3>(std::int64_t node)>;
 
+// The mesh's reference coordinates as a NodePosition (`mesh` must outlive it).
+NodePosition referencePositions(const Mesh& mesh);
+
 // Over the facets of boundary group `group` (dim: the mesh's space dimension), with the nodes
 // at `position` (the reference coordinates, or a current configuration).
 std::map<std::int64_t, double> tributaryAreas(const Mesh& mesh, const std::string& group, int dim,

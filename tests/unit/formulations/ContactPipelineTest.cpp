@@ -21,17 +21,12 @@
 namespace contactlab {
 namespace {
 
-std::array<double, 3> referencePosition(const Mesh& mesh, std::int64_t node) {
-  return {mesh.coords[3 * node], mesh.coords[3 * node + 1], mesh.coords[3 * node + 2]};
-}
-
 TEST(TributaryAreas, LinearSegmentsGiveHalvesAndQuadraticOnesTheHrzShares) {
   RectangleParams r;
   r.lengths = {3.0, 1.0};
   r.divisions = {3, 1};
   const Mesh linear = generateRectangle(r);
-  const auto ref = [&linear](std::int64_t n) { return referencePosition(linear, n); };
-  const auto w = tributaryAreas(linear, "bottom", 2, ref);
+  const auto w = tributaryAreas(linear, "bottom", 2, referencePositions(linear));
   ASSERT_EQ(w.size(), 4u);
   std::multiset<double> values;
   for (const auto& [node, value] : w)
@@ -44,8 +39,7 @@ TEST(TributaryAreas, LinearSegmentsGiveHalvesAndQuadraticOnesTheHrzShares) {
   r.lengths = {1.0, 1.0};
   r.divisions = {1, 1};
   const Mesh quadratic = generateRectangle(r);
-  const auto refQ = [&quadratic](std::int64_t n) { return referencePosition(quadratic, n); };
-  const auto wq = tributaryAreas(quadratic, "bottom", 2, refQ);
+  const auto wq = tributaryAreas(quadratic, "bottom", 2, referencePositions(quadratic));
   ASSERT_EQ(wq.size(), 3u);
   double sum = 0;
   for (const auto& [node, value] : wq) {
@@ -56,8 +50,8 @@ TEST(TributaryAreas, LinearSegmentsGiveHalvesAndQuadraticOnesTheHrzShares) {
   EXPECT_NEAR(sum, 1.0, 1e-12);
 
   // In a current configuration: the bottom stretched twice doubles every share.
-  const auto stretched = [&linear](std::int64_t n) {
-    auto x = referencePosition(linear, n);
+  const auto stretched = [reference = referencePositions(linear)](std::int64_t n) {
+    auto x = reference(n);
     x[0] *= 2;
     return x;
   };
@@ -112,8 +106,7 @@ struct StackedSurfaces {
     state->import(*u);
   }
   std::vector<ContactPoint> slavePoints() const {
-    const auto weights = tributaryAreas(
-        *mesh, zone.slave, 2, [this](std::int64_t n) { return referencePosition(*mesh, n); });
+    const auto weights = tributaryAreas(*mesh, zone.slave, 2, referencePositions(*mesh));
     std::vector<ContactPoint> points;
     for (std::int64_t n : mesh->boundaryNodes(zone.slave)) {
       ContactPoint pt;
