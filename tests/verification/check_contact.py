@@ -51,6 +51,14 @@ shutil.rmtree(args.out, ignore_errors=True)
 cmd, run = contactlab_run(args.exe, args.scene, args.out, args.set, args.ranks)
 print(" ".join(cmd)); print(run.stdout, run.stderr)
 summary = json.load(open(os.path.join(args.out, "summary.json")))
+# The formulation a --set asks for is the one that ran (a key the scene ignored would verify
+# the scene's own formulation under another's name).
+for s in args.set:
+    key, _, value = s.partition("=")
+    parts = key.split("/")
+    if len(parts) == 4 and parts[0] == "Contact" and parts[2:] == ["Formulation", "Type"]:
+        ran = summary["formulation"][parts[1]]["type"]
+        assert ran == value, f"Contact/{parts[1]} ran {ran}, not the {value} asked for"
 
 if args.case == "no-equilibrium":
     assert run.returncode == 1, f"exit code {run.returncode}: expected a named failure"
