@@ -232,7 +232,9 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
       options_(std::move(options)),
       solver_(solver),
       detector_(options_.grazingTolerance),
-      loops_(composeLoops(options_, problem, controls)) {
+      loops_(composeLoops(options_, problem, controls)),
+      slowDynamics_(options_.slowDynamics) {
+  slowDynamics_.requireMass(problem_);
   if (controls_)
     controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
                                                            : GeometricTerms::none);
@@ -367,6 +369,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   }
   for (const auto& loop : loops_)
     loop->beginStep();
+  slowDynamics_.beginStep(problem_, t);
   problem_.updateGeometry(x, t);
   const Prediction prediction = predict(u, x, sr, report);
   if (prediction.done) problem_.updateGeometry(x, t);
@@ -469,6 +472,13 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   RunReport report;
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_) controls_->seedInitialStatuses(u, 0.0);
+  slowDynamics_.start(u, 0.0);
+  // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
+  struct StaticAfterRun {
+    const SlowDynamics& slowDynamics;
+    NonlinearSystem& system;
+    ~StaticAfterRun() { slowDynamics.end(system); }
+  } staticAfterRun{slowDynamics_, problem_};
   auto x = problem_.createVector();
   const double nominal = options_.endTime / options_.steps;
   const double smallest = std::ldexp(nominal, -options_.maxCuts);
@@ -527,6 +537,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       continue;
     }
     u.assign(*x);
+    slowDynamics_.commit(problem_, u, sr.time);
     problem_.commitState(u, sr.time);
     ++report.steps;
     const auto t0 = std::chrono::steady_clock::now();

@@ -19,9 +19,9 @@
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
+#include "algorithms/SlowDynamics.hpp"
 #include "algorithms/StepReport.hpp"
 #include "core/problem/NonlinearSystem.hpp"
-#include "core/problem/SlowDynamics.hpp"
 #include "formulations/ContactControls.hpp"
 #include "linear/LinearSolver.hpp"
 
@@ -59,7 +59,7 @@ struct StaticSolverOptions {
   std::string cyclingTreatment = "none";  // none | automatic | forced
   double grazingTolerance = 1e-6;
   GeometricTerms geometricTerms = GeometricTerms::pairing;  // with the geometry in Newton
-  SlowDynamics slowDynamics;  // applied by the model (SolidModel::slowDynamics), read here
+  SlowDynamicsOptions slowDynamics;  // the regularization this solver applies (SlowDynamics)
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();
@@ -136,6 +136,7 @@ class StaticSolver {
   CyclingDetector detector_;
   // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
   std::vector<std::unique_ptr<FixedPointLoop>> loops_;
+  SlowDynamics slowDynamics_;  // the regularizing inertia and its history of converged states
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;

@@ -1,6 +1,7 @@
 #include "apps/RunCommand.hpp"
 
 #include "algorithms/RunStatic.hpp"
+#include "algorithms/SlowDynamics.hpp"
 #include "apps/DefaultScene.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
@@ -120,6 +121,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       } catch (const InputError& e) {
         throw InputError(sm.scene.path + ": Contact: " + e.what());
       }
+    }
+    // The regularization's mass is checked now, not at the first step.
+    try {
+      SlowDynamics(sm.solverOptions.slowDynamics).requireMass(*problem);
+    } catch (const InputError& e) {
+      throw InputError(sm.scene.path + ": Algorithm: " + e.what());
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);

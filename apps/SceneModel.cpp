@@ -319,7 +319,6 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       comm);
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
-  sm.model.slowDynamics = sm.solverOptions.slowDynamics;
   const int dim = mesh->dim;
 
   // Materials, one per block.

@@ -486,6 +486,12 @@ void ContactProblem::commitState(const Vector& x, double t) {
   solid_.commitState(*displacement(x), t);
 }
 
+void ContactProblem::setInertia(const InertiaTerm& inertia) {
+  InertiaTerm solidTerm = inertia;
+  if (inertia.reference) solidTerm.reference = displacement(*inertia.reference);
+  solid_.setInertia(solidTerm);
+}
+
 std::vector<std::int64_t> ContactProblem::prescribedSlipNodes(std::size_t zone) const {
   // Points are evaluated on their owners: the union over the ranks.
   std::vector<int> local(points_.size(), 0), global(points_.size(), 0);

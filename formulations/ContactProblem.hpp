@@ -59,6 +59,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // (InputError, on every rank, when a slave point is deeper than its master facet's size).
   bool updateGeometry(const Vector& x, double t) override;
   void commitState(const Vector& x, double t) override;
+  // The solid's mass; the inertia acts on the displacement part of x (multipliers have none).
+  std::string massUnavailable() const override { return solid_.massUnavailable(); }
+  void setInertia(const InertiaTerm& inertia) override;
 
   // ContactControls: the seam for the algorithms (fixed points, cycling treatments).
   void freezeStatuses(bool frozen) override;

@@ -10,6 +10,7 @@
 
 #include <Teuchos_RCP.hpp>
 
+#include <stdexcept>
 #include <string>
 
 namespace contactlab {
@@ -20,6 +21,17 @@ namespace contactlab {
 struct AssemblyFailure {
   std::string code;
   std::string message;
+};
+
+// The inertia of a regularizing dynamics, c M with M the mass matrix of the materials' densities
+// (consistent, or lumped). The algorithm that regularizes owns c and the reference
+// (algorithms/SlowDynamics.hpp); the system only knows its mass. With a reference, the residual
+// gains the inertia force c M (u - reference) on the displacement part of x; without, only the
+// tangent gains c M (the residual stays static). coefficient 0: no inertia.
+struct InertiaTerm {
+  double coefficient = 0;
+  bool lumped = false;
+  Teuchos::RCP<const Vector> reference;  // shaped as x; null: the tangent only
 };
 
 class NonlinearSystem {
@@ -41,6 +53,14 @@ class NonlinearSystem {
   virtual bool updateGeometry(const Vector& /*x*/, double /*t*/) { return false; }
   // The state x at time t is converged: it becomes the reference of the next step.
   virtual void commitState(const Vector& x, double t) = 0;
+  // Why this system cannot carry an inertia term (a sentence naming what lacks a mass), or empty
+  // when it can.
+  virtual std::string massUnavailable() const { return "this system has no mass matrix"; }
+  // Every following assemble() adds the term (until the next call). Only a system whose
+  // massUnavailable() is empty accepts a nonzero coefficient.
+  virtual void setInertia(const InertiaTerm& inertia) {
+    if (inertia.coefficient != 0) throw std::logic_error(massUnavailable());
+  }
 };
 
 }  // namespace contactlab

@@ -19,16 +19,6 @@
 
 namespace contactlab {
 
-struct Problem::LocalElement {
-  int block;
-  std::size_t cell;
-  int kernel;              // index in kernels_
-  std::vector<int> nodes;  // overlap node indices
-  std::vector<LO> rows;    // overlap-map LIDs of its dofs
-  std::vector<double> stateOld, stateNew;
-  bool plastic = false;  // the last converged step increased the plastic strain somewhere
-};
-
 namespace {
 
 std::string elementLabel(const Mesh& mesh, int block, std::size_t cell) {
@@ -68,8 +58,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
         kernelOf.emplace(std::make_pair(block.type, kinematics), static_cast<int>(kernels_.size()));
     if (inserted) {
       kernels_.push_back(makeElementKernel(block.type, kinematics));
-      if (model_.slowDynamics.enabled || !model_.centrifugalLoads.empty())
-        massKernels_.push_back(std::make_unique<MassKernel>(block.type));
+      massKernels_.push_back(std::make_unique<MassKernel>(block.type));
     }
     LocalElement e;
     e.block = ref.block;
@@ -212,15 +201,6 @@ void Problem::checkModel() const {
     if (!load.block.empty() && mesh.findBlocks(load.block).empty())
       throw InputError("centrifugal load '" + load.name + "' names block '" + load.block +
                        "', which is not in " + where);
-  if (model_.slowDynamics.enabled)
-    for (const auto& [name, material] : model_.materials)
-      if (!(material->density() > 0))
-        throw InputError(
-            "the slow-dynamics regularization needs a mass, but the material of "
-            "block '" +
-            name +
-            "' has density 0: give it a density (alpha scales "
-            "the mass)");
 }
 
 void Problem::buildGraph() {
@@ -330,10 +310,9 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   auto uo = uOverlap->getData(0);
   std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
   if (withTangent) assembler_->begin();
-  const SlowDynamics& sd = model_.slowDynamics;
-  const double c = sd.coefficient(t - inertia_.time);
-  const bool inertiaForce = c > 0 && sd.inertiaInResidual && residual;
-  if (inertiaForce) predictInertiaReference(t);
+  const double c = inertia_.coefficient;
+  const bool inertiaForce = c > 0 && inertia_.reference && residual;
+  const double* reference = inertiaForce ? inertia_.reference->getData(0).getRawPtr() : nullptr;
   std::vector<double> x, ue, fe, ke, me;
   int failureCode = 0;  // 1: material-update-failed, 2: inverted-element
   std::string failureMessage;
@@ -363,13 +342,13 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     }
     if (c > 0 && (inertiaForce || withTangent)) {
       me.assign(nd * nd, 0.0);
-      massKernels_[e.kernel]->add(x.data(), blockMaterial_[e.block]->density(), sd.lumped,
+      massKernels_[e.kernel]->add(x.data(), blockMaterial_[e.block]->density(), inertia_.lumped,
                                   me.data());
       for (std::size_t i = 0; i < nd; ++i)
         for (std::size_t j = 0; j < nd; ++j) {
           const double cm = c * me[i * nd + j];
           if (withTangent) ke[i * nd + j] += cm;
-          if (inertiaForce) fe[i] += cm * (ue[j] - inertia_.reference[e.rows[j]]);
+          if (inertiaForce) fe[i] += cm * (ue[j] - reference[e.rows[j]]);
         }
     }
     if (withTangent && !centrifugal_.empty())
@@ -444,209 +423,22 @@ void Problem::commitState() {
   }
 }
 
-MaterialStateSummary Problem::materialState() const {
-  std::array<double, 3> local{}, global{};  // max plastic strain, plastic volume, volume
-  int plasticity = 0;
-  std::vector<double> x, w;
-  for (const auto& e : elements_) {
-    if (e.stateOld.empty()) continue;
-    plasticity = 1;
-    const Material& material = *blockMaterial_[e.block];
-    const ElementKernel& kernel = *kernels_[e.kernel];
-    gatherCoordinates(e.nodes, x);
-    w.resize(kernel.numQuadraturePoints());
-    kernel.pointMeasures(x.data(), w.data());
-    for (int q = 0; q < kernel.numQuadraturePoints(); ++q) {
-      const double p = material.equivalentPlasticStrain(&e.stateOld[q * material.stateSize()]);
-      local[0] = std::max(local[0], p);
-      if (p > 0) local[1] += w[q];
-      local[2] += w[q];
-    }
-  }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, local.data(), global.data());
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, local.data() + 1, global.data() + 1);
-  int anyPlasticity = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, plasticity, Teuchos::outArg(anyPlasticity));
-  MaterialStateSummary summary;
-  summary.plasticity = anyPlasticity > 0;
-  summary.maxPlasticStrain = global[0];
-  summary.plasticVolumeFraction = global[2] > 0 ? global[1] / global[2] : 0.0;
-  return summary;
+std::string Problem::massUnavailable() const {
+  for (const auto& [block, material] : model_.materials)
+    if (!(material->density() > 0))
+      return "the material of block '" + block + "' has density 0: give it a density";
+  return "";
 }
 
-void Problem::commitState(const Vector& u, double t) {
-  commitState();
-  if (!model_.slowDynamics.enabled) return;
-  auto uo = overlapCopy(u)->getData(0);
-  std::vector<double> current(uo.begin(), uo.end());
-  if (inertia_.current.empty()) inertia_.current.assign(current.size(), 0.0);
-  inertia_.previous = std::move(inertia_.current);
-  inertia_.current = std::move(current);
-  inertia_.previousStep = t - inertia_.time;
-  inertia_.time = t;
-}
-
-void Problem::predictInertiaReference(double t) {
-  // u* = u_n + dt v_n with v_n = (u_n - u_(n-1)) / dt_n: the implicit Euler acceleration is
-  // (u - u*) / dt^2. Zero velocity before the first converged step.
-  const std::size_t n = dofs_->overlapMap()->getNodeNumElements();
-  if (inertia_.current.empty()) inertia_.current.assign(n, 0.0);
-  inertia_.reference = inertia_.current;
-  if (inertia_.previous.empty() || !(inertia_.previousStep > 0)) return;
-  const double ratio = (t - inertia_.time) / inertia_.previousStep;
-  for (std::size_t i = 0; i < n; ++i)
-    inertia_.reference[i] += ratio * (inertia_.current[i] - inertia_.previous[i]);
-}
-
-std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {
-  const auto& e = elements_[index];
-  auto uo = uOverlap.getData(0);
-  std::vector<double> x, ue(e.rows.size());
-  gatherCoordinates(e.nodes, x);
-  for (std::size_t i = 0; i < e.rows.size(); ++i)
-    ue[i] = uo[e.rows[i]];
-  // Evaluated from the converged state into a scratch trial state: output changes nothing.
-  std::vector<double> scratch(e.stateNew.size());
-  std::array<double, 6> average{};
-  kernels_[e.kernel]->stresses(x.data(), ue.data(), *blockMaterial_[e.block],
-                               e.stateOld.empty() ? nullptr : e.stateOld.data(),
-                               scratch.empty() ? nullptr : scratch.data(), nullptr, average.data());
-  return average;
-}
-
-MeshPiece Problem::outputPiece(const Vector& u) const {
-  const Mesh& mesh = *model_.mesh;
-  const int dim = this->dim();
-  auto uOverlap = overlapCopy(u);
-  auto uo = uOverlap->getData(0);
-  MeshPiece piece;
-  const auto& nodes = dofs_->overlapNodes();
-  piece.points.reserve(3 * nodes.size());
-  FieldData disp{"displacement", 3, std::vector<double>(3 * nodes.size(), 0.0)};
-  for (std::size_t a = 0; a < nodes.size(); ++a) {
-    for (int i = 0; i < 3; ++i)
-      piece.points.push_back(mesh.coords[3 * nodes[a] + i]);
-    for (int c = 0; c < dim; ++c)
-      disp.values[3 * a + c] = uo[a * dim + c];
+void Problem::setInertia(const InertiaTerm& inertia) {
+  if (inertia.coefficient != 0) {
+    const std::string missing = massUnavailable();
+    if (!missing.empty()) throw InputError("an inertia term needs a mass, but " + missing);
   }
-  piece.pointData.push_back(std::move(disp));
-  FieldData stress{"stress", 6, {}}, vm{"von_mises", 1, {}}, material{"material", 1, {}},
-      rank{"rank", 1, {}};
-  std::vector<double> plasticStrain(elements_.size(), 0.0), plastic(elements_.size(), 0.0);
-  piece.offsets.push_back(0);
-  for (std::size_t i = 0; i < elements_.size(); ++i) {
-    const auto& e = elements_[i];
-    piece.cellTypes.push_back(mesh.blocks[e.block].type);
-    piece.connectivity.insert(piece.connectivity.end(), e.nodes.begin(), e.nodes.end());
-    piece.offsets.push_back(static_cast<std::int64_t>(piece.connectivity.size()));
-    const auto s = elementStress(i, *uOverlap);
-    stress.values.insert(stress.values.end(), s.begin(), s.end());
-    const double j2 = 0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
-                             (s[2] - s[0]) * (s[2] - s[0])) +
-                      3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    vm.values.push_back(std::sqrt(j2));
-    material.values.push_back(e.block);
-    rank.values.push_back(comm_->getRank());
-    if (!e.stateOld.empty()) {
-      const Material& law = *blockMaterial_[e.block];
-      const int nq = static_cast<int>(e.stateOld.size()) / law.stateSize();
-      double sum = 0;
-      for (int q = 0; q < nq; ++q)
-        sum += law.equivalentPlasticStrain(&e.stateOld[q * law.stateSize()]);
-      plasticStrain[i] = sum / nq;
-      plastic[i] = e.plastic ? 1.0 : 0.0;
-    }
-  }
-  piece.cellData = {std::move(stress), std::move(vm), std::move(material), std::move(rank)};
-  // Every rank writes the same fields (a piece without plastic elements writes zeros).
-  if (model_.hasInternalVariables()) {
-    piece.cellData.push_back({"equivalent_plastic_strain", 1, std::move(plasticStrain)});
-    piece.cellData.push_back({"plastic", 1, std::move(plastic)});
-  }
-  return piece;
-}
-
-DisplacementErrors Problem::displacementErrors(
-    const Vector& u, const std::function<void(const double* x, double* u)>& exact,
-    const std::function<void(const double* x, double* grad)>& exactGradient) const {
-  const Mesh& mesh = *model_.mesh;
-  const int dim = this->dim();
-  auto uOverlap = overlapCopy(u);
-  auto uo = uOverlap->getData(0);
-  std::array<double, 4> local{}, global{};  // l2^2, energy^2, l2Exact^2, energyExact^2
-  std::vector<double> x, N, dN, dNdx;
-  for (const auto& e : elements_) {
-    const auto& block = mesh.blocks[e.block];
-    const auto& ref = ReferenceElement::get(block.type);
-    const auto& rule = quadratureRule(block.type, 2 * info(block.type).order + 2);
-    const int n = static_cast<int>(e.nodes.size());
-    gatherCoordinates(e.nodes, x);
-    N.resize(n);
-    dN.resize(n * dim);
-    dNdx.resize(n * dim);
-    for (int q = 0; q < rule.size(); ++q) {
-      const double* xi = &rule.points[q * rule.dim];
-      ref.shape(xi, N.data());
-      ref.shapeDerivatives(xi, dN.data());
-      const double w =
-          rule.weights[q] * physicalGradients(dim, n, x.data(), dN.data(), dNdx.data());
-      double point[3] = {0, 0, 0}, uh[3] = {0, 0, 0}, gh[9] = {0}, ue[3] = {0, 0, 0}, ge[9] = {0};
-      interpolatePosition(n, x.data(), N.data(), point);
-      for (int a = 0; a < n; ++a)
-        for (int i = 0; i < dim; ++i) {
-          const double value = uo[e.rows[a * dim + i]];
-          uh[i] += N[a] * value;
-          for (int j = 0; j < dim; ++j)
-            gh[i * 3 + j] += dNdx[a * dim + j] * value;
-        }
-      exact(point, ue);
-      exactGradient(point, ge);
-      for (int i = 0; i < dim; ++i) {
-        local[0] += w * (uh[i] - ue[i]) * (uh[i] - ue[i]);
-        local[2] += w * ue[i] * ue[i];
-        for (int j = 0; j < dim; ++j) {
-          local[1] += w * (gh[i * 3 + j] - ge[i * 3 + j]) * (gh[i * 3 + j] - ge[i * 3 + j]);
-          local[3] += w * ge[i * 3 + j] * ge[i * 3 + j];
-        }
-      }
-    }
-  }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 4, local.data(), global.data());
-  return {std::sqrt(global[0]), std::sqrt(global[1]), std::sqrt(global[2]), std::sqrt(global[3])};
-}
-
-std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t meshNode) const {
-  std::array<double, 3> local{}, global{};
-  if (dofs_->nodeOwner(meshNode) == comm_->getRank()) {
-    auto data = u.getData(0);
-    const int n = dofs_->overlapNodeIndex(meshNode);
-    for (int c = 0; c < dim(); ++c)
-      local[c] = data[n * dim() + c];
-  }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, local.data(), global.data());
-  return global;
-}
-
-std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode) const {
-  // Average over the elements around the node, whichever rank assembles them.
-  auto uOverlap = overlapCopy(u);
-  std::array<double, 7> local{}, global{};
-  const int n = dofs_->overlapNodeIndex(meshNode);
-  if (n >= 0) {
-    for (std::size_t i = 0; i < elements_.size(); ++i) {
-      const auto& e = elements_[i];
-      if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
-      const auto s = elementStress(i, *uOverlap);
-      for (int k = 0; k < 6; ++k)
-        local[k] += s[k];
-      local[6] += 1.0;
-    }
-  }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 7, local.data(), global.data());
-  std::array<double, 6> s{};
-  for (int k = 0; k < 6; ++k)
-    s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
-  return s;
+  inertia_.coefficient = inertia.coefficient;
+  inertia_.lumped = inertia.lumped;
+  // The reference on the overlap map: the elements read their ghost nodes' values too.
+  inertia_.reference = inertia.reference ? overlapCopy(*inertia.reference) : Teuchos::null;
 }
 
 }  // namespace contactlab

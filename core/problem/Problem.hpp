@@ -79,8 +79,12 @@ class Problem : public NonlinearSystem {
   const std::vector<Reaction>& springForces() const { return springForces_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
   void commitState();
-  // Same, and u at time t becomes the reference of the slow-dynamics inertia (when enabled).
-  void commitState(const Vector& u, double t) override;
+  void commitState(const Vector& /*u*/, double /*t*/) override { commitState(); }
+  // Empty when every material has a density; else a sentence naming the block without one.
+  std::string massUnavailable() const override;
+  // The inertia c M (u - reference) of a regularizing dynamics (NonlinearSystem.hpp), added
+  // element by element. Throws InputError for a nonzero coefficient without a mass.
+  void setInertia(const InertiaTerm& inertia) override;
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
   // Names of the pressure loads that follow the deformation (on finite-strain elements, see
@@ -104,7 +108,16 @@ class Problem : public NonlinearSystem {
   std::array<double, 6> nodeStress(const Vector& u, std::int64_t meshNode) const;
 
  private:
-  struct LocalElement;
+  // One element of this rank: its overlap nodes and dofs, and its internal variables.
+  struct LocalElement {
+    int block;
+    std::size_t cell;
+    int kernel;              // index in kernels_
+    std::vector<int> nodes;  // overlap node indices
+    std::vector<LO> rows;    // overlap-map LIDs of its dofs
+    std::vector<double> stateOld, stateNew;
+    bool plastic = false;  // the last converged step increased the plastic strain somewhere
+  };
   void checkModel() const;
   void checkElementGeometry() const;
   void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;
@@ -121,16 +134,15 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<const Comm> comm_;
   std::unique_ptr<DofMap> dofs_;
   std::vector<LocalElement> elements_;
-  std::vector<std::unique_ptr<ElementKernel>> kernels_;  // one per element type and kinematics
-  // Same order; with slow dynamics or centrifugal loads only.
-  std::vector<std::unique_ptr<MassKernel>> massKernels_;
-  std::vector<CentrifugalLoadKernel> centrifugal_;  // one per model_.centrifugalLoads
-  // Converged displacements (overlap) of the last two steps and the inertia reference u*.
-  struct InertiaState {
-    std::vector<double> current, previous, reference;
-    double time = 0, previousStep = 0;
+  std::vector<std::unique_ptr<ElementKernel>> kernels_;   // one per element type and kinematics
+  std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order
+  std::vector<CentrifugalLoadKernel> centrifugal_;        // one per model_.centrifugalLoads
+  // The inertia term of setInertia(), its reference on the overlap map.
+  struct Inertia {
+    double coefficient = 0;
+    bool lumped = false;
+    Teuchos::RCP<Vector> reference;
   } inertia_;
-  void predictInertiaReference(double t);
   std::vector<const Material*> blockMaterial_;
   // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
   std::vector<char> constrained_;

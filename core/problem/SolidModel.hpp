@@ -1,11 +1,10 @@
 #pragma once
 // Everything that defines a solid model independently of how it is solved: the mesh, one
-// material per element block, boundary conditions, springs to ground and loads (and, when asked,
-// the inertia of the slow-dynamics regularization).
+// material per element block, boundary conditions, springs to ground and loads. (A regularizing
+// inertia is the algorithm's: NonlinearSystem::setInertia.)
 #include "core/materials/Material.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/Loads.hpp"
-#include "core/problem/SlowDynamics.hpp"
 
 #include <map>
 #include <memory>
@@ -23,7 +22,6 @@ struct SolidModel {
   std::vector<CentrifugalLoad> centrifugalLoads;
   std::vector<PointLoad> pointLoads;
   std::vector<NodalSpring> springs;
-  SlowDynamics slowDynamics;
 
   // Some block's material carries internal variables (plasticity): outputs add its fields.
   bool hasInternalVariables() const {

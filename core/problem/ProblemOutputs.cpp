@@ -1,0 +1,195 @@
+// Problem's outputs: the fields written per step, the material-state summary, errors against an
+// exact solution and values at a mesh node. Read-only: none changes the converged state.
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/fem/QuadratureRule.hpp"
+#include "core/fem/ReferenceElement.hpp"
+#include "core/problem/ElementKernel.hpp"
+#include "core/problem/Problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace contactlab {
+
+MaterialStateSummary Problem::materialState() const {
+  std::array<double, 3> local{}, global{};  // max plastic strain, plastic volume, volume
+  int plasticity = 0;
+  std::vector<double> x, w;
+  for (const auto& e : elements_) {
+    if (e.stateOld.empty()) continue;
+    plasticity = 1;
+    const Material& material = *blockMaterial_[e.block];
+    const ElementKernel& kernel = *kernels_[e.kernel];
+    gatherCoordinates(e.nodes, x);
+    w.resize(kernel.numQuadraturePoints());
+    kernel.pointMeasures(x.data(), w.data());
+    for (int q = 0; q < kernel.numQuadraturePoints(); ++q) {
+      const double p = material.equivalentPlasticStrain(&e.stateOld[q * material.stateSize()]);
+      local[0] = std::max(local[0], p);
+      if (p > 0) local[1] += w[q];
+      local[2] += w[q];
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, local.data(), global.data());
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, local.data() + 1, global.data() + 1);
+  int anyPlasticity = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, plasticity, Teuchos::outArg(anyPlasticity));
+  MaterialStateSummary summary;
+  summary.plasticity = anyPlasticity > 0;
+  summary.maxPlasticStrain = global[0];
+  summary.plasticVolumeFraction = global[2] > 0 ? global[1] / global[2] : 0.0;
+  return summary;
+}
+
+std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {
+  const auto& e = elements_[index];
+  auto uo = uOverlap.getData(0);
+  std::vector<double> x, ue(e.rows.size());
+  gatherCoordinates(e.nodes, x);
+  for (std::size_t i = 0; i < e.rows.size(); ++i)
+    ue[i] = uo[e.rows[i]];
+  // Evaluated from the converged state into a scratch trial state: output changes nothing.
+  std::vector<double> scratch(e.stateNew.size());
+  std::array<double, 6> average{};
+  kernels_[e.kernel]->stresses(x.data(), ue.data(), *blockMaterial_[e.block],
+                               e.stateOld.empty() ? nullptr : e.stateOld.data(),
+                               scratch.empty() ? nullptr : scratch.data(), nullptr, average.data());
+  return average;
+}
+
+MeshPiece Problem::outputPiece(const Vector& u) const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  auto uOverlap = overlapCopy(u);
+  auto uo = uOverlap->getData(0);
+  MeshPiece piece;
+  const auto& nodes = dofs_->overlapNodes();
+  piece.points.reserve(3 * nodes.size());
+  FieldData disp{"displacement", 3, std::vector<double>(3 * nodes.size(), 0.0)};
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    for (int i = 0; i < 3; ++i)
+      piece.points.push_back(mesh.coords[3 * nodes[a] + i]);
+    for (int c = 0; c < dim; ++c)
+      disp.values[3 * a + c] = uo[a * dim + c];
+  }
+  piece.pointData.push_back(std::move(disp));
+  FieldData stress{"stress", 6, {}}, vm{"von_mises", 1, {}}, material{"material", 1, {}},
+      rank{"rank", 1, {}};
+  std::vector<double> plasticStrain(elements_.size(), 0.0), plastic(elements_.size(), 0.0);
+  piece.offsets.push_back(0);
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    piece.cellTypes.push_back(mesh.blocks[e.block].type);
+    piece.connectivity.insert(piece.connectivity.end(), e.nodes.begin(), e.nodes.end());
+    piece.offsets.push_back(static_cast<std::int64_t>(piece.connectivity.size()));
+    const auto s = elementStress(i, *uOverlap);
+    stress.values.insert(stress.values.end(), s.begin(), s.end());
+    const double j2 = 0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
+                             (s[2] - s[0]) * (s[2] - s[0])) +
+                      3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    vm.values.push_back(std::sqrt(j2));
+    material.values.push_back(e.block);
+    rank.values.push_back(comm_->getRank());
+    if (!e.stateOld.empty()) {
+      const Material& law = *blockMaterial_[e.block];
+      const int nq = static_cast<int>(e.stateOld.size()) / law.stateSize();
+      double sum = 0;
+      for (int q = 0; q < nq; ++q)
+        sum += law.equivalentPlasticStrain(&e.stateOld[q * law.stateSize()]);
+      plasticStrain[i] = sum / nq;
+      plastic[i] = e.plastic ? 1.0 : 0.0;
+    }
+  }
+  piece.cellData = {std::move(stress), std::move(vm), std::move(material), std::move(rank)};
+  // Every rank writes the same fields (a piece without plastic elements writes zeros).
+  if (model_.hasInternalVariables()) {
+    piece.cellData.push_back({"equivalent_plastic_strain", 1, std::move(plasticStrain)});
+    piece.cellData.push_back({"plastic", 1, std::move(plastic)});
+  }
+  return piece;
+}
+
+DisplacementErrors Problem::displacementErrors(
+    const Vector& u, const std::function<void(const double* x, double* u)>& exact,
+    const std::function<void(const double* x, double* grad)>& exactGradient) const {
+  const Mesh& mesh = *model_.mesh;
+  const int dim = this->dim();
+  auto uOverlap = overlapCopy(u);
+  auto uo = uOverlap->getData(0);
+  std::array<double, 4> local{}, global{};  // l2^2, energy^2, l2Exact^2, energyExact^2
+  std::vector<double> x, N, dN, dNdx;
+  for (const auto& e : elements_) {
+    const auto& block = mesh.blocks[e.block];
+    const auto& ref = ReferenceElement::get(block.type);
+    const auto& rule = quadratureRule(block.type, 2 * info(block.type).order + 2);
+    const int n = static_cast<int>(e.nodes.size());
+    gatherCoordinates(e.nodes, x);
+    N.resize(n);
+    dN.resize(n * dim);
+    dNdx.resize(n * dim);
+    for (int q = 0; q < rule.size(); ++q) {
+      const double* xi = &rule.points[q * rule.dim];
+      ref.shape(xi, N.data());
+      ref.shapeDerivatives(xi, dN.data());
+      const double w =
+          rule.weights[q] * physicalGradients(dim, n, x.data(), dN.data(), dNdx.data());
+      double point[3] = {0, 0, 0}, uh[3] = {0, 0, 0}, gh[9] = {0}, ue[3] = {0, 0, 0}, ge[9] = {0};
+      interpolatePosition(n, x.data(), N.data(), point);
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < dim; ++i) {
+          const double value = uo[e.rows[a * dim + i]];
+          uh[i] += N[a] * value;
+          for (int j = 0; j < dim; ++j)
+            gh[i * 3 + j] += dNdx[a * dim + j] * value;
+        }
+      exact(point, ue);
+      exactGradient(point, ge);
+      for (int i = 0; i < dim; ++i) {
+        local[0] += w * (uh[i] - ue[i]) * (uh[i] - ue[i]);
+        local[2] += w * ue[i] * ue[i];
+        for (int j = 0; j < dim; ++j) {
+          local[1] += w * (gh[i * 3 + j] - ge[i * 3 + j]) * (gh[i * 3 + j] - ge[i * 3 + j]);
+          local[3] += w * ge[i * 3 + j] * ge[i * 3 + j];
+        }
+      }
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 4, local.data(), global.data());
+  return {std::sqrt(global[0]), std::sqrt(global[1]), std::sqrt(global[2]), std::sqrt(global[3])};
+}
+
+std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t meshNode) const {
+  std::array<double, 3> local{}, global{};
+  if (dofs_->nodeOwner(meshNode) == comm_->getRank()) {
+    auto data = u.getData(0);
+    const int n = dofs_->overlapNodeIndex(meshNode);
+    for (int c = 0; c < dim(); ++c)
+      local[c] = data[n * dim() + c];
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 3, local.data(), global.data());
+  return global;
+}
+
+std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode) const {
+  // Average over the elements around the node, whichever rank assembles them.
+  auto uOverlap = overlapCopy(u);
+  std::array<double, 7> local{}, global{};
+  const int n = dofs_->overlapNodeIndex(meshNode);
+  if (n >= 0) {
+    for (std::size_t i = 0; i < elements_.size(); ++i) {
+      const auto& e = elements_[i];
+      if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
+      const auto s = elementStress(i, *uOverlap);
+      for (int k = 0; k < 6; ++k)
+        local[k] += s[k];
+      local[6] += 1.0;
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 7, local.data(), global.data());
+  std::array<double, 6> s{};
+  for (int k = 0; k < 6; ++k)
+    s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
+  return s;
+}
+
+}  // namespace contactlab
