@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -102,6 +103,16 @@ class ContactLaw {
   // the layout of the system's unknowns reserves: the multipliers (p, Lambda) the law evaluates,
   // then any of the formulation's own that the kernel handles (the normal field's n_s).
   virtual int pointUnknowns(int nt, int /*dim*/) const { return hasMultipliers() ? 1 + nt : 0; }
+  // Their names for the outputs (contact.csv's unknown_<name> columns, the VTK point fields),
+  // pointUnknowns(nt, dim) of them in layout order: "p", "lambda_1".. for the multipliers.
+  virtual std::vector<std::string> pointUnknownNames(int nt, int /*dim*/) const {
+    std::vector<std::string> names;
+    if (!hasMultipliers()) return names;
+    names.push_back("p");
+    for (int k = 1; k <= nt; ++k)
+      names.push_back("lambda_" + std::to_string(k));
+    return names;
+  }
   // Normal-field formulations: the point's last dim unknowns are a slave normal n_s, which the
   // gap is measured along, tied to the master normal n(u) by the equation
   // w kappa_n (n_s - n(u)) = 0 (ContactPointKernel). kappa_n for a point of the given size

@@ -57,6 +57,19 @@ void addContactPointData(const std::vector<std::int64_t>& nodes,
   }
   for (auto* f : {&pressure, &traction, &gap, &slip, &status, &cycling})
     piece.pointData.push_back(std::move(*f));
+  // The formulation's unknowns, one field each (0 where a node has none).
+  for (const std::string& name : unknownNames(points)) {
+    FieldData field{"unknown_" + name, 1, {}};
+    for (std::int64_t node : nodes) {
+      auto it = byNode.find(node);
+      double value = 0.0;
+      if (it != byNode.end())
+        for (const auto& [n, v] : it->second->unknowns)
+          if (n == name) value = v;
+      field.values.push_back(value);
+    }
+    piece.pointData.push_back(std::move(field));
+  }
 }
 
 }  // namespace contactlab

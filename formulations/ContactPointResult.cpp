@@ -4,6 +4,14 @@
 
 namespace contactlab {
 
+std::vector<std::string> unknownNames(const std::vector<ContactPointResult>& points) {
+  std::vector<std::string> names;
+  for (const ContactPointResult& p : points)
+    for (const auto& [name, value] : p.unknowns)
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
 ContactResultants contactResultants(const std::vector<ContactPointResult>& points,
                                     const std::vector<double>& outputPressure) {
   ContactResultants r;

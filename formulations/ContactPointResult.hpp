@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace contactlab {
@@ -27,7 +29,12 @@ struct ContactPointResult {
   // friction, not as stick or slip.
   bool frictional = false;
   int cycling = 0;  // cycling kind detected in the step (CyclingKind), 0 none
+  // The formulation's unknowns at the point, by name (ContactLaw::pointUnknownNames).
+  std::vector<std::pair<std::string, double>> unknowns;
 };
+
+// The unknowns' names over a set of points, each once, in the order they first appear.
+std::vector<std::string> unknownNames(const std::vector<ContactPointResult>& points);
 
 // contact_status as written to contact.csv and the VTK output, one meaning everywhere: 0 free,
 // 1 stick, 2 slip (frictional points), 3 closed without friction (no stick or slip to tell).

@@ -524,8 +524,15 @@ double ContactProblem::outputPressure(std::size_t i) const {
 
 std::vector<ContactPointResult> ContactProblem::results() const {
   std::vector<ContactPointResult> out = lawResults();
-  for (std::size_t i = 0; i < out.size(); ++i)
+  const auto values = state_->values();
+  for (std::size_t i = 0; i < out.size(); ++i) {
     out[i].pressure = outputPressure(i);
+    const ContactPoint& pt = points_[i];
+    if (pt.multiplier < 0) continue;
+    const auto names = zones_[pt.zone].law->pointUnknownNames(pt.nt, dim_);
+    for (int k = 0; k < pt.unknowns && k < static_cast<int>(names.size()); ++k)
+      out[i].unknowns.emplace_back(names[k], values[state_->multiplierPosition(pt.multiplier + k)]);
+  }
   return out;
 }
 

@@ -30,6 +30,13 @@ class NormalFieldAugmentedLagrangian : public AugmentedLagrangian {
   NormalFieldAugmentedLagrangian(double rn, double rt, double kappaN);
   std::string name() const override { return "normal-field-augmented-lagrangian"; }
   int pointUnknowns(int nt, int dim) const override { return 1 + nt + dim; }
+  // The multipliers', then the slave normal's components normal_x, normal_y(, normal_z).
+  std::vector<std::string> pointUnknownNames(int nt, int dim) const override {
+    auto names = AugmentedLagrangian::pointUnknownNames(nt, dim);
+    for (int c = 0; c < dim; ++c)
+      names.push_back(std::string("normal_") + "xyz"[c]);
+    return names;
+  }
   bool hasNormalField() const override { return true; }
   double normalFieldPenalty(double size) const override {
     return kappaN_ > 0 ? kappaN_ : normalCoefficient() * size;

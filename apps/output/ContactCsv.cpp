@@ -11,15 +11,44 @@ ContactCsv::ContactCsv(std::string path) : path_(std::move(path)) {}
 
 void ContactCsv::write(const ContactProblem& contact, const std::vector<ContactZone>& zones,
                        const Mesh& mesh) const {
-  CsvWriter table({"zone", "node", "x", "y", "z", "reference_x", "reference_y", "reference_z",
-                   "gap", "pressure", "traction_x", "traction_y", "traction_z", "slip_x", "slip_y",
-                   "slip_z", "status"});
-  for (const auto& p : contact.results())
-    table.addRow(
-        zones[p.zone].name, static_cast<long long>(mesh.nodeId(p.node)), p.x[0], p.x[1], p.x[2],
-        mesh.coords[3 * p.node], mesh.coords[3 * p.node + 1], mesh.coords[3 * p.node + 2],
-        p.paired ? p.gap : std::numeric_limits<double>::quiet_NaN(), p.pressure, p.traction[0],
-        p.traction[1], p.traction[2], p.slip[0], p.slip[1], p.slip[2], outputStatus(p));
+  const std::vector<ContactPointResult> points = contact.results();
+  std::vector<std::string> columns = {
+      "zone",        "node",        "x",      "y",        "z",          "reference_x",
+      "reference_y", "reference_z", "gap",    "pressure", "traction_x", "traction_y",
+      "traction_z",  "slip_x",      "slip_y", "slip_z",   "status"};
+  // Then the formulation's unknowns by name, empty where a point's formulation has no such one.
+  const std::vector<std::string> unknowns = unknownNames(points);
+  for (const std::string& name : unknowns)
+    columns.push_back("unknown_" + name);
+  CsvWriter table(columns);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& p : points) {
+    std::vector<std::string> cells = {
+        zones[p.zone].name,
+        CsvWriter::format(static_cast<long long>(mesh.nodeId(p.node))),
+        CsvWriter::format(p.x[0]),
+        CsvWriter::format(p.x[1]),
+        CsvWriter::format(p.x[2]),
+        CsvWriter::format(mesh.coords[3 * p.node]),
+        CsvWriter::format(mesh.coords[3 * p.node + 1]),
+        CsvWriter::format(mesh.coords[3 * p.node + 2]),
+        CsvWriter::format(p.paired ? p.gap : nan),
+        CsvWriter::format(p.pressure),
+        CsvWriter::format(p.traction[0]),
+        CsvWriter::format(p.traction[1]),
+        CsvWriter::format(p.traction[2]),
+        CsvWriter::format(p.slip[0]),
+        CsvWriter::format(p.slip[1]),
+        CsvWriter::format(p.slip[2]),
+        CsvWriter::format(outputStatus(p))};
+    for (const std::string& name : unknowns) {
+      double value = nan;
+      for (const auto& [n, v] : p.unknowns)
+        if (n == name) value = v;
+      cells.push_back(CsvWriter::format(value));
+    }
+    table.addFormattedRow(std::move(cells));
+  }
   table.write(path_);
 }
 

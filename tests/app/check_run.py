@@ -103,6 +103,15 @@ if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN
             assert all(abs(reference[k] - x[k]) <= 1e-12 * scale for k in range(3)), (p, x)
             assert all(abs(float(p[c]) - reference[k] - u[k]) <= 1e-9 * scale
                        for k, c in enumerate("xyz")), (p, u)
+    # The formulation's unknowns: each unknown_<name> column is the VTK point field of that
+    # name, point by point (0 in the field where the column is empty).
+    for column in [c for c in points[0] if c.startswith("unknown_")] if points else []:
+        field = grid.GetPointData().GetArray(column)
+        assert field is not None, f"contact.csv has {column}, the VTK output no such field"
+        at = {int(node_id.GetValue(i)): field.GetValue(i) for i in range(grid.GetNumberOfPoints())}
+        for p in points:
+            if int(p["node"]) in at and p[column] != "":
+                assert at[int(p["node"])] == float(p[column]), (column, p["node"])
 rank_array = grid.GetCellData().GetArray("rank")
 ranks_seen = {int(rank_array.GetValue(i)) for i in range(rank_array.GetNumberOfTuples())}
 assert ranks_seen == set(range(ranks)), ranks_seen

@@ -1,10 +1,12 @@
-// The normal-field augmented Lagrangian's law: its declared unknowns, its kappa_n (automatic:
+// The normal-field augmented Lagrangian's law: its declared unknowns (and every formulation's
+// names for its unknowns), its kappa_n (automatic:
 // r_n times the point's size), its refusals, and its pointwise law, which is the augmented
 // Lagrangian's (the normal field lives in the kernel: ContactProblemTest checks its tangent).
 #include "formulations/AugmentedLagrangian.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "formulations/NormalFieldAugmentedLagrangian.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <stdexcept>
 
@@ -22,6 +24,28 @@ TEST(NormalFieldLaw, DeclaresItsSlaveNormalBesideTheMultipliers) {
   const AugmentedLagrangian plain(100.0, 10.0);
   EXPECT_FALSE(plain.hasNormalField());
   EXPECT_EQ(plain.pointUnknowns(2, 3), 3);
+}
+
+// Every registered formulation names each unknown it declares, once, for the outputs.
+TEST(PointUnknowns, EveryFormulationNamesEachOfItsUnknowns) {
+  registerFormulations();
+  for (const std::string& type : formulationRegistry().names()) {
+    Teuchos::ParameterList p = *formulationRegistry().get(type).validParameters();
+    for (const char* required : {"Normal Augmentation", "Normal Penalty"})
+      if (p.isParameter(required)) p.set(required, 100.0);
+    const auto law = formulationRegistry().get(type).build(p);
+    for (int dim : {2, 3})
+      for (int nt = 0; nt < dim; ++nt) {
+        auto names = law->pointUnknownNames(nt, dim);
+        EXPECT_EQ(static_cast<int>(names.size()), law->pointUnknowns(nt, dim)) << type;
+        std::sort(names.begin(), names.end());
+        EXPECT_EQ(std::unique(names.begin(), names.end()), names.end()) << type;
+      }
+  }
+  const NormalFieldAugmentedLagrangian field(100.0, 10.0, 0.0);
+  EXPECT_EQ(
+      field.pointUnknownNames(2, 3),
+      (std::vector<std::string>{"p", "lambda_1", "lambda_2", "normal_x", "normal_y", "normal_z"}));
 }
 
 TEST(NormalFieldLaw, KappaIsGivenOrRnTimesThePointSize) {
