@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -63,6 +64,15 @@ class ContactDiscretization {
                                               const ContactSurfaceState& /*state*/,
                                               double /*t*/) const {
     return pt.normal;
+  }
+  // Its derivative in closed form, dn_i/dx_(b,j) at [i * 3 + j] for each node b it depends on
+  // (none: a constant normal). False when this discretization has none: the kernel then takes
+  // central differences of currentNormal.
+  virtual bool currentNormalDerivative(
+      const ContactPoint& /*pt*/, const ContactSurfaceState& /*state*/, double /*t*/,
+      std::map<std::int64_t, std::array<double, 9>>& blocks) const {
+    blocks.clear();
+    return true;
   }
 
   // The geometry in Newton. Whether this discretization's pairing has derivatives in the tangent

@@ -176,21 +176,34 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
     ke[static_cast<std::size_t>(nl + c) * nd + nl + c] = fieldStiffness;
 }
 
-void ContactPointKernel::differenceColumns(const ContactPoint& pt, int firstRow, double scale,
-                                           const std::function<void(std::vector<double>&)>& rowsAt,
-                                           std::vector<double>& ke) const {
+int ContactPointKernel::widenToGeometryColumns(const ContactPoint& pt,
+                                               std::vector<double>& ke) const {
   const int nd = static_cast<int>(pt.dofs.size()), ng = static_cast<int>(pt.geometryDofs.size());
-  const int nc = nd + ng, nu = pt.displacementDofs(dim_);
+  const int nc = nd + ng;
   std::vector<double> full(static_cast<std::size_t>(nd) * nc, 0.0);
   for (int i = 0; i < nd; ++i)
     for (int j = 0; j < nd; ++j)
       full[static_cast<std::size_t>(i) * nc + j] = ke[static_cast<std::size_t>(i) * nd + j];
+  ke.swap(full);
+  return nc;
+}
+
+int ContactPointKernel::columnPosition(const ContactPoint& pt, int column) const {
+  const int nd = static_cast<int>(pt.dofs.size());
+  return column < nd ? pt.surfacePos[column] : pt.geometrySurfacePos[column - nd];
+}
+
+void ContactPointKernel::differenceColumns(const ContactPoint& pt, int firstRow, double scale,
+                                           const std::function<void(std::vector<double>&)>& rowsAt,
+                                           std::vector<double>& ke) const {
+  const int nd = static_cast<int>(pt.dofs.size()), nu = pt.displacementDofs(dim_);
+  const int nc = widenToGeometryColumns(pt, ke);
   const double h = 1e-7 * pt.length(dim_);
   auto s = state_.mutableValues();
   std::vector<double> plus, minus;
   for (int j = 0; j < nc; ++j) {
     if (j >= nu && j < nd) continue;  // the point's unknowns: their columns stay exact
-    const int pos = j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd];
+    const int pos = columnPosition(pt, j);
     const double saved = s[pos];
     s[pos] = saved + h;
     rowsAt(plus);
@@ -198,18 +211,48 @@ void ContactPointKernel::differenceColumns(const ContactPoint& pt, int firstRow,
     rowsAt(minus);
     s[pos] = saved;
     for (std::size_t i = 0; i < plus.size(); ++i)
-      full[static_cast<std::size_t>(firstRow + static_cast<int>(i)) * nc + j] =
+      ke[static_cast<std::size_t>(firstRow + static_cast<int>(i)) * nc + j] =
           scale * (plus[i] - minus[i]) / (2 * h);
   }
-  ke.swap(full);
+}
+
+bool ContactPointKernel::closedFormNormalColumns(
+    const ContactPoint& pt, int firstRow, double scale,
+    const std::map<std::int64_t, std::array<double, 9>>& blocks, std::vector<double>& ke) const {
+  const int nd = static_cast<int>(pt.dofs.size()), nu = pt.displacementDofs(dim_);
+  const int nc = nd + static_cast<int>(pt.geometryDofs.size());
+  // Every (node, component) the normal depends on must be a column of the point.
+  std::vector<std::pair<int, double>> entries;  // (row i * nc + column, value)
+  for (const auto& [node, block] : blocks)
+    for (int c = 0; c < dim_; ++c) {
+      const int pos = state_.dofPosition(node, c);
+      int column = -1;
+      for (int j = 0; j < nc && column < 0; ++j)
+        if ((j < nu || j >= nd) && columnPosition(pt, j) == pos) column = j;
+      if (column < 0) return false;
+      for (int i = 0; i < dim_; ++i)
+        entries.emplace_back((firstRow + i) * nc + column, scale * block[i * 3 + c]);
+    }
+  widenToGeometryColumns(pt, ke);
+  for (int i = 0; i < dim_; ++i)
+    for (int j = 0; j < nc; ++j)
+      if (j < nu || j >= nd) ke[static_cast<std::size_t>(firstRow + i) * nc + j] = 0.0;
+  for (const auto& [at, value] : entries)
+    ke[static_cast<std::size_t>(at)] += value;
+  return true;
 }
 
 void ContactPointKernel::normalFieldColumns(const ContactPoint& pt, double t,
                                             std::vector<double>& ke) const {
   const ContactDiscretization& discretization = *discretizations_[pt.zone];
   const double stiffness = pt.weight * zones_[pt.zone].law->normalFieldPenalty(pt.length(dim_));
+  const int firstRow = static_cast<int>(pt.dofs.size()) - dim_;
+  std::map<std::int64_t, std::array<double, 9>> blocks;
+  if (discretization.currentNormalDerivative(pt, state_, t, blocks) &&
+      closedFormNormalColumns(pt, firstRow, -stiffness, blocks, ke))
+    return;
   differenceColumns(
-      pt, static_cast<int>(pt.dofs.size()) - dim_, -stiffness,
+      pt, firstRow, -stiffness,
       [&](std::vector<double>& rows) {
         const auto n = discretization.currentNormal(pt, state_, t);
         rows.assign(n.begin(), n.begin() + dim_);

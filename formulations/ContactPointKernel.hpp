@@ -13,6 +13,7 @@
 #include "formulations/ContactZone.hpp"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -44,8 +45,9 @@ class ContactPointKernel {
   void geometricColumns(const ContactPoint& pt, double t, GeometricTerms terms,
                         std::vector<double>& ke) const;
   // Normal-field formulations, with the geometry frozen: appends the geometryDofs' columns to
-  // `ke` and fills the kinematic rows' displacement columns, -w kappa_n dn(u)/du, by central
-  // differences of ContactDiscretization::currentNormal.
+  // `ke` and fills the kinematic rows' displacement columns, -w kappa_n dn(u)/du: in closed form
+  // where the discretization has it (ContactDiscretization::currentNormalDerivative), else by
+  // central differences of ContactDiscretization::currentNormal.
   void normalFieldColumns(const ContactPoint& pt, double t, std::vector<double>& ke) const;
 
  private:
@@ -55,6 +57,16 @@ class ContactPointKernel {
   void differenceColumns(const ContactPoint& pt, int firstRow, double scale,
                          const std::function<void(std::vector<double>&)>& rowsAt,
                          std::vector<double>& ke) const;
+  // Widens ke and sets rows firstRow..firstRow + dim of every displacement column to scale
+  // times the blocks (dn_i/dx_(node, j)). False, ke untouched, when a block's node is not one of
+  // the point's columns.
+  bool closedFormNormalColumns(const ContactPoint& pt, int firstRow, double scale,
+                               const std::map<std::int64_t, std::array<double, 9>>& blocks,
+                               std::vector<double>& ke) const;
+  // ke (dofs x dofs) widened to dofs x (dofs + geometryDofs), the new columns zero; their count.
+  int widenToGeometryColumns(const ContactPoint& pt, std::vector<double>& ke) const;
+  // The surface-state position of column j (the point's dofs, then its geometryDofs).
+  int columnPosition(const ContactPoint& pt, int column) const;
 
   int dim_;
   const std::vector<ContactZone>& zones_;

@@ -1,6 +1,7 @@
 #include "formulations/NodeToSegmentDiscretization.hpp"
 
 #include "core/contact/ClosestPointProjection.hpp"
+#include "core/contact/SmoothedNormalDerivative.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/fem/ReferenceElement.hpp"
 
@@ -88,15 +89,24 @@ std::vector<std::int64_t> NodeToSegmentDiscretization::normalNodes(const Contact
   return around;
 }
 
+void NodeToSegmentDiscretization::facetsAround(const ContactPoint& pt,
+                                               const ContactSurfaceState& state,
+                                               std::vector<Facet>& facets,
+                                               std::vector<std::int64_t>& facetNodes) const {
+  facets.clear();
+  facetNodes.clear();
+  for (int f : master_.facetsAround(pt.master)) {
+    facets.push_back(master_.currentFacet(state, f));
+    for (int a = 0; a < master_.nodesPerFacet(); ++a)
+      facetNodes.push_back(master_.node(static_cast<std::size_t>(f), a));
+  }
+}
+
 std::map<std::int64_t, std::array<double, 3>> NodeToSegmentDiscretization::nodalNormalsAround(
     const ContactPoint& pt, const ContactSurfaceState& state) const {
   std::vector<Facet> around;
   std::vector<std::int64_t> aroundNodes;
-  for (int f : master_.facetsAround(pt.master)) {
-    around.push_back(master_.currentFacet(state, f));
-    for (int a = 0; a < master_.nodesPerFacet(); ++a)
-      aroundNodes.push_back(master_.node(static_cast<std::size_t>(f), a));
-  }
+  facetsAround(pt, state, around, aroundNodes);
   return nodalNormals(around, aroundNodes);
 }
 
@@ -105,6 +115,19 @@ std::array<double, 3> NodeToSegmentDiscretization::currentNormal(const ContactPo
                                                                  double /*t*/) const {
   if (!pt.paired) return pt.normal;
   return smoothedNormal(pt, nodalNormalsAround(pt, state), pt.normal.data());
+}
+
+bool NodeToSegmentDiscretization::currentNormalDerivative(
+    const ContactPoint& pt, const ContactSurfaceState& state, double /*t*/,
+    std::map<std::int64_t, std::array<double, 9>>& blocks) const {
+  blocks.clear();
+  if (!pt.paired) return true;  // currentNormal is the frozen pt.normal
+  std::vector<Facet> around;
+  std::vector<std::int64_t> aroundNodes;
+  facetsAround(pt, state, around, aroundNodes);
+  const std::vector<double> N(pt.N.begin(), pt.N.begin() + pt.master.size());
+  blocks = smoothedNormalDerivative(around, aroundNodes, pt.master, N);
+  return !blocks.empty();  // a vanishing interpolated normal falls back to differences
 }
 
 void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,

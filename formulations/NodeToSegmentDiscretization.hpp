@@ -25,6 +25,10 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
   // the facets around its master nodes at the current positions.
   std::array<double, 3> currentNormal(const ContactPoint& pt, const ContactSurfaceState& state,
                                       double t) const override;
+  // In closed form (SmoothedNormalDerivative.hpp).
+  bool currentNormalDerivative(
+      const ContactPoint& pt, const ContactSurfaceState& state, double t,
+      std::map<std::int64_t, std::array<double, 9>>& blocks) const override;
   bool linearizesGeometry() const override { return true; }
   std::vector<std::int64_t> normalNodes(const ContactPoint& pt) const override;
   void refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state, double t,
@@ -32,6 +36,9 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
 
  private:
   // The nodal normals of the facets around the point's master nodes, at the state's positions.
+  // The current facets around the point's master nodes, and their nodes.
+  void facetsAround(const ContactPoint& pt, const ContactSurfaceState& state,
+                    std::vector<Facet>& facets, std::vector<std::int64_t>& facetNodes) const;
   std::map<std::int64_t, std::array<double, 3>> nodalNormalsAround(
       const ContactPoint& pt, const ContactSurfaceState& state) const;
   // The smoothed normal at the point's master point, from its master nodes' normals and shape

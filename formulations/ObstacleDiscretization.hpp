@@ -22,6 +22,11 @@ class ObstacleDiscretization : public ContactDiscretization {
   // The obstacle's normal at the projection of the slave's current position.
   std::array<double, 3> currentNormal(const ContactPoint& pt, const ContactSurfaceState& state,
                                       double t) const override;
+  // Taken by differences: the obstacle's normal at the slave's projection (cheap, slave dofs only).
+  bool currentNormalDerivative(const ContactPoint&, const ContactSurfaceState&, double,
+                               std::map<std::int64_t, std::array<double, 9>>&) const override {
+    return false;
+  }
   bool linearizesGeometry() const override { return true; }
   void refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state, double t,
                        GeometricTerms terms) const override;
