@@ -5,17 +5,17 @@
 
 A block is the text between `<!-- generated:NAME:start -->` and `<!-- generated:NAME:end -->`;
 BLOCKS below says which function writes each. The cases are the cheap ones (seconds each, about
-two minutes in all on 2 cores). The expensive blocks (`<!-- bench:NAME:... -->`) are written
+three minutes in all on 2 shared cores, two cases at a time). The expensive blocks (`<!-- bench:NAME:... -->`) are written
 by bench/run.sh and left alone; the `sources` block lists every block and what writes it.
 
---check writes the blocks and figures into a temporary copy of the pages and compares them with
-the committed ones, line by line, naming the block and the line of the first difference:
+--check writes the blocks into a copy of the pages (in memory) and the figures into the work
+folder, and compares the blocks with the committed ones, line by line, naming the block and the line of the first difference:
 text and integers (iteration counts, point counts) exactly, other numbers within NUMBER_RTOL or
 one unit of their last printed digit (see numbers_agree). Figures are not compared (matplotlib's
 output varies between versions); the check requires each PNG a page links to to exist and be
 non-empty.
 
-usage: doc/generate.py CONTACTLAB [--check] [--jobs N] [--work DIR] [--only NAME ...]"""
+usage: doc/generate.py CONTACTLAB [--check] [--jobs N] [--ranks N] [--work DIR] [--only NAME ...]"""
 import argparse
 import csv
 import json
@@ -82,11 +82,14 @@ class Runs:
     """`contactlab run`s into WORK, each once: the same scene and settings give the same run
     (blocks share them)."""
 
-    def __init__(self, exe, work):
-        self.exe, self.work, self.done, self.lock = exe, work, {}, threading.Lock()
+    def __init__(self, exe, work, ranks=1):
+        self.exe, self.work, self.ranks = exe, work, ranks
+        self.done, self.lock = {}, threading.Lock()
 
-    def __call__(self, scene, sets=(), ranks=1):
-        """(summary, contact.csv rows, return code) of SCENE (a name in scenes/) with SETS."""
+    def __call__(self, scene, sets=(), ranks=None):
+        """(summary, contact.csv rows, return code) of SCENE (a name in scenes/) with SETS, on
+        RANKS ranks (default the --ranks given)."""
+        ranks = ranks or self.ranks
         key = (scene, tuple(sets), ranks)
         with self.lock:
             entry = self.done.setdefault(key, {"lock": threading.Lock(), "n": len(self.done)})
@@ -349,7 +352,7 @@ def block_ranks_agree(runs, figures):
     """The same scene on 1 and 2 ranks: contact results point by point, iteration counts."""
     out = []
     for scene in ("hertz-2d-two-body", "sliding-block-2d", "hertz-3d"):
-        (s1, one, _), (s2, two, _) = runs(scene), runs(scene, ranks=2)
+        (s1, one, _), (s2, two, _) = runs(scene, ranks=1), runs(scene, ranks=2)
         two = {(r["zone"], r["node"]): r for r in two}
         scale = max(abs(float(r["pressure"])) for r in one)
         worst = max(abs(float(r[f]) - float(two[(r["zone"], r["node"])][f]))
@@ -537,13 +540,29 @@ def missing_figures(texts):
 
 # ---------------------------------------------------------------- main
 
-def generate(exe, work, names, jobs, figures):
+def generate(exe, work, names, jobs, figures, ranks=1):
     """The bodies of the blocks NAMES, run JOBS at a time."""
-    runs = Runs(exe, work)
+    runs = Runs(exe, work, ranks)
     order = sorted(names, key=lambda n: n not in STUDIES_FIRST)
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = {n: pool.submit(BLOCKS[n][1], runs, figures) for n in order}
         return {n: f.result() for n, f in futures.items()}
+
+
+def check(committed, generated, names):
+    """Exits with 1, saying where, when a block NAMES (or `sources`) of the committed pages
+    differs from the generated one or a linked figure is missing."""
+    problems = []
+    for name in names + ["sources"]:
+        page = BLOCKS[name][0] if name in BLOCKS else "verification.md"
+        problems.append(compare_block(page, name, committed[page], generated[page]))
+    problems = [p for p in problems if p] + missing_figures(committed)
+    for p in problems:
+        print(p)
+    if problems:
+        print("run `make docs` and commit the pages (or explain why the numbers moved)")
+        sys.exit(1)
+    print(f"{len(names) + 1} generated blocks of doc/{' and doc/'.join(PAGES)} current")
 
 
 def main():
@@ -553,15 +572,19 @@ def main():
                     help="compare with the committed pages instead of rewriting them")
     ap.add_argument("--jobs", type=int, default=2, help="cases run at a time (default 2)")
     ap.add_argument("--work", help="folder for the runs (default: a temporary one, removed)")
+    ap.add_argument("--ranks", type=int, default=1,
+                    help="ranks of each single run (not the studies'): the blocks must not "
+                         "depend on it")
     ap.add_argument("--only", nargs="+", choices=sorted(BLOCKS), help="only these blocks")
-    ap.add_argument("--doc-dir", default=HERE, help=argparse.SUPPRESS)
+    ap.add_argument("--doc-dir", default=HERE,
+                    help="the folder of the pages read (and rewritten); default doc/")
     args = ap.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="contactlab-docs-")
     figures = os.path.join(work, "figures") if args.check else os.path.join(HERE, "figures")
     os.makedirs(figures, exist_ok=True)
     texts = {p: open(os.path.join(args.doc_dir, p)).read() for p in PAGES}
     bodies = generate(os.path.abspath(args.exe), work, args.only or list(BLOCKS), args.jobs,
-                      figures)
+                      figures, args.ranks)
     new = dict(texts)
     for name, body in bodies.items():
         page = BLOCKS[name][0]
@@ -571,16 +594,7 @@ def main():
     if not args.work:
         shutil.rmtree(work, ignore_errors=True)
     if args.check:
-        problems = [d for name in list(bodies) + ["sources"]
-                    for page in [BLOCKS[name][0] if name in BLOCKS else "verification.md"]
-                    for d in [compare_block(page, name, texts[page], new[page])] if d]
-        problems += missing_figures(texts)
-        for p in problems:
-            print(p)
-        if problems:
-            print("run `make docs` and commit the pages (or explain why the numbers moved)")
-            sys.exit(1)
-        print(f"{len(bodies) + 1} generated blocks of doc/{' and doc/'.join(PAGES)} current")
+        check(texts, new, list(bodies))
         return
     for page in PAGES:
         open(os.path.join(args.doc_dir, page), "w").write(new[page])
