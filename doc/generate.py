@@ -44,6 +44,22 @@ NUMBER_RTOL = 1e-3
 # Below this a quantity is round-off (a gap closed exactly, 1 rank against 2) and is written as
 # a bound, not a value: its digits change with the BLAS kernels.
 ROUNDOFF = 1e-10
+# Iteration counts that round-off moves, by block and column: a run whose path crosses a status
+# switch within round-off (doc/algorithms.md, "Round-off"). Measured: under Prescott's kernels
+# 2 of the 96 counts of these studies move by one iteration (quick comparison: penalty, partial
+# Newton, node-to-segment 22 -> 23; extremes: nu = 0.499, generalized Newton 41 -> 40); the
+# verification blocks' counts and the Hertz study's do not move (Haswell, Prescott, 2 ranks).
+# These columns agree within ITERATION_BAND; every other integer is compared exactly.
+BANDED_COLUMNS = {"quick-comparison": ("Newton its",),
+                  "extremes": ("generalized Newton", "partial Newton", "fixed point")}
+
+
+def iterations_agree(a, b):
+    """Two round-off-moved iteration counts agree: within 2, or 10 % of the larger for the long
+    runs (kernel sets not measured here may move more than one)."""
+    return abs(a - b) <= max(2, 0.1 * max(a, b))
+
+
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
@@ -497,12 +513,33 @@ def numbers_agree(a, b):
     return abs(x - y) <= max(NUMBER_RTOL * max(abs(x), abs(y)), last_digit(a), last_digit(b))
 
 
-def lines_agree(committed, generated):
-    """The same text between the numbers, and the numbers agreeing."""
+def lines_agree(committed, generated, banded=()):
+    """The same text between the numbers, and the numbers agreeing; in a table row, the cells
+    of the columns BANDED (indices) hold iteration counts compared by iterations_agree."""
+    if banded and committed.startswith("|") and generated.startswith("|"):
+        old, new = committed.split("|"), generated.split("|")
+        return len(old) == len(new) and all(
+            cells_agree(a, b) if i in banded else lines_agree(a, b)
+            for i, (a, b) in enumerate(zip(old, new)))
     if NUMBER.split(committed) != NUMBER.split(generated):
         return False
     pairs = zip(NUMBER.findall(committed), NUMBER.findall(generated))
     return all(numbers_agree(a, b) for a, b in pairs)
+
+
+def cells_agree(committed, generated):
+    """Table cells of iteration counts: the same text, the integers by iterations_agree."""
+    a, b = NUMBER.findall(committed), NUMBER.findall(generated)
+    return (NUMBER.split(committed) == NUMBER.split(generated)
+            and all(iterations_agree(int(x), int(y)) if re.fullmatch(r"\d+", x + y)
+                    else numbers_agree(x, y) for x, y in zip(a, b)))
+
+
+def banded_cells(name, header):
+    """The indices, in a row split at "|", of the block's iteration columns that round-off
+    moves."""
+    cells = [c.strip() for c in header.split("|")]
+    return {i for i, c in enumerate(cells) if c in BANDED_COLUMNS.get(name, ())}
 
 
 def block_lines(text, name):
@@ -518,10 +555,11 @@ def compare_block(page, name, committed, generated):
         return f"doc/{page}: block {name} is missing (its markers were removed)"
     old, first = block_lines(committed, name)
     new, _ = block_lines(generated, name)
+    banded = banded_cells(name, old[0]) if old else set()
     for i in range(max(len(old), len(new))):
         a = old[i] if i < len(old) else "(nothing)"
         b = new[i] if i < len(new) else "(nothing)"
-        if not lines_agree(a, b):
+        if not lines_agree(a, b, banded):
             return (f"doc/{page}:{first + i}: block {name} differs from what doc/generate.py "
                     f"writes:\n  committed: {a}\n  generated: {b}")
     return None
