@@ -38,8 +38,11 @@ test: build
 bench: build
 	./bench/run.sh
 
+# Rewrites doc/scenes.md (`contactlab list`) and the generated blocks and figures of
+# doc/verification.md and doc/studies.md (doc/generate.py runs the cheap cases, ~3 minutes).
 docs: build
 	/usr/bin/python3 tests/app/check_scenes_doc.py $(BUILD_DIR)/apps/contactlab doc/scenes.md --update
+	/usr/bin/python3 doc/generate.py $(BUILD_DIR)/apps/contactlab
 
 format:
 	find core formulations linear algorithms apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
