@@ -1,7 +1,7 @@
 #pragma once
 // Helpers shared by the constitutive-law tests: a finite-strain evaluation and its tangent
 // against central differences, random deformation gradients, rotations, diagonal stretches,
-// the Cauchy stress of P.
+// the Cauchy stress of P, the largest entrywise difference of two tensors.
 #include "core/materials/Material.hpp"
 #include "core/materials/Tensor3.hpp"
 
@@ -85,6 +85,14 @@ inline Mat3 rotation(std::array<double, 3> axis, double angle) {
 
 inline Mat3 diagonal(double a, double b, double c) {
   return {a, 0, 0, 0, b, 0, 0, 0, c};
+}
+
+// max_ij |a_ij - b_ij|.
+inline double maxDifference(const Mat3& a, const Mat3& b) {
+  double m = 0.0;
+  for (int i = 0; i < 9; ++i)
+    m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
 }
 
 // Cauchy stress P F^T / J.
