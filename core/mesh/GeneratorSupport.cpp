@@ -44,6 +44,19 @@ void requirePositive(const std::string& generator, const std::string& param, dou
                                 " must be a positive number");
 }
 
+bool requireBase(const std::string& generator, const std::string& base,
+                 const std::array<const char*, 2>& choices, double width, double height) {
+  if (base != choices[0] && base != choices[1])
+    throw std::invalid_argument(generator + ": base must be '" + choices[0] + "' or '" +
+                                choices[1] + "' (got '" + base + "')");
+  const bool block = base == "block";
+  if (block) {
+    requirePositive(generator, "base width", width);
+    requirePositive(generator, "base height", height);
+  }
+  return block;
+}
+
 void requireDivisions(const std::string& generator, const std::string& param, int value) {
   if (value < 1)
     throw std::invalid_argument(generator + " generator: " + param + " = " + std::to_string(value) +

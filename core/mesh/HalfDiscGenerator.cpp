@@ -5,8 +5,6 @@
 
 #include <gmsh.h>
 
-#include <stdexcept>
-
 namespace contactlab {
 Mesh generateHalfDisc(const HalfDiscParams& p) {
   using ET = ElementType;
@@ -55,14 +53,8 @@ Mesh generateRollerOnBase(const RollerOnBaseParams& p) {
                                 {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
   requirePositive("roller-on-base", "Radius", p.radius);
   requireGrading("roller-on-base", p.grading);
-  const bool disc = p.base == "disc";
-  if (!disc && p.base != "block")
-    throw std::invalid_argument("roller-on-base: base must be 'block' or 'disc' (got '" + p.base +
-                                "')");
-  if (!disc) {
-    requirePositive("roller-on-base", "base width", p.baseWidth);
-    requirePositive("roller-on-base", "base height", p.baseHeight);
-  }
+  const bool disc =
+      !requireBase("roller-on-base", p.base, {"block", "disc"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated roller on a " + p.base + " (" + p.elementType +
                              ", R = " + formatNumber(p.radius) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {

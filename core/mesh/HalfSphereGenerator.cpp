@@ -6,7 +6,6 @@
 #include <gmsh.h>
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace contactlab {
@@ -17,14 +16,8 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
                                 {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
   requirePositive("half-sphere", "Radius", p.radius);
   requireGrading("half-sphere", p.grading);
-  const bool block = p.base == "block";
-  if (!block && p.base != "none")
-    throw std::invalid_argument("half-sphere: base must be 'none' or 'block' (got '" + p.base +
-                                "')");
-  if (block) {
-    requirePositive("half-sphere", "base width", p.baseWidth);
-    requirePositive("half-sphere", "base height", p.baseHeight);
-  }
+  const bool block =
+      requireBase("half-sphere", p.base, {"none", "block"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated half-sphere" + std::string(block ? " on a block" : "") +
                              " (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
                              formatNumber(p.grading.sizeContact) + " to " +
