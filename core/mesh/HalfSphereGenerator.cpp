@@ -12,10 +12,9 @@ namespace contactlab {
 
 Mesh generateHalfSphere(const HalfSphereParams& p) {
   using ET = ElementType;
-  const auto spec = elementSpec("half-sphere", p.elementType,
-                                {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
-  requirePositive("half-sphere", "Radius", p.radius);
-  requireGrading("half-sphere", p.grading);
+  const auto spec =
+      roundBodySpec("half-sphere", p.elementType,
+                    {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27}, p.radius, p.grading);
   const bool block =
       requireBase("half-sphere", p.base, {"none", "block"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated half-sphere" + std::string(block ? " on a block" : "") +
