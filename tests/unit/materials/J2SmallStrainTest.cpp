@@ -63,18 +63,9 @@ J2State zeroState(const J2SmallStrain& m) {
 // max |tangent - central differences of the stress| / max |tangent|, from the same stateOld.
 double tangentError(const J2SmallStrain& m, const Voigt& strain, const J2State& stateOld) {
   const J2Result r = evaluateJ2(m, strain, stateOld);
-  const double h = 1e-8;
-  double err = 0.0;
-  for (int b = 0; b < 6; ++b) {
-    Voigt plus = strain, minus = strain;
-    plus[b] += h;
-    minus[b] -= h;
-    const Voigt sp = evaluateJ2(m, plus, stateOld).stress,
-                sm = evaluateJ2(m, minus, stateOld).stress;
-    for (int a = 0; a < 6; ++a)
-      err = std::max(err, std::abs(r.tangent[a * 6 + b] - (sp[a] - sm[a]) / (2 * h)));
-  }
-  return err / maxAbs(r.tangent.data(), 36);
+  return centralDifferenceError<6, 6>(
+      [&](const Voigt& e) { return evaluateJ2(m, e, stateOld).stress; }, strain, r.tangent.data(),
+      1e-8);
 }
 
 // Von Mises relative stress sqrt(3/2) |dev(sigma) - alpha| and the current yield stress.
