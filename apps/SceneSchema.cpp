@@ -70,6 +70,16 @@ ParameterList namedSection(
   return section;
 }
 
+// The time function of a prescribed value (Dirichlet, load, obstacle): Function, documented by
+// `functionDoc`, then Start Time and Stop Time of its ramp.
+void setTimeFunction(ParameterList& p, const std::string& functionDoc) {
+  p.set("Function", "ramp", functionDoc, choices({"ramp", "constant"}));
+  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
+  p.set("Stop Time", 0.0,
+        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
+        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
+}
+
 ParameterList dirichletItem() {
   ParameterList p;
   p.set("Group", "", "Boundary physical group whose nodes are constrained");
@@ -78,14 +88,10 @@ ParameterList dirichletItem() {
         "y in 2D, where z alone is refused)",
         choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
   p.set("Value", 0.0, "Prescribed displacement at the end of the load");
-  p.set("Function", "ramp",
-        "Time scaling: 'ramp' = Value * (t - Start Time) / (Stop Time - Start Time) between "
-        "Start Time and Stop Time (0 before, Value after), 'constant' = Value at every step",
-        choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
-  p.set("Stop Time", 0.0,
-        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
-        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
+  setTimeFunction(p,
+                  "Time scaling: 'ramp' = Value * (t - Start Time) / (Stop Time - Start Time) "
+                  "between Start Time and Stop Time (0 before, Value after), 'constant' = Value "
+                  "at every step");
   return p;
 }
 
@@ -156,12 +162,7 @@ ParameterList loadItem() {
         "point-load: 'total' (Vector is the group's total force, shared equally by its nodes) "
         "or 'per-node' (every node gets Vector)",
         choices({"total", "per-node"}));
-  p.set("Function", "ramp", "Time scaling: 'ramp' or 'constant' (see Dirichlet)",
-        choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
-  p.set("Stop Time", 0.0,
-        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
-        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
+  setTimeFunction(p, "Time scaling: 'ramp' or 'constant' (see Dirichlet)");
   return p;
 }
 
@@ -191,12 +192,7 @@ ParameterList obstacleItem() {
         choices({"outside", "inside"}));
   p.set("Displacement", Teuchos::Array<double>(3, 0.0),
         "Rigid translation of the obstacle at the end of the load");
-  p.set("Function", "ramp", "Time scaling of Displacement: 'ramp' or 'constant'",
-        choices({"ramp", "constant"}));
-  p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
-  p.set("Stop Time", 0.0,
-        "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
-        "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
+  setTimeFunction(p, "Time scaling of Displacement: 'ramp' or 'constant'");
   return p;
 }
 

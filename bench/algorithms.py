@@ -7,7 +7,10 @@ with --doc, into doc/performance.md between the bench:algorithms markers.
 
 usage: algorithms.py CONTACTLAB SCENES_DIR WORKDIR [--doc doc/performance.md] [--quick]
 --quick: the pad at mu = 0.45 only, plain driver and NOX Backtrack (a smoke run)."""
-import datetime, json, os, re, shutil, subprocess, sys, time
+import datetime, os, re, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import runs
 
 exe, scenes, work = sys.argv[1:4]
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
@@ -35,22 +38,12 @@ for label, scene, sets, what in cases:
             for treatment in treatments:
                 name = f"{label}-{what}-{method}-{driver}-{search}-{treatment}"
                 out = os.path.join(work, re.sub(r"[^A-Za-z0-9.-]+", "_", name))
-                shutil.rmtree(out, ignore_errors=True)
-                cmd = [exe, "run", os.path.join(scenes, scene + ".yaml"), "--out", out,
-                       "--set", "Output/VTK=false", "--set", f"Algorithm/Method={method}",
-                       "--set", f"Algorithm/Cycling Treatment={treatment}",
-                       "--set", f"Newton/Driver={driver}"]
+                options = [f"Algorithm/Method={method}",
+                           f"Algorithm/Cycling Treatment={treatment}", f"Newton/Driver={driver}"]
                 if search:
-                    cmd += ["--set", f"Newton/Line Search={search}"]
-                for s in sets:
-                    cmd += ["--set", s]
-                start = time.time()
-                subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
-                wall = time.time() - start
-                try:
-                    s = json.load(open(os.path.join(out, "summary.json")))
-                except (OSError, ValueError):
-                    s = None
+                    options.append(f"Newton/Line Search={search}")
+                s, wall, _ = runs.run(exe, "run", os.path.join(scenes, scene + ".yaml"), out,
+                                      options + sets, timeout=1800)
                 if s is None:
                     result, counts = "no summary", ["-"] * 6
                 else:

@@ -7,7 +7,10 @@ with --doc, into doc/performance.md between the bench:critical-mu markers.
 
 usage: critical_mu.py CONTACTLAB SCENES_DIR WORKDIR [--doc doc/performance.md] [--quick]
 --quick: the coarsest mesh only (a smoke run)."""
-import datetime, json, os, re, shutil, subprocess, sys
+import datetime, os, re, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import runs
 
 exe, scenes, work = sys.argv[1:4]
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
@@ -26,14 +29,11 @@ print(header)
 print("|" + "---|" * 14)
 for size in sizes:
     out = os.path.join(work, f"hertz-3d-friction-{size}")
-    shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "critical-mu", os.path.join(scenes, "hertz-3d-friction.yaml"), "--out", out,
-           "--set", "Output/VTK=false", "--set", f"Mesh/half-sphere/Size Contact={size}"]
-    done = subprocess.run(cmd, capture_output=True, text=True, timeout=3600)
+    scene = os.path.join(scenes, "hertz-3d-friction.yaml")
+    s, _, done = runs.run(exe, "critical-mu", scene, out, [f"Mesh/half-sphere/Size Contact={size}"])
     try:
-        s = json.load(open(os.path.join(out, "summary.json")))
         c = s["critical_mu"]
-    except (OSError, ValueError, KeyError):
+    except (TypeError, KeyError):
         print(f"| {size} | failed: {done.stderr.strip()[-200:]} |" + " |" * 12)
         continue
     unknowns = sum(s["unknowns"].values())

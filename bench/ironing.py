@@ -6,10 +6,10 @@ the table goes to stdout and, with --doc, into doc/performance.md between the be
 markers.
 
 usage: ironing.py CONTACTLAB SCENES_DIR WORKDIR [--doc doc/performance.md]"""
-import csv, json, os, shutil, subprocess, sys, time
+import csv, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import docblock
+import docblock, runs
 
 exe, scenes, work = sys.argv[1:4]
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
@@ -29,16 +29,11 @@ def per_step(rows):
 
 for method in ["fixed-point", "partial-newton", "generalized-newton"]:
     out = os.path.join(work, method)
-    shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "run", os.path.join(scenes, "ironing-2d.yaml"), "--out", out, "--quiet",
-           "--set", "Output/VTK=false", "--set", f"Algorithm/Method={method}"]
-    start = time.time()
-    subprocess.run(cmd, capture_output=True, text=True, timeout=3600)
-    wall = time.time() - start
+    s, wall, _ = runs.run(exe, "run", os.path.join(scenes, "ironing-2d.yaml"), out,
+                          [f"Algorithm/Method={method}"], quiet=True)
     try:
-        s = json.load(open(os.path.join(out, "summary.json")))
-        steps = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
-    except (OSError, ValueError):
+        steps = list(csv.DictReader(open(os.path.join(out, "steps.csv")))) if s else []
+    except OSError:
         s, steps = None, []
     if s is None:
         line = f"| `{method}` | no summary |" + " – |" * 6 + f" {wall:.1f} |"

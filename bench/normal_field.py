@@ -8,10 +8,10 @@ block, normals turning under it) to kappa_n. Tables to stdout and, with --doc, i
 doc/verification.md between the bench:normal-field markers.
 
 usage: normal_field.py CONTACTLAB SCENES_DIR WORKDIR [--doc doc/verification.md]"""
-import csv, json, os, shutil, subprocess, sys, time
+import csv, json, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import docblock
+import docblock, runs
 
 exe, scenes, work = sys.argv[1:4]
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
@@ -35,17 +35,9 @@ CASES = [
 
 
 def run(scene, sets, out):
-    shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "run", os.path.join(scenes, scene + ".yaml"), "--out", out, "--quiet",
-           "--set", "Output/VTK=false"]
-    for s in sets:
-        cmd += ["--set", s]
-    start = time.time()
-    subprocess.run(cmd, capture_output=True, text=True, timeout=3600)
-    wall = time.time() - start
-    try:
-        summary = json.load(open(os.path.join(out, "summary.json")))
-    except (OSError, ValueError):
+    summary, wall, _ = runs.run(exe, "run", os.path.join(scenes, scene + ".yaml"), out, sets,
+                                quiet=True)
+    if summary is None:
         return None, [], wall
     try:  # a run that failed before its first step has no contact.csv
         points = list(csv.DictReader(open(os.path.join(out, "contact.csv"))))

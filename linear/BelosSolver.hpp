@@ -39,13 +39,11 @@ class BelosSolver : public LinearSolver {
   void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;
   void solve(const MultiVector& b, MultiVector& x) override;
   void setNearNullSpace(const Teuchos::RCP<const MultiVector>& nullSpace) override;
-  const LinearSolverStats& stats() const override { return stats_; }
 
  private:
   struct Impl;  // keeps Belos out of this header
   const Options options_;
   std::unique_ptr<Impl> impl_;
-  LinearSolverStats stats_;
 };
 
 }  // namespace contactlab

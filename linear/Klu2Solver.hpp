@@ -34,13 +34,11 @@ class Klu2Solver : public LinearSolver {
   // As for MUMPS, a pattern that differs from the analysed one gets a new analysis anyway.
   void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;
   void solve(const MultiVector& b, MultiVector& x) override;
-  const LinearSolverStats& stats() const override { return stats_; }
 
  private:
   struct Impl;  // keeps Amesos2 out of this header
   const Options options_;
   std::unique_ptr<Impl> impl_;
-  LinearSolverStats stats_;
 };
 
 }  // namespace contactlab

@@ -86,7 +86,11 @@ class LinearSolver {
   // condition estimate, when requested in the solver's parameters).
   virtual std::optional<Determinant> determinant() const { return std::nullopt; }
   virtual std::optional<double> conditionEstimate() const { return std::nullopt; }
-  virtual const LinearSolverStats& stats() const = 0;
+  // Counts and times of this solver's work so far; every solver keeps them in stats_.
+  const LinearSolverStats& stats() const { return stats_; }
+
+ protected:
+  LinearSolverStats stats_;
 };
 
 }  // namespace contactlab

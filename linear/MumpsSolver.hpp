@@ -75,7 +75,6 @@ class MumpsSolver : public LinearSolver {
   // The ordering MUMPS' last analysis used (INFOG(7); it falls back silently when the one asked
   // for is not built in), or nullopt before any analysis.
   std::optional<Ordering> orderingUsed() const;
-  const LinearSolverStats& stats() const override { return stats_; }
 
  private:
   struct Impl;  // keeps dmumps_c.h and mpi.h out of this header
@@ -83,7 +82,6 @@ class MumpsSolver : public LinearSolver {
   void factorize();
   const Options options_;
   std::unique_ptr<Impl> impl_;
-  LinearSolverStats stats_;
 };
 
 }  // namespace contactlab

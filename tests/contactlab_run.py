@@ -1,6 +1,7 @@
 """`contactlab run` as the test scripts start it: on one rank, or under mpirun on several (as root
 too, as the CI runs), with the output captured. Imported by scripts in tests/app and
 tests/verification (they put tests/ on sys.path)."""
+import argparse
 import json
 import os
 import shutil
@@ -20,6 +21,28 @@ def contactlab_run(exe, scene, out, sets=(), ranks=1, options=(), timeout=900, c
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     return cmd, subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)
+
+
+def fresh_run(exe, scene, out, sets=(), timeout=300):
+    """`run` into a cleared OUT, whatever its outcome; returns its summary.json (None when it wrote
+    none) and its CompletedProcess."""
+    shutil.rmtree(out, ignore_errors=True)
+    _, run = contactlab_run(exe, scene, out, sets, timeout=timeout)
+    path = os.path.join(out, "summary.json")
+    return (json.load(open(path)) if os.path.exists(path) else None), run
+
+
+def scene_check_arguments():
+    """The command line of a check that runs one scene and bounds an error: APP SCENE OUT TOL
+    [--ranks N] [--set key=value ...]; the caller adds its own options and parses."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("app")
+    parser.add_argument("scene")
+    parser.add_argument("out")
+    parser.add_argument("tol", type=float)
+    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--set", action="append", default=[])
+    return parser
 
 
 def converged_run(exe, scene, out, sets=(), ranks=1):

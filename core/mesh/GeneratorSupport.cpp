@@ -44,6 +44,28 @@ void requirePositive(const std::string& generator, const std::string& param, dou
                                 " must be a positive number");
 }
 
+ElementSpec roundBodySpec(const std::string& generator, const std::string& elementType,
+                          std::initializer_list<ElementType> allowed, double radius,
+                          const ContactGrading& grading) {
+  const ElementSpec spec = elementSpec(generator, elementType, allowed);
+  requirePositive(generator, "Radius", radius);
+  requireGrading(generator, grading);
+  return spec;
+}
+
+bool requireBase(const std::string& generator, const std::string& base,
+                 const std::array<const char*, 2>& choices, double width, double height) {
+  if (base != choices[0] && base != choices[1])
+    throw std::invalid_argument(generator + ": base must be '" + choices[0] + "' or '" +
+                                choices[1] + "' (got '" + base + "')");
+  const bool block = base == "block";
+  if (block) {
+    requirePositive(generator, "base width", width);
+    requirePositive(generator, "base height", height);
+  }
+  return block;
+}
+
 void requireDivisions(const std::string& generator, const std::string& param, int value) {
   if (value < 1)
     throw std::invalid_argument(generator + " generator: " + param + " = " + std::to_string(value) +

@@ -29,6 +29,16 @@ ElementSpec elementSpec(const std::string& generator, const std::string& name,
 void requirePositive(const std::string& generator, const std::string& param, double value);
 void requireDivisions(const std::string& generator, const std::string& param, int value);
 void requireGrading(const std::string& generator, const ContactGrading& grading);
+// The checks a graded round body (half-disc, roller-on-base, half-sphere) starts with: its
+// element type among `allowed`, a positive Radius, a valid grading. Returns the type's spec.
+ElementSpec roundBodySpec(const std::string& generator, const std::string& elementType,
+                          std::initializer_list<ElementType> allowed, double radius,
+                          const ContactGrading& grading);
+// The base of a generator whose body may stand on a block: `base` must be one of `choices`
+// (the message names them in this order, one of them "block"), and a block needs a positive
+// width and height. Returns whether the base is the block.
+bool requireBase(const std::string& generator, const std::string& base,
+                 const std::array<const char*, 2>& choices, double width, double height);
 
 // Sets every gmsh option the generators depend on, so earlier gmsh use cannot leak in.
 void resetMeshOptions();

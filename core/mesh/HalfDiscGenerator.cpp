@@ -5,15 +5,12 @@
 
 #include <gmsh.h>
 
-#include <stdexcept>
-
 namespace contactlab {
 Mesh generateHalfDisc(const HalfDiscParams& p) {
   using ET = ElementType;
-  const auto spec = elementSpec("half-disc", p.elementType,
-                                {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
-  requirePositive("half-disc", "Radius", p.radius);
-  requireGrading("half-disc", p.grading);
+  const auto spec =
+      roundBodySpec("half-disc", p.elementType,
+                    {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9}, p.radius, p.grading);
   const std::string source =
       "generated half-disc (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
       formatNumber(p.grading.sizeContact) + " to " + formatNumber(p.grading.sizeFar) + ")";
@@ -51,18 +48,11 @@ Mesh generateHalfDisc(const HalfDiscParams& p) {
 
 Mesh generateRollerOnBase(const RollerOnBaseParams& p) {
   using ET = ElementType;
-  const auto spec = elementSpec("roller-on-base", p.elementType,
-                                {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
-  requirePositive("roller-on-base", "Radius", p.radius);
-  requireGrading("roller-on-base", p.grading);
-  const bool disc = p.base == "disc";
-  if (!disc && p.base != "block")
-    throw std::invalid_argument("roller-on-base: base must be 'block' or 'disc' (got '" + p.base +
-                                "')");
-  if (!disc) {
-    requirePositive("roller-on-base", "base width", p.baseWidth);
-    requirePositive("roller-on-base", "base height", p.baseHeight);
-  }
+  const auto spec =
+      roundBodySpec("roller-on-base", p.elementType,
+                    {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9}, p.radius, p.grading);
+  const bool disc =
+      !requireBase("roller-on-base", p.base, {"block", "disc"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated roller on a " + p.base + " (" + p.elementType +
                              ", R = " + formatNumber(p.radius) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {

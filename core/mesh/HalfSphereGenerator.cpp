@@ -6,25 +6,17 @@
 #include <gmsh.h>
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace contactlab {
 
 Mesh generateHalfSphere(const HalfSphereParams& p) {
   using ET = ElementType;
-  const auto spec = elementSpec("half-sphere", p.elementType,
-                                {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27});
-  requirePositive("half-sphere", "Radius", p.radius);
-  requireGrading("half-sphere", p.grading);
-  const bool block = p.base == "block";
-  if (!block && p.base != "none")
-    throw std::invalid_argument("half-sphere: base must be 'none' or 'block' (got '" + p.base +
-                                "')");
-  if (block) {
-    requirePositive("half-sphere", "base width", p.baseWidth);
-    requirePositive("half-sphere", "base height", p.baseHeight);
-  }
+  const auto spec =
+      roundBodySpec("half-sphere", p.elementType,
+                    {ET::Tet4, ET::Tet10, ET::Hex8, ET::Hex20, ET::Hex27}, p.radius, p.grading);
+  const bool block =
+      requireBase("half-sphere", p.base, {"none", "block"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated half-sphere" + std::string(block ? " on a block" : "") +
                              " (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
                              formatNumber(p.grading.sizeContact) + " to " +

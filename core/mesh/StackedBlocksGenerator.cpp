@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace contactlab {
 namespace {
@@ -16,6 +17,18 @@ std::string divisionsText(const int* d, int n) {
   for (int i = 0; i < n; ++i)
     s += (i ? "x" : "") + std::to_string(d[i]);
   return s;
+}
+
+// Both blocks' n division counts; returns the mesh's source, e.g. "generated stacked blocks 2D
+// (quad4, lower 4x2, upper 3x2)".
+std::string requireBlockDivisions(const std::string& generator, const std::string& elementType,
+                                  const int* lower, const int* upper, int n) {
+  for (int i = 0; i < n; ++i) {
+    requireDivisions(generator, "lowerDivisions[" + std::to_string(i) + "]", lower[i]);
+    requireDivisions(generator, "upperDivisions[" + std::to_string(i) + "]", upper[i]);
+  }
+  return "generated stacked blocks " + std::to_string(n) + "D (" + elementType + ", lower " +
+         divisionsText(lower, n) + ", upper " + divisionsText(upper, n) + ")";
 }
 
 void requireStacking(const std::string& generator, double lowerHeight, double upperHeight,
@@ -41,13 +54,8 @@ Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p) {
       elementSpec(gen, p.elementType, {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9});
   requirePositive(gen, "width", p.width);
   requireStacking(gen, p.lowerHeight, p.upperHeight, p.gap, p.upperRotationDeg);
-  for (int i = 0; i < 2; ++i) {
-    requireDivisions(gen, "lowerDivisions[" + std::to_string(i) + "]", p.lowerDivisions[i]);
-    requireDivisions(gen, "upperDivisions[" + std::to_string(i) + "]", p.upperDivisions[i]);
-  }
-  const std::string source = "generated stacked blocks 2D (" + p.elementType + ", lower " +
-                             divisionsText(p.lowerDivisions.data(), 2) + ", upper " +
-                             divisionsText(p.upperDivisions.data(), 2) + ")";
+  const std::string source = requireBlockDivisions(gen, p.elementType, p.lowerDivisions.data(),
+                                                   p.upperDivisions.data(), 2);
   const double upperY = p.origin[1] + p.lowerHeight + p.gap;
   Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
@@ -81,13 +89,8 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p) {
   if (!(p.upperMargin >= 0))
     throw std::invalid_argument(gen + ": upper margin must be >= 0 (got " +
                                 std::to_string(p.upperMargin) + ")");
-  for (int i = 0; i < 3; ++i) {
-    requireDivisions(gen, "lowerDivisions[" + std::to_string(i) + "]", p.lowerDivisions[i]);
-    requireDivisions(gen, "upperDivisions[" + std::to_string(i) + "]", p.upperDivisions[i]);
-  }
-  const std::string source = "generated stacked blocks 3D (" + p.elementType + ", lower " +
-                             divisionsText(p.lowerDivisions.data(), 3) + ", upper " +
-                             divisionsText(p.upperDivisions.data(), 3) + ")";
+  const std::string source = requireBlockDivisions(gen, p.elementType, p.lowerDivisions.data(),
+                                                   p.upperDivisions.data(), 3);
   const double upperZ = p.origin[2] + p.lowerHeight + p.gap;
   Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();

@@ -59,6 +59,22 @@ void ElementKernel::checkMaterial(const Material& material, const double* stateO
                                 "' has internal variables: the kernel needs state arrays");
 }
 
+void ElementKernel::beginEvaluation(const Material& material, const double* stateOld,
+                                    double* stateNew, double* residual, double* tangent,
+                                    double* averageStress) const {
+  checkMaterial(material, stateOld, stateNew);
+  const int nd = numDofs();
+  if (residual)
+    for (int k = 0; k < nd; ++k)
+      residual[k] = 0.0;
+  if (tangent)
+    for (int k = 0; k < nd * nd; ++k)
+      tangent[k] = 0.0;
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] = 0.0;
+}
+
 void ElementKernel::quadraturePoints(const double* x, double* points) const {
   for (int q = 0; q < numPoints_; ++q)
     interpolatePosition(numNodes_, x, &N_[q * numNodes_], points + 3 * q);

@@ -83,6 +83,10 @@ class ElementKernel {
   // Throws std::invalid_argument when the material is not of this kernel's kinematics or has
   // internal variables but no state arrays were given.
   void checkMaterial(const Material& material, const double* stateOld, double* stateNew) const;
+  // The start of every evaluate(): checkMaterial, then the outputs that are accumulated over the
+  // quadrature points (residual, tangent, averageStress; each when not nullptr) set to zero.
+  void beginEvaluation(const Material& material, const double* stateOld, double* stateNew,
+                       double* residual, double* tangent, double* averageStress) const;
   // Copies the strictly upper blocks K_ab (b > a, dim x dim each) of a numDofs()^2 row-major
   // tangent onto K_ba^T, adding to what is there: the kernels accumulate only the blocks
   // b >= a of a symmetric tangent.

@@ -17,36 +17,15 @@ constexpr int voigt(int i, int j) {
 
 }  // namespace
 
-void SmallStrainKernel::evaluate(const double* x, const double* u, const Material& material,
-                                 const double* stateOld, double* stateNew, double* residual,
-                                 double* tangent, double* pointStress,
-                                 double* averageStress) const {
-  if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
-                   averageStress);
-  else
-    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
-                   averageStress);
-}
-
 template <int D>
-void SmallStrainKernel::computeImpl(const double* x, const double* u, const Material& material,
-                                    const double* stateOld, double* stateNew, double* residual,
-                                    double* tangent, double* pointStress,
-                                    double* averageStress) const {
+void SmallStrainKernel::evaluateIn(const double* x, const double* u, const Material& material,
+                                   const double* stateOld, double* stateNew, double* residual,
+                                   double* tangent, double* pointStress,
+                                   double* averageStress) const {
   constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
-  const int n = numNodes_, nd = D * n, ss = material.stateSize();
-  checkMaterial(material, stateOld, stateNew);
-  if (residual)
-    for (int k = 0; k < nd; ++k)
-      residual[k] = 0.0;
-  if (tangent)
-    for (int k = 0; k < nd * nd; ++k)
-      tangent[k] = 0.0;
+  const int n = numNodes_, ss = material.stateSize();
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
-  if (averageStress)
-    for (int k = 0; k < 6; ++k)
-      averageStress[k] = 0.0;
 
   double dNdx[kMaxNodes * D];
   // w C B and, for unsymmetric material tangents, w (C - C^T) B, as V x nd row-major
@@ -105,7 +84,7 @@ void SmallStrainKernel::computeImpl(const double* x, const double* u, const Mate
 }
 
 // Adds w B^T C B at one quadrature point. Only the blocks b >= a of K_ab = B_a^T C B_b are
-// added: computeImpl mirrors them to b < a at the end. When C is unsymmetric, the mirror would
+// added: evaluateIn mirrors them to b < a at the end. When C is unsymmetric, the mirror would
 // give B_a^T C^T B_b there instead, so the difference B_a^T (C - C^T) B_b is added now.
 template <int D>
 void SmallStrainKernel::accumulateTangent(const double* C6, double w, const double* dNdx,
@@ -160,5 +139,7 @@ void SmallStrainKernel::accumulateTangent(const double* C6, double w, const doub
     }
   }
 }
+
+template class DimensionTemplatedKernel<SmallStrainKernel>;
 
 }  // namespace contactlab

@@ -2,27 +2,23 @@
 // Small-strain solid element: internal force f = int B^T sigma dV and tangent K = int B^T C B dV
 // for 3D cells and 2D plane strain (Voigt rows {0, 1, 3} of Material.hpp). Conventions of
 // ElementKernel.hpp.
-#include "core/problem/ElementKernel.hpp"
+#include "core/problem/DimensionTemplatedKernel.hpp"
 
 namespace contactlab {
 
-class SmallStrainKernel : public ElementKernel {
+class SmallStrainKernel : public DimensionTemplatedKernel<SmallStrainKernel> {
  public:
   explicit SmallStrainKernel(ElementType type, int quadratureDegree = -1)
-      : ElementKernel(type, quadratureDegree) {}
+      : DimensionTemplatedKernel(type, quadratureDegree) {}
 
   Kinematics kinematics() const override { return Kinematics::SmallStrain; }
 
- protected:
-  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress) const override;
-
  private:
+  friend class DimensionTemplatedKernel<SmallStrainKernel>;
   template <int D>
-  void computeImpl(const double* x, const double* u, const Material& material,
-                   const double* stateOld, double* stateNew, double* residual, double* tangent,
-                   double* pointStress, double* averageStress) const;
+  void evaluateIn(const double* x, const double* u, const Material& material,
+                  const double* stateOld, double* stateNew, double* residual, double* tangent,
+                  double* pointStress, double* averageStress) const;
   template <int D>
   void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
                          double* tangent) const;

@@ -12,35 +12,14 @@ constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 
 }  // namespace
 
-void TotalLagrangianKernel::evaluate(const double* x, const double* u, const Material& material,
-                                     const double* stateOld, double* stateNew, double* residual,
-                                     double* tangent, double* pointStress,
-                                     double* averageStress) const {
-  if (dim_ == 2)
-    computeImpl<2>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
-                   averageStress);
-  else
-    computeImpl<3>(x, u, material, stateOld, stateNew, residual, tangent, pointStress,
-                   averageStress);
-}
-
 template <int D>
-void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const Material& material,
-                                        const double* stateOld, double* stateNew, double* residual,
-                                        double* tangent, double* pointStress,
-                                        double* averageStress) const {
+void TotalLagrangianKernel::evaluateIn(const double* x, const double* u, const Material& material,
+                                       const double* stateOld, double* stateNew, double* residual,
+                                       double* tangent, double* pointStress,
+                                       double* averageStress) const {
   const int n = numNodes_, nd = D * n, ss = material.stateSize();
-  checkMaterial(material, stateOld, stateNew);
-  if (residual)
-    for (int k = 0; k < nd; ++k)
-      residual[k] = 0.0;
-  if (tangent)
-    for (int k = 0; k < nd * nd; ++k)
-      tangent[k] = 0.0;
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
-  if (averageStress)
-    for (int k = 0; k < 6; ++k)
-      averageStress[k] = 0.0;
 
   double dNdX[kMaxNodes * D];
   // AB[(i D + J) nd + b D + k] = w sum_L dP_iJ/dF_kL dN_b/dX_L: the tangent's rows are then
@@ -130,5 +109,7 @@ void TotalLagrangianKernel::computeImpl(const double* x, const double* u, const 
     for (int k = 0; k < 6; ++k)
       averageStress[k] /= volume;
 }
+
+template class DimensionTemplatedKernel<TotalLagrangianKernel>;
 
 }  // namespace contactlab

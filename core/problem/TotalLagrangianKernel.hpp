@@ -7,28 +7,24 @@
 // so the geometric stiffness (delta_ik S_JL) is part of dP/dF and comes from the material.
 // 2D is plane strain per unit reference thickness (F_zz = 1). Conventions of ElementKernel.hpp;
 // det F <= 0 at a quadrature point throws ElementUpdateError("inverted-element").
-#include "core/problem/ElementKernel.hpp"
+#include "core/problem/DimensionTemplatedKernel.hpp"
 
 namespace contactlab {
 
-class TotalLagrangianKernel : public ElementKernel {
+class TotalLagrangianKernel : public DimensionTemplatedKernel<TotalLagrangianKernel> {
  public:
   explicit TotalLagrangianKernel(ElementType type, int quadratureDegree = -1)
-      : ElementKernel(type, quadratureDegree) {}
+      : DimensionTemplatedKernel(type, quadratureDegree) {}
 
   Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
 
- protected:
-  // Stresses are Cauchy, sigma = P F^T / det F; the average is over the reference cell.
-  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress) const override;
-
  private:
+  friend class DimensionTemplatedKernel<TotalLagrangianKernel>;
+  // Stresses are Cauchy, sigma = P F^T / det F; the average is over the reference cell.
   template <int D>
-  void computeImpl(const double* x, const double* u, const Material& material,
-                   const double* stateOld, double* stateNew, double* residual, double* tangent,
-                   double* pointStress, double* averageStress) const;
+  void evaluateIn(const double* x, const double* u, const Material& material,
+                  const double* stateOld, double* stateNew, double* residual, double* tangent,
+                  double* pointStress, double* averageStress) const;
 };
 
 }  // namespace contactlab

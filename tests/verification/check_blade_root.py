@@ -15,23 +15,18 @@ Each error is |sum| / |centrifugal resultant of the blade|; TOL bounds both.
 usage: check_blade_root.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--dead] [--set key=value ...]
 Prints "RESULT ..." lines for doc/verification.md (dofs, contact dofs, Newton iterations, wall
 time, the balance errors and the peak contact pressure)."""
-import argparse, json, os, sys
+import json, os, sys
 
 import numpy as np
 import vtk
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import converged_run, read_grid, result_frames  # noqa: E402
+from contactlab_run import (converged_run, read_grid, result_frames,  # noqa: E402
+                            scene_check_arguments)
 
-ap = argparse.ArgumentParser()
-ap.add_argument("app")
-ap.add_argument("scene")
-ap.add_argument("out")
-ap.add_argument("tol", type=float)
-ap.add_argument("--ranks", type=int, default=1)
+ap = scene_check_arguments()
 ap.add_argument("--dead", action="store_true")
-ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
 summary = converged_run(args.app, args.scene, args.out, args.set, args.ranks)

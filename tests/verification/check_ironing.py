@@ -14,22 +14,16 @@ dragged along it with Coulomb friction) and checks what holds whatever the mesh 
 
 usage: check_ironing.py CONTACTLAB SCENE OUTDIR TOL [--ranks N] [--set key=value ...]
 Prints "RESULT ..." lines for doc/verification.md."""
-import argparse, csv, json, math, os, sys
+import csv, json, math, os, sys
 
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
-from contactlab_run import converged_run  # noqa: E402
+from contactlab_run import converged_run, scene_check_arguments  # noqa: E402
 
-ap = argparse.ArgumentParser()
-ap.add_argument("app")
-ap.add_argument("scene")
-ap.add_argument("out")
-ap.add_argument("tol", type=float)
-ap.add_argument("--ranks", type=int, default=1)
+ap = scene_check_arguments()
 ap.add_argument("--slab", default="slab", help="the Dirichlet group that holds the slab")
-ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
 summary = converged_run(args.app, args.scene, args.out, args.set, args.ranks)

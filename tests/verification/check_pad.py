@@ -13,24 +13,23 @@ instead of reporting it converged; checked with Newton/Predictor none). Step cut
 untreated generalized Newton, and 'automatic' saves Lagrange's Newton presets too (its cycling
 points forced). Every run that converges ends in the same state (normal and
 tangential force within 1e-6)."""
-import json, os, shutil, subprocess, sys
+import os, sys
 
 exe, scene, work, mu = sys.argv[1:5]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
+from contactlab_run import fresh_run  # noqa: E402
 
 checklist = Checklist()
 check, failures = checklist.check, checklist.failures
 
 
 def run(name, *sets):
-    out = os.path.join(work, name)
-    shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "run", scene, "--out", out, "--set", f"Contact/floor/Friction={mu}"]
-    for s in sets:
-        cmd += ["--set", s]
-    subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-    return json.load(open(os.path.join(out, "summary.json")))
+    summary, r = fresh_run(exe, scene, os.path.join(work, name),
+                           [f"Contact/floor/Friction={mu}", *sets])
+    if summary is None:
+        sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
+    return summary
 
 
 converged = {}

@@ -12,25 +12,19 @@ The seed's table (static ~1e6, slow dynamics with a negligible mass ~1e6, with a
   - the same mass, 'residual-and-tangent' (a slow dynamics): estimate lowered more than 100
     times, normal force within 1e-2 (the inertia force is the price).
 A scene with density 0 is refused before solving, with a sentence."""
-import json, os, shutil, subprocess, sys
+import os, sys
 
 exe, scene, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
+from contactlab_run import fresh_run  # noqa: E402
 
 checklist = Checklist()
 check, failures = checklist.check, checklist.failures
 
 
 def run(name, *sets):
-    out = os.path.join(work, name)
-    shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, "run", scene, "--out", out]
-    for s in sets:
-        cmd += ["--set", s]
-    r = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-    path = os.path.join(out, "summary.json")
-    return json.load(open(path)) if os.path.exists(path) else None, r
+    return fresh_run(exe, scene, os.path.join(work, name), sets)
 
 
 slow = ["Algorithm/Regularization=slow-dynamics"]

@@ -10,16 +10,25 @@ namespace {
 using Shape = RigidObstacleSpec::Shape;
 using Side = RigidObstacleSpec::Side;
 
+// An obstacle at rest on the outside: point, direction and radius as RigidObstacleSpec says.
+RigidObstacleSpec spec(Shape shape, const std::array<double, 3>& point,
+                       const std::array<double, 3>& direction, double radius = 0.0) {
+  RigidObstacleSpec s;
+  s.shape = shape;
+  s.point = point;
+  s.direction = direction;
+  s.radius = radius;
+  return s;
+}
+
 void expectNear(const std::array<double, 3>& a, const std::array<double, 3>& b, double tol) {
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(a[i], b[i], tol) << "component " << i;
 }
 
 TEST(RigidObstacle, TiltedPlaneGapNormalAndClosestPoint) {
-  RigidObstacleSpec s;
-  s.point = {1, 0, 0};
-  s.direction = {3, 4, 0};  // normalized to (0.6, 0.8, 0)
-  RigidObstacle plane(s, 3);
+  // The normal (3, 4, 0) is normalized to (0.6, 0.8, 0).
+  RigidObstacle plane(spec(Shape::Plane, {1, 0, 0}, {3, 4, 0}), 3);
   const double x[3] = {1 + 0.6 * 2, 0.8 * 2, 5};  // 2 above the plane
   const auto p = plane.project(x, 0.0);
   EXPECT_NEAR(p.gap, 2.0, 1e-14);
@@ -47,10 +56,7 @@ TEST(RigidObstacle, TranslationFollowsItsLoadFunction) {
 }
 
 TEST(RigidObstacle, SphereOutsideAndInside) {
-  RigidObstacleSpec s;
-  s.shape = Shape::Sphere;
-  s.point = {1, 1, 1};
-  s.radius = 2;
+  RigidObstacleSpec s = spec(Shape::Sphere, {1, 1, 1}, {}, 2);
   const double x[3] = {1, 1, 4};  // 3 above the centre
   const auto out = RigidObstacle(s, 3).project(x, 0.0);
   EXPECT_NEAR(out.gap, 1.0, 1e-15);
@@ -65,22 +71,13 @@ TEST(RigidObstacle, SphereOutsideAndInside) {
 }
 
 TEST(RigidObstacle, ObliqueCylinderAndTwoDimensionalCircle) {
-  RigidObstacleSpec s;
-  s.shape = Shape::Cylinder;
-  s.point = {0, 0, 0};
-  s.direction = {1, 1, 0};
-  s.radius = 1;
   // A point 2 from the axis along (0, 0, 1), anywhere along the axis.
   const double x[3] = {3, 3, 2};
-  const auto p = RigidObstacle(s, 3).project(x, 0.0);
+  const auto p = RigidObstacle(spec(Shape::Cylinder, {0, 0, 0}, {1, 1, 0}, 1), 3).project(x, 0.0);
   EXPECT_NEAR(p.gap, 1.0, 1e-14);
   expectNear(p.normal, {0, 0, 1}, 1e-14);
   expectNear(p.point, {3, 3, 1}, 1e-14);
-  RigidObstacleSpec c;
-  c.shape = Shape::Cylinder;
-  c.direction = {0, 0, 1};
-  c.point = {1, 0, 0};
-  c.radius = 0.5;
+  RigidObstacleSpec c = spec(Shape::Cylinder, {1, 0, 0}, {0, 0, 1}, 0.5);
   const double q[3] = {1, 2, 0};
   const auto circle = RigidObstacle(c, 2).project(q, 0.0);
   EXPECT_NEAR(circle.gap, 1.5, 1e-15);
@@ -90,11 +87,8 @@ TEST(RigidObstacle, ObliqueCylinderAndTwoDimensionalCircle) {
 }
 
 TEST(RigidObstacle, PointAtTheCentreStaysFinite) {
-  RigidObstacleSpec s;
-  s.shape = Shape::Sphere;
-  s.radius = 1;
   const double centre[3] = {0, 0, 0};
-  const auto p = RigidObstacle(s, 3).project(centre, 0.0);
+  const auto p = RigidObstacle(spec(Shape::Sphere, {0, 0, 0}, {}, 1), 3).project(centre, 0.0);
   EXPECT_NEAR(p.gap, -1.0, 1e-15);
   EXPECT_NEAR(std::hypot(p.normal[0], p.normal[1], p.normal[2]), 1.0, 1e-15);
 }

@@ -140,4 +140,36 @@ class UnsymmetricNonlinear : public IsotropicElastic {
   static constexpr double kQuad = 500.0, kSkew = 30.0;
 };
 
+// An element of `Kernel` on distortedNodes(t): x holds 3 coordinates per node, n nodes of d
+// displacement components each.
+template <class Kernel>
+struct KernelElement {
+  explicit KernelElement(ElementType t)
+      : kernel(t), x(distortedNodes(t)), n(kernel.numNodes()), d(kernel.dim()) {}
+  Kernel kernel;
+  std::vector<double> x;
+  int n, d;
+  // u_a = G x_a + c (d components).
+  std::vector<double> affineDisplacement(const double (&G)[3][3], const double* c) const {
+    return displacement(G, c, false);
+  }
+  // u_a = (G - I) x_a + c: the deformation x -> G x + c.
+  std::vector<double> affineDeformation(const double (&G)[3][3], const double* c) const {
+    return displacement(G, c, true);
+  }
+
+ private:
+  std::vector<double> displacement(const double (&G)[3][3], const double* c,
+                                   bool minusPosition) const {
+    std::vector<double> u(n * d);
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < d; ++i) {
+        u[a * d + i] = minusPosition ? c[i] - x[3 * a + i] : c[i];
+        for (int j = 0; j < d; ++j)
+          u[a * d + i] += G[i][j] * x[3 * a + j];
+      }
+    return u;
+  }
+};
+
 }  // namespace contactlab::test

@@ -14,24 +14,7 @@ namespace {
 using test::maxAbs;
 using test::nameOf;
 
-struct Element {
-  explicit Element(ElementType t)
-      : kernel(t), x(test::distortedNodes(t)), n(kernel.numNodes()), d(kernel.dim()) {}
-  SmallStrainKernel kernel;
-  std::vector<double> x;
-  int n, d;
-  // u_a = G x_a + c (d components).
-  std::vector<double> affineDisplacement(const double (&G)[3][3], const double* c) const {
-    std::vector<double> u(n * d);
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < d; ++i) {
-        u[a * d + i] = c[i];
-        for (int j = 0; j < d; ++j)
-          u[a * d + i] += G[i][j] * x[3 * a + j];
-      }
-    return u;
-  }
-};
+using Element = test::KernelElement<SmallStrainKernel>;
 
 TEST(SmallStrainKernel, RigidBodyMotionsGiveZeroResidual) {
   const test::IsotropicElastic material(100.0, 0.3);

@@ -59,24 +59,7 @@ class TestKirchhoff : public Material {
   double lambda_, mu_;
 };
 
-struct Element {
-  explicit Element(ElementType t)
-      : kernel(t), x(test::distortedNodes(t)), n(kernel.numNodes()), d(kernel.dim()) {}
-  TotalLagrangianKernel kernel;
-  std::vector<double> x;
-  int n, d;
-  // u_a = (G - I) x_a + c: the deformation x -> G x + c.
-  std::vector<double> affineDisplacement(const double (&G)[3][3], const double* c) const {
-    std::vector<double> u(n * d);
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < d; ++i) {
-        u[a * d + i] = c[i] - x[3 * a + i];
-        for (int j = 0; j < d; ++j)
-          u[a * d + i] += G[i][j] * x[3 * a + j];
-      }
-    return u;
-  }
-};
+using Element = test::KernelElement<TotalLagrangianKernel>;
 
 // A rotation by `angle` about an axis (about z in 2D).
 void rotation(int d, double angle, double (&R)[3][3]) {
@@ -97,7 +80,7 @@ TEST(TotalLagrangianKernel, FiniteRigidMotionsGiveZeroResidualAndStress) {
     double R[3][3];
     rotation(e.d, 1.1, R);  // 63 degrees: far outside the small-strain kernel's reach
     const double c[3] = {0.3, -0.2, 0.1};
-    const auto u = e.affineDisplacement(R, c);
+    const auto u = e.affineDeformation(R, c);
     std::vector<double> f(e.n * e.d);
     std::array<double, 6> sigma{};
     e.kernel.compute(e.x.data(), u.data(), material, nullptr, nullptr, f.data(), nullptr);
@@ -124,7 +107,7 @@ TEST(TotalLagrangianKernel, TangentMatchesFiniteDifferencesAtLargeStrain) {
       for (int j = 0; j < e.d; ++j)
         G[i][j] *= (j == 0 ? 1.3 : 0.9);
     const double c[3] = {0, 0, 0};
-    auto u = e.affineDisplacement(G, c);
+    auto u = e.affineDeformation(G, c);
     for (double& v : u)
       v += 0.2 * r(rng);
     std::vector<double> f(nd), K(nd * nd), fp(nd), fm(nd);
@@ -175,7 +158,7 @@ TEST(TotalLagrangianKernel, HomogeneousStretchGivesTheCauchyStress) {
     Element e(t);
     const double G[3][3] = {{s, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const double c[3] = {0, 0, 0};
-    const auto u = e.affineDisplacement(G, c);
+    const auto u = e.affineDeformation(G, c);
     std::vector<double> points(6 * e.kernel.numQuadraturePoints());
     e.kernel.stresses(e.x.data(), u.data(), material, nullptr, nullptr, points.data(), nullptr);
     for (int q = 0; q < e.kernel.numQuadraturePoints(); ++q) {
@@ -193,7 +176,7 @@ TEST(TotalLagrangianKernel, InvertedElementAndWrongMaterialAreNamed) {
     Element e(t);
     const double G[3][3] = {{-0.5, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // x folded through itself
     const double c[3] = {0, 0, 0};
-    const auto u = e.affineDisplacement(G, c);
+    const auto u = e.affineDeformation(G, c);
     std::vector<double> f(e.n * e.d);
     try {
       e.kernel.compute(e.x.data(), u.data(), material, nullptr, nullptr, f.data(), nullptr);

@@ -474,14 +474,7 @@ TEST_P(ContactProblemTest, FrozenStatusesDoNotFollowTheIterate) {
   RectangleParams r;
   r.divisions = {4, 4};
   auto mesh = std::make_shared<Mesh>(generateRectangle(r));
-  ContactZone zone;
-  zone.name = "floor";
-  zone.slave = "bottom";
-  RigidObstacleSpec plane;
-  plane.direction = {0, 1, 0};
-  zone.obstacle = plane;
-  zone.friction = 0.3;
-  zone.law = law(GetParam());
+  const ContactZone zone = floorZone(0.3, GetParam());
   auto comm = Tpetra::getDefaultComm();
   Problem solid(squeezedBlock(mesh, ""), comm);
   ContactProblem contact(solid, {zone});

@@ -1,13 +1,14 @@
 #pragma once
 // Helpers shared by the constitutive-law tests: a finite-strain evaluation and its tangent
 // against central differences, random deformation gradients, rotations, diagonal stretches,
-// the Cauchy stress of P.
+// the Cauchy stress of P, the largest entrywise difference of two tensors.
 #include "core/materials/Material.hpp"
 #include "core/materials/Tensor3.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <gtest/gtest.h>
 #include <random>
 #include <vector>
@@ -38,20 +39,28 @@ inline MaterialOutput evaluateF(const Material& m, const Mat3& F,
   return out;
 }
 
+// max |tangent - central differences of f| / max |tangent| at x, with the step h: f maps N
+// inputs to M outputs, tangent is their M x N derivative, row major.
+template <std::size_t N, std::size_t M, class Function>
+double centralDifferenceError(const Function& f, const std::array<double, N>& x,
+                              const double* tangent, double h) {
+  double err = 0.0;
+  for (std::size_t b = 0; b < N; ++b) {
+    std::array<double, N> plus = x, minus = x;
+    plus[b] += h;
+    minus[b] -= h;
+    const std::array<double, M> fPlus = f(plus), fMinus = f(minus);
+    for (std::size_t a = 0; a < M; ++a)
+      err = std::max(err, std::abs(tangent[a * N + b] - (fPlus[a] - fMinus[a]) / (2.0 * h)));
+  }
+  return err / maxAbs(tangent, static_cast<int>(M * N));
+}
+
 // max |dPdF - central differences of P| / max |dPdF|, every evaluation from the same stateOld.
 inline double dPdFError(const Material& m, const Mat3& F, const double* stateOld = nullptr) {
   const MaterialOutput out = evaluateF(m, F, stateOld);
-  const double h = 1e-6;
-  double err = 0.0;
-  for (int kL = 0; kL < 9; ++kL) {
-    Mat3 plus = F, minus = F;
-    plus[kL] += h;
-    minus[kL] -= h;
-    const Mat3 Pp = evaluateF(m, plus, stateOld).P, Pm = evaluateF(m, minus, stateOld).P;
-    for (int iJ = 0; iJ < 9; ++iJ)
-      err = std::max(err, std::abs(out.dPdF[iJ * 9 + kL] - (Pp[iJ] - Pm[iJ]) / (2.0 * h)));
-  }
-  return err / maxAbs(out.dPdF.data(), 81);
+  return centralDifferenceError<9, 9>([&](const Mat3& G) { return evaluateF(m, G, stateOld).P; }, F,
+                                      out.dPdF.data(), 1e-6);
 }
 
 // F = I + G with G random, |G|_Frobenius uniform in [0.05, 0.5] (so det F > 0); plane-strain
@@ -85,6 +94,14 @@ inline Mat3 rotation(std::array<double, 3> axis, double angle) {
 
 inline Mat3 diagonal(double a, double b, double c) {
   return {a, 0, 0, 0, b, 0, 0, 0, c};
+}
+
+// max_ij |a_ij - b_ij|.
+inline double maxDifference(const Mat3& a, const Mat3& b) {
+  double m = 0.0;
+  for (int i = 0; i < 9; ++i)
+    m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
 }
 
 // Cauchy stress P F^T / J.

@@ -29,8 +29,7 @@ TEST_P(HalfDiscGenerator, GroupsAreaBoundariesAndGrading) {
   EXPECT_LT(area, exact);
   EXPECT_GT(area, 0.99 * exact);
 
-  for (auto n : mesh.boundaryNodes("flat"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
+  test::expectCoordinate(mesh, "flat", 1, 2.0);
   std::vector<double> arcDistances;  // distance of arc nodes to the contact point
   for (auto n : mesh.boundaryNodes("curved")) {
     const auto x = test::node(mesh, n);
@@ -107,8 +106,7 @@ TEST_P(RollerOnBaseGenerator, TwoBodiesTouchingAtOnePoint) {
       EXPECT_TRUE(onRoller ? x[1] >= 2.0 - 1e-12 : x[1] <= 2.0 + 1e-12) << group;
     }
   EXPECT_EQ(atContact, 2) << "one node of each body at the contact point";
-  for (auto n : mesh.boundaryNodes("roller-flat"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 3.0, 1e-12);
+  test::expectCoordinate(mesh, "roller-flat", 1, 3.0);
   for (auto n : mesh.boundaryNodes("base-bottom"))
     EXPECT_NEAR(test::node(mesh, n)[1], p.base == "disc" ? 1.0 : 0.5, 1e-12);
 }

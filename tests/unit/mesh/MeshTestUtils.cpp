@@ -119,14 +119,19 @@ std::vector<GeneratorCase> generatorCases2D(std::size_t quads, std::size_t linea
           {"quad9", ET::Quad9, ET::Line3, quads, completeNodes}};
 }
 
-void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c) {
-  EXPECT_EQ(mesh.dim, 2);
+void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c, int dim) {
+  EXPECT_EQ(mesh.dim, dim);
   EXPECT_EQ(mesh.numNodes(), c.nodes);
   ASSERT_EQ(mesh.blocks.size(), 1u);
   EXPECT_EQ(mesh.blocks[0].name, "body");
   EXPECT_EQ(mesh.blocks[0].type, c.cellType);
   EXPECT_EQ(mesh.numElements(), c.cells);
   EXPECT_GT(minJacobian(mesh), 0.0);
+}
+
+void expectCoordinate(const Mesh& mesh, const std::string& group, int component, double value) {
+  for (auto n : mesh.boundaryNodes(group))
+    EXPECT_NEAR(node(mesh, n)[component], value, 1e-12) << group << " node " << n;
 }
 
 std::set<std::int64_t> blockNodes(const Mesh& mesh, const std::string& name) {

@@ -25,7 +25,7 @@ std::array<double, 3> node(const Mesh& mesh, std::int64_t n);
 std::set<std::int64_t> blockNodes(const Mesh& mesh, const std::string& name);
 std::size_t cellCount(const std::vector<const CellGroup*>& groups);
 
-// One element type of a parameterized 2D generator test: the cell and facet types it makes and
+// One element type of a parameterized generator test: the cell and facet types it makes and
 // the cell and node counts expected for the test's divisions.
 struct GeneratorCase {
   std::string type;
@@ -44,9 +44,11 @@ std::vector<GeneratorCase> generatorCases2D(std::size_t quads, std::size_t linea
                                             std::size_t serendipityNodes,
                                             std::size_t completeNodes);
 
-// Expects a 2D mesh of one block "body" of c.cellType with c's node and cell counts and no
-// inverted cell (gtest EXPECTs).
-void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c);
+// Expects a mesh of dimension dim with one block "body" of c.cellType, c's node and cell counts
+// and no inverted cell (gtest EXPECTs; an ASSERT on the block count).
+void expectGeneratedBlock(const Mesh& mesh, const GeneratorCase& c, int dim = 2);
+// Expects coordinate `component` of every node of boundary group `group` to be `value` (1e-12).
+void expectCoordinate(const Mesh& mesh, const std::string& group, int component, double value);
 
 // Writes `mesh` through gmsh's API ("2.2" or "4.1"), one discrete entity and one physical
 // group per CellGroup; node i gets tag i + 1, cells keep their tags.

@@ -46,12 +46,9 @@ TEST_P(StackedBlocks2D, PatchTestGeometry) {
 
   const auto lower = test::blockNodes(mesh, "lower"), upper = test::blockNodes(mesh, "upper");
   EXPECT_EQ(lower.size() + upper.size(), mesh.numNodes());  // disjoint, all used
-  for (auto n : mesh.boundaryNodes("lower-top"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 1.0, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-bottom"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 1.0, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-top"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 2.0, 1e-12);
+  test::expectCoordinate(mesh, "lower-top", 1, 1.0);
+  test::expectCoordinate(mesh, "upper-bottom", 1, 1.0);
+  test::expectCoordinate(mesh, "upper-top", 1, 2.0);
   // 2 vs 3 divisions: the end points coincide, and at order 2 also x = 0.5.
   const auto lt = mesh.boundaryNodes("lower-top"), ub = mesh.boundaryNodes("upper-bottom");
   EXPECT_EQ(unmatched(mesh, lt, ub, 2), info(elementTypeFromName(GetParam())).order == 1 ? 1u : 2u);
@@ -69,8 +66,7 @@ TEST(StackedBlocks2DGenerator, GapAndRotation) {
   p.gap = 0.25;
   p.upperRotationDeg = 5.0;
   const Mesh mesh = generateStackedBlocks2D(p);
-  for (auto n : mesh.boundaryNodes("lower-top"))
-    EXPECT_NEAR(test::node(mesh, n)[1], 1.5, 1e-12);
+  test::expectCoordinate(mesh, "lower-top", 1, 1.5);
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 2.0, 1e-12);
   // Upper block turned about its centre (2, 2.25): its bottom corners moved off y = 1.75.
   double ymin = 1e9, ymax = -1e9;
@@ -109,14 +105,10 @@ TEST_P(StackedBlocks3D, PatchTestGeometry) {
 
   const auto lower = test::blockNodes(mesh, "lower"), upper = test::blockNodes(mesh, "upper");
   EXPECT_EQ(lower.size() + upper.size(), mesh.numNodes());
-  for (auto n : mesh.boundaryNodes("lower-top"))
-    EXPECT_NEAR(test::node(mesh, n)[2], 1.05, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-bottom"))
-    EXPECT_NEAR(test::node(mesh, n)[2], 0.95, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-top"))
-    EXPECT_NEAR(test::node(mesh, n)[2], 2.0, 1e-12);
-  for (auto n : mesh.boundaryNodes("upper-xmax"))
-    EXPECT_NEAR(test::node(mesh, n)[0], 1.0, 1e-12);
+  test::expectCoordinate(mesh, "lower-top", 2, 1.05);
+  test::expectCoordinate(mesh, "upper-bottom", 2, 0.95);
+  test::expectCoordinate(mesh, "upper-top", 2, 2.0);
+  test::expectCoordinate(mesh, "upper-xmax", 0, 1.0);
   const auto lt = mesh.boundaryNodes("lower-top"), ub = mesh.boundaryNodes("upper-bottom");
   EXPECT_GT(unmatched(mesh, lt, ub, 2), lt.size() / 2);
 }
@@ -133,8 +125,7 @@ TEST(StackedBlocks3DGenerator, RotatedUpperBlock) {
   EXPECT_NEAR(test::blockMeasure(mesh, "upper"), 1.0, 1e-12);
   EXPECT_GT(test::minJacobian(mesh), 0.0);
   // Lower block untouched, upper corners turned about (0.5, 0.5).
-  for (auto n : mesh.boundaryNodes("lower-xmin"))
-    EXPECT_NEAR(test::node(mesh, n)[0], 0.0, 1e-12);
+  test::expectCoordinate(mesh, "lower-xmin", 0, 0.0);
   const double a = 3 * M_PI / 180;
   bool found = false;
   for (auto n : mesh.boundaryNodes("upper-top")) {

@@ -1,0 +1,24 @@
+#!/usr/bin/env python3
+"""One timed `contactlab` run of a benchmark and its summary, shared by the bench scripts (each
+wrote the same clear-run-time-read sequence).
+
+usage: import runs; summary, wall, done = runs.run(exe, "run", scene_yaml, out, sets)"""
+import json, os, shutil, subprocess, time
+
+
+def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600):
+    """`exe command scene --out out` into a cleared folder, without VTK output, with a `--set`
+    for each of sets. Returns the summary.json (None when the run wrote none or an unreadable
+    one), the wall seconds and the finished process."""
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [exe, command, scene, "--out", out] + (["--quiet"] if quiet else [])
+    for s in ["Output/VTK=false", *sets]:
+        cmd += ["--set", s]
+    start = time.time()
+    done = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    wall = time.time() - start
+    try:
+        summary = json.load(open(os.path.join(out, "summary.json")))
+    except (OSError, ValueError):
+        summary = None
+    return summary, wall, done
