@@ -13,6 +13,8 @@ import threading
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
+from contact_references import cattaneo_mindlin as reference_cattaneo_mindlin  # noqa: E402
+from contact_references import hertz, hertz_pressure_errors, node_spacing  # noqa: E402
 from contactlab_run import contactlab_run  # noqa: E402
 
 # Below this a quantity is round-off (a gap closed exactly, 1 rank against 2) and is written as
@@ -118,25 +120,12 @@ H2_SETS = {"augmented-lagrangian": [],
 H2_ESTAR = 1 / (1 - 0.3 ** 2)  # E = 1, nu = 0.3 on a rigid plane
 
 
-def hertz_line_load(P, estar, radius=1.0):
-    """Hertz's half-width a and peak p0 for the line load P."""
-    a = math.sqrt(4 * P * radius / (math.pi * estar))
-    return a, 2 * P / (math.pi * a)
-
-
 def hertz_2d_errors(summary, rows, estar, radius=1.0):
-    """|p - p_H| / p0 at the nodes: max and rms over |x| <= 0.9a, max beyond (the edge nodes),
-    with P, a, p0 and the nodes inside the contact width."""
+    """|p - p_H| / p0 at the nodes (contact_references.hertz_pressure_errors: max and rms over
+    |x| <= 0.9a, max beyond, the nodes inside the contact width), with P, a and p0."""
     P = summary["contact"]["normal_force"]
-    a, p0 = hertz_line_load(P, estar, radius)
-    inner, edge = [], [0.0]
-    for r in rows:
-        x = abs(float(r["x"]))
-        e = abs(float(r["pressure"]) - p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))) / p0
-        (inner if x <= 0.9 * a else edge).append(e)
-    return dict(P=P, a=a, p0=p0, inside=sum(abs(float(r["x"])) < a for r in rows),
-                max=max(inner), rms=math.sqrt(sum(e * e for e in inner) / len(inner)),
-                edge=max(edge))
+    a, p0 = hertz(P, estar, radius, 2)
+    return dict(P=P, a=a, p0=p0, **hertz_pressure_errors(rows, a, p0, 2))
 
 
 def h2_run(runs, formulation, extra=()):
@@ -260,28 +249,17 @@ CM_ESTAR, CM_RADIUS, CM_MU = 0.5494505494505495, 0.5, 0.3
 
 def cattaneo_mindlin(summary, rows):
     """The stick zone and the shear traction against Cattaneo-Mindlin's for the computed P and
-    Q: c/a both ways, the offset in node spacings, the traction error / (mu p0) inside the
-    stick zone (|x| <= 0.9c) and over |x| <= 0.9a."""
+    Q (contact_references.cattaneo_mindlin): c/a both ways, the offset in node spacings, the
+    traction error / (mu p0) inside the stick zone (|x| <= 0.9c) and over |x| <= 0.9a."""
     P = summary["contact"]["normal_force"]
     Q = abs(summary["contact"]["tangential_force_vector"][0])
-    a, p0 = hertz_line_load(P, CM_ESTAR, CM_RADIUS)
-    c = a * math.sqrt(1 - Q / (CM_MU * P))
     pts = closed(rows)
-    xs = sorted(float(r["x"]) for r in pts)
-    spacing = sorted(b - x for x, b in zip(xs, xs[1:]))[len(xs) // 2]
-    stick = [float(r["x"]) for r in pts if int(r["status"]) == 1]
-    c_fe = (max(stick) - min(stick)) / 2
-    stick_err, err = 0.0, 0.0
-    for r in pts:
-        x = float(r["x"])
-        q = math.sqrt(max(0.0, 1 - (x / a) ** 2)) - (
-            c / a * math.sqrt(1 - (x / c) ** 2) if abs(x) < c else 0.0)
-        e = abs(abs(float(r["traction_x"])) / (CM_MU * p0) - q)
-        err = max(err, e) if abs(x) <= 0.9 * a else err
-        stick_err = max(stick_err, e) if abs(x) <= 0.9 * c else stick_err
-    return dict(P=P, a=a, p0=p0, ratio=Q / (CM_MU * P), c=c / a, c_fe=c_fe / a,
-                centre=(max(stick) + min(stick)) / 2 / a, offset=abs(c_fe - c) / spacing,
-                stick_err=stick_err, err=err)
+    cm = reference_cattaneo_mindlin(pts, P, Q, CM_MU, CM_ESTAR, CM_RADIUS)
+    a = cm["a"]
+    return dict(P=P, a=a, p0=cm["p0"], ratio=Q / (CM_MU * P), c=cm["c"] / a,
+                c_fe=cm["c_fe"] / a, centre=cm["centre"] / a,
+                offset=abs(cm["c_fe"] - cm["c"]) / node_spacing(pts),
+                stick_err=cm["stick_error"], err=cm["error"])
 
 
 def cm_run(runs, discretization="node-to-segment", basis="dual"):

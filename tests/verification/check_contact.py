@@ -26,6 +26,7 @@ import argparse, csv, json, math, os, shutil, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from contactlab_run import contactlab_run  # noqa: E402
+from contact_references import cattaneo_mindlin, hertz, hertz_pressure_errors, node_spacing  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -76,33 +77,14 @@ contact = summary["contact"]
 if args.case in ("hertz-2d", "hertz-3d"):
     P = contact["normal_force"]
     Estar = args.estar or args.E / (1 - args.nu ** 2)
-    if args.case == "hertz-2d":
-        a = math.sqrt(4 * P * args.radius / (math.pi * Estar))
-        p0 = 2 * P / (math.pi * a)
-        radius = lambda r: abs(float(r["x"]))
-    else:
-        a = (3 * P * args.radius / (4 * Estar)) ** (1 / 3)
-        p0 = 3 * P / (2 * math.pi * a * a)
-        radius = lambda r: math.hypot(float(r["x"]), float(r["y"]))
-    inside = [r for r in rows if radius(r) < a]
-    assert len(inside) >= 10, f"only {len(inside)} nodes in the contact width 2a = {2 * a}"
-    err = edge = sq = 0.0
-    n = 0
-    for r in rows:
-        x = radius(r)
-        ph = p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
-        e = abs(float(r["pressure"]) - ph) / p0
-        if abs(x) <= 0.9 * a:
-            err = max(err, e)
-            sq += e * e
-            n += 1
-        else:
-            edge = max(edge, e)
+    dim = 2 if args.case == "hertz-2d" else 3
+    a, p0 = hertz(P, Estar, args.radius, dim)
+    e = hertz_pressure_errors(rows, a, p0, dim)
+    assert e["inside"] >= 10, f"only {e['inside']} nodes in the contact width 2a = {2 * a}"
+    err, rms, edge = e["max"], e["rms"], e["edge"]
     # Mesh size: the area per contact node inside the contact zone (2D: the width per node).
-    area = 2 * a if args.case == "hertz-2d" else math.pi * a * a
-    h = area / len(inside) if args.case == "hertz-2d" else math.sqrt(area / len(inside))
-    rms = math.sqrt(sq / max(n, 1))
-    print(f"P = {P:.6g}, a = {a:.6g}, p0 = {p0:.6g}, nodes in the contact zone: {len(inside)}, "
+    h = 2 * a / e["inside"] if dim == 2 else math.sqrt(math.pi * a * a / e["inside"])
+    print(f"P = {P:.6g}, a = {a:.6g}, p0 = {p0:.6g}, nodes in the contact zone: {e['inside']}, "
           f"|p - p_H| / p0: max {err:.4g}, rms {rms:.4g} (|x| <= 0.9a), max {edge:.4g} (edge), "
           f"max penetration {contact['max_penetration']:.3g}")
     print(f"RESULT {args.case} h={h:.4g} a/h={a / h:.1f} max={err:.4g} rms={rms:.4g} "
@@ -115,31 +97,16 @@ elif args.case == "cattaneo-mindlin":
     P = contact["normal_force"]
     Q = abs(contact["tangential_force_vector"][0])
     Estar = args.estar or args.E / (1 - args.nu ** 2)
-    a = math.sqrt(4 * P * args.radius / (math.pi * Estar))
-    p0 = 2 * P / (math.pi * a)
     ratio = Q / (args.mu * P)
     assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
-    c = a * math.sqrt(1 - ratio)
-    xs = sorted(float(r["x"]) for r in closed)
-    h = sorted(b - a_ for a_, b in zip(xs, xs[1:]))[len(xs) // 2]
-    stick = [float(r["x"]) for r in closed if int(r["status"]) == 1]
-    slip = [float(r["x"]) for r in closed if int(r["status"]) == 2]
+    h = node_spacing(closed)
+    stick = [r for r in closed if int(r["status"]) == 1]
+    slip = [r for r in closed if int(r["status"]) == 2]
     assert stick and slip, "partial slip expected: both stick and slip points"
-    c_fe = (max(stick) - min(stick)) / 2
-    err = inner = 0.0
-    for r in closed:
-        x = float(r["x"])
-        if abs(x) > 0.9 * a:
-            continue
-        q = args.mu * p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
-        if abs(x) < c:
-            q -= args.mu * p0 * (c / a) * math.sqrt(1 - (x / c) ** 2)
-        e = abs(abs(float(r["traction_x"])) - q) / (args.mu * p0)
-        err = max(err, e)
-        if abs(x) <= 0.9 * c:
-            inner = max(inner, e)
+    cm = cattaneo_mindlin(closed, P, Q, args.mu, Estar, args.radius)
+    a, c, c_fe, inner, err = cm["a"], cm["c"], cm["c_fe"], cm["stick_error"], cm["error"]
     print(f"P = {P:.6g}, Q = {Q:.6g}, Q/(mu P) = {ratio:.4f}, a = {a:.5g}, c/a: Cattaneo-Mindlin "
-          f"{c / a:.4f}, computed {c_fe / a:.4f} (centre {(max(stick) + min(stick)) / 2:.3g}), "
+          f"{c / a:.4f}, computed {c_fe / a:.4f} (centre {cm['centre']:.3g}), "
           f"h = {h:.3g}, traction error {inner:.4g} mu p0 (|x| <= 0.9c), {err:.4g} (|x| <= 0.9a)")
     print(f"RESULT cattaneo-mindlin Q/muP={ratio:.3f} c/a={c / a:.4f} fe={c_fe / a:.4f} "
           f"dc/h={abs(c_fe - c) / h:.2f} traction={inner:.4g} (stick zone) {err:.4g} (0.9a)")
