@@ -62,11 +62,7 @@ void addContactPointData(const std::vector<std::int64_t>& nodes,
     FieldData field{"unknown_" + name, 1, {}};
     for (std::int64_t node : nodes) {
       auto it = byNode.find(node);
-      double value = 0.0;
-      if (it != byNode.end())
-        for (const auto& [n, v] : it->second->unknowns)
-          if (n == name) value = v;
-      field.values.push_back(value);
+      field.values.push_back(it == byNode.end() ? 0.0 : unknownValue(*it->second, name, 0.0));
     }
     piece.pointData.push_back(std::move(field));
   }

@@ -12,6 +12,12 @@ std::vector<std::string> unknownNames(const std::vector<ContactPointResult>& poi
   return names;
 }
 
+double unknownValue(const ContactPointResult& point, const std::string& name, double absent) {
+  for (const auto& [n, value] : point.unknowns)
+    if (n == name) return value;
+  return absent;
+}
+
 ContactResultants contactResultants(const std::vector<ContactPointResult>& points,
                                     const std::vector<double>& outputPressure) {
   ContactResultants r;

@@ -35,6 +35,8 @@ struct ContactPointResult {
 
 // The unknowns' names over a set of points, each once, in the order they first appear.
 std::vector<std::string> unknownNames(const std::vector<ContactPointResult>& points);
+// The point's unknown of that name, or `absent` when its formulation has none.
+double unknownValue(const ContactPointResult& point, const std::string& name, double absent);
 
 // contact_status as written to contact.csv and the VTK output, one meaning everywhere: 0 free,
 // 1 stick, 2 slip (frictional points), 3 closed without friction (no stick or slip to tell).

@@ -41,12 +41,8 @@ void ContactCsv::write(const ContactProblem& contact, const std::vector<ContactZ
         CsvWriter::format(p.slip[1]),
         CsvWriter::format(p.slip[2]),
         CsvWriter::format(outputStatus(p))};
-    for (const std::string& name : unknowns) {
-      double value = nan;
-      for (const auto& [n, v] : p.unknowns)
-        if (n == name) value = v;
-      cells.push_back(CsvWriter::format(value));
-    }
+    for (const std::string& name : unknowns)
+      cells.push_back(CsvWriter::format(unknownValue(p, name, nan)));
     table.addFormattedRow(std::move(cells));
   }
   table.write(path_);
