@@ -28,10 +28,11 @@ using Teuchos::rcp;
 class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
  public:
   void set(const RCP<const Thyra::LinearOpBase<double>>& op, LinearSolver* solver,
-           RCP<const Matrix> matrix) {
+           RCP<const Matrix> matrix, const NonlinearSystem* system) {
     op_ = op;
     solver_ = solver;
     matrix_ = std::move(matrix);
+    system_ = system;
   }
   RCP<const Thyra::LinearOpBase<double>> op() const { return op_; }
   RCP<const Thyra::VectorSpaceBase<double>> range() const override { return op_->range(); }
@@ -58,6 +59,10 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
     auto x = TOE::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
     solver_->solve(*b, *x);  // LinearSolverError propagates: NOX reports the failure
     throwIfNumericallySingular(*matrix_, *b, *x);
+    // NOX solves for the Newton direction: complete it (its eliminated components are not in
+    // J's range, so J d is unchanged off their zero-residual rows).
+    for (std::size_t v = 0; v < x->getNumVectors(); ++v)
+      system_->completeIncrement(*x->getVectorNonConst(v));
     Thyra::SolveStatus<double> status;
     status.solveStatus = Thyra::SOLVE_STATUS_CONVERGED;
     return status;
@@ -67,6 +72,7 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
   RCP<const Thyra::LinearOpBase<double>> op_;
   LinearSolver* solver_ = nullptr;
   RCP<const Matrix> matrix_;  // the one factored, for the singularity check of each solve
+  const NonlinearSystem* system_ = nullptr;
 };
 
 class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
@@ -81,7 +87,7 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
     // The system's current tangent (with geometry in Newton a re-pairing may have replaced it).
     // The solver analyses on its first matrix by itself.
     solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
-    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_, system_.tangent());
+    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_, system_.tangent(), &system_);
   }
   void uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
                       RCP<const Thyra::LinearOpSourceBase<double>>* source,

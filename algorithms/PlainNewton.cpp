@@ -76,6 +76,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       increment->putScalar(0.0);
       solver_.solve(*residual, *increment);
       throwIfNumericallySingular(*system_.tangent(), *residual, *increment);
+      system_.completeIncrement(*increment);
     } catch (const SingularMatrixError& e) {
       out.linearSolveSeconds += secondsSince(t0);
       out.failure = kSingularTangent;

@@ -342,6 +342,7 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
     auto du = problem_.createVector();
     solver_->solve(*rhs, *du);
     throwIfNumericallySingular(*problem_.tangent(), *rhs, *du);
+    problem_.completeIncrement(*du);
     x.update(1.0, *du, 1.0);
   } catch (const SingularMatrixError& e) {
     p.failure = kSingularTangent;

@@ -348,6 +348,18 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     sm.model.dirichlet.push_back(bc);
   }
 
+  const ParameterList& symmetry = p.sublist("Symmetry");
+  for (auto it = symmetry.begin(); it != symmetry.end(); ++it) {
+    const std::string path = "Symmetry/" + symmetry.name(it);
+    const ParameterList& s = symmetry.sublist(symmetry.name(it));
+    SymmetryCondition condition;
+    condition.name = symmetry.name(it);
+    condition.group = s.get<std::string>("Group");
+    if (condition.group.empty()) throw InputError(where + ": " + path + "/Group is empty");
+    condition.normal = vector3(s, "Normal", where, path, dim);
+    sm.model.symmetries.push_back(condition);
+  }
+
   const ParameterList& springs = p.sublist("Springs");
   for (auto it = springs.begin(); it != springs.end(); ++it) {
     const std::string path = "Springs/" + springs.name(it);

@@ -95,6 +95,19 @@ ParameterList dirichletItem() {
   return p;
 }
 
+ParameterList symmetryItem() {
+  ParameterList p;
+  p.set("Group", "",
+        "Boundary physical group on a plane (a line in 2D): its nodes keep n . u = 0 and slide "
+        "freely in it (a roller)");
+  p.set("Normal", Teuchos::Array<double>(3, 0.0),
+        "Normal of the plane (any length, either sense); [0, 0, 0] fits it through the group's "
+        "nodes. The group must lie on the plane (within 1e-6 of its extent). A plane normal to "
+        "an axis is the Dirichlet condition u_axis = 0; an inclined one is eliminated exactly, "
+        "one dependent component per node, and the tangent stays symmetric");
+  return p;
+}
+
 ParameterList springItem() {
   ParameterList p;
   p.set("Group", "",
@@ -293,6 +306,9 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Dirichlet",
             namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,
                          [](const ParameterList&, const std::string&) { return dirichletItem(); }));
+  valid.set("Symmetry",
+            namedSection(userSublist(&scene, "Symmetry"), "Symmetry", where,
+                         [](const ParameterList&, const std::string&) { return symmetryItem(); }));
   valid.set("Springs",
             namedSection(userSublist(&scene, "Springs"), "Springs", where,
                          [](const ParameterList&, const std::string&) { return springItem(); }));
@@ -392,6 +408,8 @@ std::string sceneReference() {
   describeList(out, pointGroupItem(), "");
   out << "\n### Dirichlet/<name>\n\n";
   describeList(out, dirichlet, "");
+  out << "\n### Symmetry/<name>\n\n";
+  describeList(out, symmetryItem(), "");
   out << "\n### Springs/<name>\n\n";
   describeList(out, springItem(), "");
   out << "\n### Loads/<name>\n\n";

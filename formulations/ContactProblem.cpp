@@ -3,6 +3,7 @@
 #include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/contact/TributaryAreas.hpp"
+#include "core/problem/SymmetryConstraints.hpp"
 #include "formulations/ContactAssembler.hpp"
 #include "formulations/ContactDiscretization.hpp"
 #include "formulations/ContactPoint.hpp"
@@ -36,6 +37,10 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
   ownedDisplacements_ = static_cast<LO>(dofs.ownedMap()->getNodeNumElements());
 
   std::vector<GO> ownedMultipliers;
+  // The solid leaves its symmetry reduction to this problem, which reduces the monolithic system.
+  solid_.deferSymmetryReduction();
+  std::vector<std::int64_t> inclinedSymmetry = solid_.symmetry().nodes();
+  std::sort(inclinedSymmetry.begin(), inclinedSymmetry.end());
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     const ContactZone& zone = zones_[z];
     if (!zone.law) throw InputError("Contact/" + zone.name + ": no formulation");
@@ -61,6 +66,13 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);
       const int nt = zone.friction > 0 && !frictionless ? dim_ - 1 : 0;
       const int multipliers = zone.law->pointUnknowns(nt, dim_);
+      // A friction multiplier along a direction the plane fixes would have no equation.
+      if (multipliers > zone.law->pointUnknowns(0, dim_) &&
+          std::binary_search(inclinedSymmetry.begin(), inclinedSymmetry.end(), node))
+        throw InputError("Contact/" + zone.name + ": slave node " + std::to_string(node + 1) +
+                         " is on an inclined symmetry plane and has friction unknowns, which "
+                         "that plane may leave without an equation; put the plane's slave "
+                         "nodes in the zone's No Friction Group, or use a penalty formulation");
       ContactPoint pt;
       pt.zone = static_cast<int>(z);
       pt.node = node;
@@ -464,7 +476,12 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
     assembler_->add(pt, re, ke, geometric || field);
   }
   assembler_->end();
+  solid_.symmetry().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
   contactSeconds_ += secondsSince(start);
+}
+
+void ContactProblem::completeIncrement(Vector& dx) const {
+  solid_.symmetry().project(dx.getDataNonConst(0).getRawPtr());
 }
 
 void ContactProblem::commitState(const Vector& x, double t) {

@@ -51,6 +51,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
 
   Teuchos::RCP<Vector> createVector() const override;
   void applyDirichlet(double t, Vector& x) const override;
+  void completeIncrement(Vector& dx) const override;
   void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
   const Teuchos::RCP<Matrix>& tangent() const override;
   AssemblyFailure assemblyFailure() const override { return solid_.assemblyFailure(); }

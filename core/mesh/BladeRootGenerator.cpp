@@ -204,6 +204,9 @@ Mesh generateBladeRoot(const BladeRootParams& p) {
     addBoundaryGroup(discVolume, p.thickness, {innerArc}, "disc-inner");
     addBoundaryGroup(discVolume, p.thickness, {outerArcRight, outerArcLeft}, "disc-outer");
     addBoundaryGroup(discVolume, p.thickness, {sideRight, sideLeft}, "disc-sides");
+    // Each radial cut alone, for a symmetry (roller) condition on its plane.
+    addBoundaryGroup(discVolume, p.thickness, {sideRight}, "disc-side-right");
+    addBoundaryGroup(discVolume, p.thickness, {sideLeft}, "disc-side-left");
     if (extruded) {
       addGroup(2, {bladeSurface}, "blade-back");
       addGroup(2, {bladeFront}, "blade-front");

@@ -186,7 +186,8 @@ Mesh generateStackedBlocks3D(const StackedBlocks3DParams& p);
 // "blade-flanks", "disc-flanks" (the contact flanks with the fillets at their ends),
 // "blade-top", "blade-free"
 // (the blade's other slot faces), "disc-slot" (the slot's other faces), "disc-inner",
-// "disc-outer", "disc-sides" (the sector's two radial cuts).
+// "disc-outer", "disc-sides" (the sector's two radial cuts), "disc-side-left", "disc-side-right"
+// (each alone).
 struct BladeRootParams {
   int lobes = 2;
   double innerRadius = 40.0;

@@ -412,7 +412,8 @@ void registerMeshSources() {
          "'blade-flanks', 'disc-flanks' (the lobes' contact flanks with the fillets at their "
          "ends), 'blade-top', 'blade-free' "
          "and 'disc-slot' (the other faces of root and slot), 'disc-inner', 'disc-outer', "
-         "'disc-sides' (the sector's radial cuts); hex elements sweep it along z, adding "
+         "'disc-sides' (the sector's radial cuts), and each alone, 'disc-side-left' and "
+         "'disc-side-right' (for Symmetry conditions); hex elements sweep it along z, adding "
          "'blade-back', 'disc-back' (z = 0), 'blade-front', 'disc-front'.",
          bladeRootParameters, [](const ParameterList& p, const std::string&) {
            BladeRootParams g;

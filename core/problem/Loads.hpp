@@ -78,6 +78,16 @@ struct CentrifugalLoad {
   LoadFunction function;
 };
 
+// A symmetry (roller) condition on a plane group: every node keeps n . u = 0 and slides freely
+// in the plane. `normal` zero: the plane fitted through the group's nodes. A plane normal to an
+// axis is the Dirichlet condition u_axis = 0; an inclined one is eliminated exactly, one
+// dependent component per node (SymmetryConstraints.hpp).
+struct SymmetryCondition {
+  std::string name;
+  std::string group;
+  std::array<double, 3> normal{{0, 0, 0}};
+};
+
 // A discrete spring from each node of a group to ground: in every listed component, a force
 // -stiffness * u on the node (residual +k u, tangent +k on the diagonal). The stiffness is per
 // node and per component, so the group's total stiffness in a component is k times its nodes.

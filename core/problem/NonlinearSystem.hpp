@@ -40,6 +40,10 @@ class NonlinearSystem {
   virtual Teuchos::RCP<Vector> createVector() const = 0;
   // Sets the prescribed displacements at time t in x (owned entries).
   virtual void applyDirichlet(double t, Vector& x) const = 0;
+  // Completes a Newton increment solved from the tangent: components the system eliminated in
+  // terms of others (a symmetry plane's) are written from them. Called after every solve whose
+  // result updates x.
+  virtual void completeIncrement(Vector& /*dx*/) const {}
   // Assembles R(x, t) into `residual` (if not null) and dR/dx into tangent() when requested.
   virtual void assemble(const Vector& x, double t, Vector* residual, bool withTangent) = 0;
   virtual const Teuchos::RCP<Matrix>& tangent() const = 0;

@@ -11,6 +11,7 @@
 #include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/NodalAssembler.hpp"
 #include "core/problem/SurfaceLoadAssembler.hpp"
+#include "core/problem/SymmetryConstraints.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +43,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     : model_(std::move(model)), comm_(comm) {
   const Mesh& mesh = *model_.mesh;
   checkModel();
+  resolveSymmetryConditions(model_);
   const auto partition = partitionElements(mesh, rawMpiComm(comm));
   dofs_ = std::make_unique<DofMap>(mesh, partition, comm);
 
@@ -99,9 +101,11 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
       }
     }
   }
-  reactions_.resize(model_.dirichlet.size());
-  for (std::size_t d = 0; d < reactions_.size(); ++d)
-    reactions_[d].name = model_.dirichlet[d].name;
+  symmetry_ = std::make_unique<SymmetryConstraints>(model_, *dofs_);
+  for (const auto& bc : model_.dirichlet)
+    reactions_.push_back({bc.name, {}});
+  for (const auto& s : model_.symmetries)
+    reactions_.push_back({s.name, {}});
   for (const auto& spring : model_.springs)
     springForces_.push_back({spring.name, {}});
 
@@ -239,6 +243,11 @@ void Problem::applyDirichlet(double t, Vector& u) const {
     data[c.lid] =
         bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t) : bc.value * bc.function(t);
   }
+  symmetry_->project(data.getRawPtr());
+}
+
+void Problem::completeIncrement(Vector& dx) const {
+  symmetry_->project(dx.getDataNonConst(0).getRawPtr());
 }
 
 void Problem::addExternalForces(double t, const double* u, std::vector<double>& f) const {
@@ -374,7 +383,11 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     assemblyFailure_.message =
         failureCode == globalFailure ? failureMessage : "an element of another rank failed";
   }
-  if (!residual) return;
+  Matrix* reducedTangent = withTangent && !deferSymmetry_ ? assembler_->matrix().get() : nullptr;
+  if (!residual) {
+    symmetry_->reduce(reducedTangent, nullptr);
+    return;
+  }
 
   // R = f_int + k u - f_ext, summed over ranks into owned entries.
   nodal_->addSpringForces(uo.getRawPtr(), r);
@@ -402,12 +415,17 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     std::copy(springs[s].begin(), springs[s].end(), sums.begin() + reactionSums + 3 * s);
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
                      global.data());
-  for (std::size_t d = 0; d < reactions_.size(); ++d)
+  for (std::size_t d = 0; d < model_.dirichlet.size(); ++d)
     for (int c = 0; c < 3; ++c)
       reactions_[d].force[c] = global[3 * d + c];
   for (std::size_t s = 0; s < springForces_.size(); ++s)
     for (int c = 0; c < 3; ++c)
       springForces_[s].force[c] = global[reactionSums + 3 * s + c];
+  if (symmetry_->empty()) return;
+  const auto planes = symmetry_->reactions(*residual);
+  for (std::size_t s = 0; s < planes.size(); ++s)
+    reactions_[model_.dirichlet.size() + s].force = planes[s];
+  if (!deferSymmetry_) symmetry_->reduce(reducedTangent, residual);
 }
 
 void Problem::commitState() {

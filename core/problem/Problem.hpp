@@ -8,7 +8,9 @@
 // the element matrices are (a follower pressure's load stiffness is not) and a Newton increment
 // never changes a prescribed value. The residual a constrained dof would have carried is kept
 // as the reaction of its condition. Springs to ground add k u to the residual and k to the
-// diagonal of the tangent at their nodes (NodalAssembler.hpp). External forces depend on u only
+// diagonal of the tangent at their nodes (NodalAssembler.hpp). Symmetry conditions on inclined
+// planes eliminate one component per node from the others (SymmetryConstraints.hpp); those
+// normal to an axis are Dirichlet conditions. External forces depend on u only
 // through follower pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
 #include "base/LinearAlgebra.hpp"
 #include "core/io/MeshPiece.hpp"
@@ -31,6 +33,7 @@ class MatrixAssembler;
 class ElementKernel;
 class NodalAssembler;
 class SurfaceLoadAssembler;
+class SymmetryConstraints;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
 struct DisplacementErrors {
@@ -68,12 +71,16 @@ class Problem : public NonlinearSystem {
   // The tangent matrix (owned rows), refilled by every assemble() with a tangent.
   const Teuchos::RCP<Matrix>& tangent() const override;
 
-  // Sets the prescribed values at time t in u (owned entries).
+  // Sets the prescribed values at time t in u (owned entries), and the components an inclined
+  // symmetry plane makes dependent.
   void applyDirichlet(double t, Vector& u) const override;
+  // Writes the dependent components of an increment from the others (SymmetryConstraints).
+  void completeIncrement(Vector& dx) const override;
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
   AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
-  // Reactions of the Dirichlet conditions at the last assemble() with a residual.
+  // Reactions of the Dirichlet conditions (those of the symmetry planes normal to an axis
+  // among them), then of the inclined symmetry planes, at the last assemble() with a residual.
   const std::vector<Reaction>& reactions() const { return reactions_; }
   // Force each spring exerts on the body (-sum k u over its nodes), at the same assembly.
   const std::vector<Reaction>& springForces() const { return springForces_; }
@@ -85,6 +92,11 @@ class Problem : public NonlinearSystem {
   // The inertia c M (u - reference) of a regularizing dynamics (NonlinearSystem.hpp), added
   // element by element. Throws InputError for a nonzero coefficient without a mass.
   void setInertia(const InertiaTerm& inertia) override;
+  // The inclined symmetry planes' elimination. A caller that adds terms to the tangent and
+  // residual (the contact problem) defers it: assemble() then leaves both unreduced, and the
+  // caller reduces its own monolithic system.
+  const SymmetryConstraints& symmetry() const { return *symmetry_; }
+  void deferSymmetryReduction() { deferSymmetry_ = true; }
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
   // Names of the pressure loads that follow the deformation (on finite-strain elements, see
@@ -153,6 +165,8 @@ class Problem : public NonlinearSystem {
     std::int64_t node;
   };
   std::vector<Constraint> constraints_;
+  std::unique_ptr<SymmetryConstraints> symmetry_;
+  bool deferSymmetry_ = false;
   std::unique_ptr<SurfaceLoadAssembler> surfaceLoads_;
   std::unique_ptr<NodalAssembler> nodal_;  // springs and point loads
   std::unique_ptr<MatrixAssembler> assembler_;

@@ -17,6 +17,7 @@ struct SolidModel {
   std::shared_ptr<const Mesh> mesh;
   std::map<std::string, std::shared_ptr<const Material>> materials;  // by block name
   std::vector<DirichletCondition> dirichlet;
+  std::vector<SymmetryCondition> symmetries;
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
   std::vector<CentrifugalLoad> centrifugalLoads;

@@ -1,0 +1,88 @@
+#pragma once
+// Symmetry (roller) conditions n . u = 0 on planes that are not normal to an axis, imposed
+// exactly by eliminating one component per node (two where a node lies on two planes in 3D):
+// u = T v, with v the node's other components and u_k = sum_j c_kj u_j for each dependent k.
+//
+// The system solved is T^T K T v = -T^T R, which stays symmetric when K is: reduce() combines
+// the dependent rows and columns of an assembled tangent into their partners' and leaves a unit
+// row and column in their place (zero residual there, like a Dirichlet dof), and project()
+// writes the dependent components back from the others. A Newton increment is completed by
+// project() after each linear solve (NonlinearSystem::completeIncrement): the constraint is
+// linear, so every iterate then satisfies it exactly and the Newton step is the constrained
+// problem's own.
+//
+// Planes normal to an axis are Dirichlet conditions (u_axis = 0): resolveSymmetryConditions
+// turns them into those, so the contact code drops a friction direction they fix as it does for
+// any Dirichlet condition.
+#include "base/LinearAlgebra.hpp"
+#include "core/problem/SolidModel.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace contactlab {
+
+class DofMap;
+
+// The plane of a symmetry condition: its unit normal, checked (or fitted, when the given normal
+// is zero) against the group's nodes, which must lie on one plane (within 1e-6 of the group's
+// extent). Throws InputError with a sentence otherwise.
+std::array<double, 3> symmetryPlaneNormal(const Mesh& mesh, const SymmetryCondition& condition);
+
+// Resolves every model.symmetries' normal; those normal to an axis become Dirichlet conditions
+// (value 0, constant) and leave the list. Throws InputError for a plane that is not one.
+void resolveSymmetryConditions(SolidModel& model);
+
+class SymmetryConstraints {
+ public:
+  // `model`: symmetries resolved (inclined only). A component a Dirichlet condition fixes is
+  // never dependent (its value enters project() as given); where the planes leave no free
+  // component to eliminate, the Dirichlet conditions hold the node. Every rank knows every
+  // node's dependents: a row may have columns of another rank's symmetry nodes.
+  SymmetryConstraints(const SolidModel& model, const DofMap& dofs);
+
+  // No rank has an inclined symmetry node (collective value).
+  bool empty() const { return !anywhere_; }
+  // Nodes (mesh indices) that carry an inclined symmetry condition (every rank's).
+  const std::vector<std::int64_t>& nodes() const { return nodes_; }
+
+  // u_k = sum_j c_kj u_j on this rank's dependent components. `owned`: an owned vector whose
+  // first entries are the solid's owned dofs (the solid's or the contact problem's).
+  void project(double* owned) const;
+  // T^T K T on a fill-complete matrix whose first rows are the solid's owned dofs and whose
+  // displacement columns carry the solid's global dof ids, T^T R on a residual shaped alike
+  // (either may be null). Collective when a matrix is given.
+  void reduce(Matrix* tangent, Vector* residual) const;
+  // The reaction of each condition, as a Dirichlet condition's: R summed over its nodes'
+  // components, from a residual before reduce() (owned entries; collective). A node on several
+  // planes splits its force along their normals (at equilibrium it lies in their span).
+  std::vector<std::array<double, 3>> reactions(const Vector& residual) const;
+
+ private:
+  struct Term {
+    LO lid;           // owned LID of an independent component (-1: another rank's node)
+    GO gid;           // its global dof id
+    double c;         // u_k += c u_j
+    bool prescribed;  // fixed by a Dirichlet condition: in project() only
+  };
+  struct Dependent {
+    LO lid;  // owned LID (-1: another rank's node)
+    GO gid;
+    std::vector<Term> terms;
+  };
+  struct OwnedNode {
+    LO firstLid;                                                // LID of component 0
+    std::vector<std::pair<int, std::array<double, 3>>> planes;  // (condition, unit normal)
+  };
+  int dim_;
+  std::vector<Dependent> all_;
+  std::vector<OwnedNode> ownedNodes_;
+  std::vector<std::int64_t> nodes_;
+  std::size_t numConditions_ = 0;
+  int anywhere_ = 0;
+  Teuchos::RCP<const Comm> comm_;
+};
+
+}  // namespace contactlab
