@@ -73,11 +73,16 @@ ParameterList namedSection(
 // The time function of a prescribed value (Dirichlet, load, obstacle): Function, documented by
 // `functionDoc`, then Start Time and Stop Time of its ramp.
 void setTimeFunction(ParameterList& p, const std::string& functionDoc) {
-  p.set("Function", "ramp", functionDoc, choices({"ramp", "constant"}));
+  p.set("Function", "ramp", functionDoc, choices({"ramp", "constant", "table"}));
   p.set("Start Time", 0.0, "ramp: 0 until this time, then linear to 1 at Stop Time");
   p.set("Stop Time", 0.0,
         "ramp: the time it reaches 1 and holds from then on, in (Start Time, End Time]; 0: "
         "the load's End Time (e.g. press over [0, 0.5], then shift with Start Time 0.5)");
+  p.set("Times", Teuchos::Array<double>(),
+        "table: times t_i, strictly increasing (e.g. [0, 1, 2])");
+  p.set("Factors", Teuchos::Array<double>(),
+        "table: the factor at each of Times (e.g. [0, 1, 0]: up, then back down), linear "
+        "between them, the first before and the last after them");
 }
 
 ParameterList dirichletItem() {
@@ -91,7 +96,7 @@ ParameterList dirichletItem() {
   setTimeFunction(p,
                   "Time scaling: 'ramp' = Value * (t - Start Time) / (Stop Time - Start Time) "
                   "between Start Time and Stop Time (0 before, Value after), 'constant' = Value "
-                  "at every step");
+                  "at every step, 'table' = Value * the factor interpolated in Times, Factors");
   return p;
 }
 
@@ -175,7 +180,7 @@ ParameterList loadItem() {
         "point-load: 'total' (Vector is the group's total force, shared equally by its nodes) "
         "or 'per-node' (every node gets Vector)",
         choices({"total", "per-node"}));
-  setTimeFunction(p, "Time scaling: 'ramp' or 'constant' (see Dirichlet)");
+  setTimeFunction(p, "Time scaling: 'ramp', 'constant' or 'table' (see Dirichlet)");
   return p;
 }
 
@@ -205,7 +210,7 @@ ParameterList obstacleItem() {
         choices({"outside", "inside"}));
   p.set("Displacement", Teuchos::Array<double>(3, 0.0),
         "Rigid translation of the obstacle at the end of the load");
-  setTimeFunction(p, "Time scaling of Displacement: 'ramp' or 'constant'");
+  setTimeFunction(p, "Time scaling of Displacement: 'ramp', 'constant' or 'table'");
   return p;
 }
 

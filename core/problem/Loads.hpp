@@ -11,14 +11,26 @@ namespace contactlab {
 
 // Scale factor of a load at time t: `ramp` is 0 until startTime, then grows linearly to 1 at
 // t = endTime and holds 1 after it (sequenced loading: press first, then shift); `constant` is
-// 1 at every time.
+// 1 at every time; `table` interpolates (times[i], factors[i]) linearly and holds the first and
+// last factors outside them (a load that rises and falls: an expansion pressure, then its
+// release).
 struct LoadFunction {
-  enum class Kind { Ramp, Constant };
+  enum class Kind { Ramp, Constant, Table };
   Kind kind = Kind::Ramp;
   double endTime = 1.0;
   double startTime = 0.0;
+  std::vector<double> times, factors;  // table: strictly increasing times, same sizes
   double operator()(double t) const {
     if (kind == Kind::Constant) return 1.0;
+    if (kind == Kind::Table) {
+      if (t <= times.front()) return factors.front();
+      if (t >= times.back()) return factors.back();
+      std::size_t i = 1;
+      while (times[i] < t)
+        ++i;
+      const double w = (t - times[i - 1]) / (times[i] - times[i - 1]);
+      return (1 - w) * factors[i - 1] + w * factors[i];
+    }
     if (t <= startTime) return 0.0;
     return t >= endTime ? 1.0 : (t - startTime) / (endTime - startTime);
   }

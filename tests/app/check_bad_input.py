@@ -170,6 +170,17 @@ cases = [
      ["Linear Solver/belos", "Method 'cg'", "gmres", "load 'p'"]),
     ("2D: a z displacement", scene_with("Components: xy", "Components: z"), [],
      ["Dirichlet/fix/Components", "'z'", "2D"]),
+    ("a table function with unequal lists",
+     GOOD.replace("Value: 1.0}", "Value: 1.0, Function: table, Times: [0.0, 1.0], "
+                  "Factors: [0.0, 1.0, 0.0]}"), [],
+     ["Loads/p/Function table", "same length"]),
+    ("a table function whose times go back",
+     GOOD.replace("Value: 1.0}", "Value: 1.0, Function: table, Times: [0.0, 1.0, 0.5], "
+                  "Factors: [0.0, 1.0, 0.0]}"), [],
+     ["Loads/p/Times", "strictly increasing", "entry 3"]),
+    ("table times without a table",
+     GOOD.replace("Value: 1.0}", "Value: 1.0, Times: [0.0, 1.0], Factors: [0.0, 1.0]}"), [],
+     ["Loads/p/Times", "Function: table"]),
     ("symmetry on an unknown group",
      GOOD + "  Symmetry:\n    cut: {Group: leftt}\n", [],
      ["scene.yaml", "symmetry condition 'cut'", "'leftt'"]),
