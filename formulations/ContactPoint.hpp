@@ -54,6 +54,9 @@ struct ContactPoint {
   // Element dofs (GIDs), our column LIDs, owned row LIDs (-1) and positions in the surface state.
   std::vector<GO> dofs;
   std::vector<char> freeDofs;  // per displacement dof of `dofs`: not Dirichlet-constrained
+  // Orthonormal directions over the displacement dofs of `dofs` that inclined symmetry planes
+  // remove from the free ones (PrescribedSlip.hpp); empty without such a plane.
+  std::vector<std::vector<double>> removedDirections;
   std::vector<LO> cols, rows;
   std::vector<int> surfacePos;
   // Geometric linearization: the displacement dofs of the master nodes around the facet that

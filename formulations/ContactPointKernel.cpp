@@ -84,7 +84,7 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   law.evaluate(in, out);
   pt.prescribedSlip = 0;
   if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_) {
-    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, pt.freeDofs);
+    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, pt.freeDofs, pt.removedDirections);
     pt.prescribedSlip = prescribed.prescribed;
     dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
   }

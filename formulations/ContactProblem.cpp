@@ -39,8 +39,6 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
   std::vector<GO> ownedMultipliers;
   // The solid leaves its symmetry reduction to this problem, which reduces the monolithic system.
   solid_.deferSymmetryReduction();
-  std::vector<std::int64_t> inclinedSymmetry = solid_.symmetry().nodes();
-  std::sort(inclinedSymmetry.begin(), inclinedSymmetry.end());
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     const ContactZone& zone = zones_[z];
     if (!zone.law) throw InputError("Contact/" + zone.name + ": no formulation");
@@ -66,13 +64,6 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);
       const int nt = zone.friction > 0 && !frictionless ? dim_ - 1 : 0;
       const int multipliers = zone.law->pointUnknowns(nt, dim_);
-      // A friction multiplier along a direction the plane fixes would have no equation.
-      if (multipliers > zone.law->pointUnknowns(0, dim_) &&
-          std::binary_search(inclinedSymmetry.begin(), inclinedSymmetry.end(), node))
-        throw InputError("Contact/" + zone.name + ": slave node " + std::to_string(node + 1) +
-                         " is on an inclined symmetry plane and has friction unknowns, which "
-                         "that plane may leave without an equation; put the plane's slave "
-                         "nodes in the zone's No Friction Group, or use a penalty formulation");
       ContactPoint pt;
       pt.zone = static_cast<int>(z);
       pt.node = node;
@@ -121,7 +112,10 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
         for (int c : bc.components)
           constrainedSurfaceDofs_.insert(dofs.globalNode(node) * dim_ + c);
   kernel_ = std::make_unique<ContactPointKernel>(dim_, zones_, discretizations_, *state_);
-  kernel_->setSurfaceConstrained(!constrainedSurfaceDofs_.empty());
+  bool inclinedSurface = false;  // a surface node on an inclined symmetry plane
+  for (std::int64_t node : solid_.symmetry().nodes())
+    inclinedSurface = inclinedSurface || surfaceNodes.count(node) > 0;
+  kernel_->setSurfaceConstrained(!constrainedSurfaceDofs_.empty() || inclinedSurface);
   assembler_ = std::make_unique<ContactAssembler>(map_, ownedDisplacements_, *state_);
 }
 
@@ -412,6 +406,34 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
   return moved;
 }
 
+void ContactProblem::addRemovedDirections(const std::vector<std::array<double, 3>>& normals,
+                                          std::size_t first, ContactPoint& pt) const {
+  // The planes' normals on the node's free components, orthonormalized (Gram-Schmidt), as
+  // directions over the point's displacement dofs (the node's at `first`); a normal that the
+  // Dirichlet components and the earlier normals already span adds nothing.
+  std::vector<std::array<double, 3>> basis;
+  for (std::array<double, 3> n : normals) {
+    for (int c = 0; c < dim_; ++c)
+      if (!pt.freeDofs[first + c]) n[c] = 0;
+    for (const auto& b : basis) {
+      const double d = n[0] * b[0] + n[1] * b[1] + n[2] * b[2];
+      for (int c = 0; c < 3; ++c)
+        n[c] -= d * b[c];
+    }
+    const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (norm < 1e-8) continue;
+    for (double& v : n)
+      v /= norm;
+    basis.push_back(n);
+  }
+  for (const auto& b : basis) {
+    pt.removedDirections.emplace_back();  // sized when the point's dofs are complete
+    auto& direction = pt.removedDirections.back();
+    direction.assign(first, 0.0);
+    direction.insert(direction.end(), b.begin(), b.begin() + dim_);
+  }
+}
+
 void ContactProblem::layOutPointDofs() {
   // Element dofs of each point: slave, master nodes, multipliers; with `full` geometric terms
   // also the nodes its normal depends on, as columns.
@@ -420,16 +442,21 @@ void ContactProblem::layOutPointDofs() {
     pt.dofs.clear();
     pt.freeDofs.clear();
     pt.surfacePos.clear();
+    pt.removedDirections.clear();
     auto addNode = [&](std::int64_t node) {
+      const std::size_t first = pt.dofs.size();
       for (int c = 0; c < dim_; ++c) {
         pt.dofs.push_back(dofs.globalNode(node) * dim_ + c);
         pt.freeDofs.push_back(constrainedSurfaceDofs_.count(pt.dofs.back()) == 0);
         pt.surfacePos.push_back(state_->dofPosition(node, c));
       }
+      addRemovedDirections(solid_.symmetry().planeNormals(node), first, pt);
     };
     addNode(pt.node);
     for (std::int64_t m : pt.master)
       addNode(m);
+    for (auto& direction : pt.removedDirections)
+      direction.resize(pt.dofs.size(), 0.0);
     for (int k = 0; k < pt.unknowns; ++k) {
       pt.dofs.push_back(pt.multiplier + k);
       pt.surfacePos.push_back(state_->multiplierPosition(pt.multiplier + k));

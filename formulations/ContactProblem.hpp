@@ -105,6 +105,10 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
 
  private:
   void layOutPointDofs();
+  // Appends to pt.removedDirections the directions the inclined symmetry planes `normals` remove
+  // from the node whose dofs start at `first` in pt.dofs.
+  void addRemovedDirections(const std::vector<std::array<double, 3>>& normals, std::size_t first,
+                            ContactPoint& pt) const;
   // Whether the point carries a normal-field formulation's slave normal among its unknowns.
   bool hasNormalField(const ContactPoint& pt) const;
   // The points' results with the law's pressures; the pressure a user reads (recovered where

@@ -5,10 +5,12 @@
 namespace contactlab {
 
 PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
-                              const std::vector<char>& free) {
+                              const std::vector<char>& free,
+                              const std::vector<std::vector<double>>& removed) {
   PrescribedSlip s;
   if (nt == 0) return s;
-  // Gram matrices of the slip rows over the free dofs (M) and over all of them (scale).
+  // Gram matrices of the slip rows over the allowed motion (M = B P B^T, P the projector on the
+  // free dofs less the removed directions) and over all dofs (scale).
   double M[2][2] = {{0, 0}, {0, 0}}, scale = 0;
   for (int a = 0; a < nu; ++a)
     for (int k = 0; k < nt; ++k) {
@@ -18,6 +20,15 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
       for (int j = 0; j < nt; ++j)
         M[k][j] += bk * B[(1 + j) * nu + a];
     }
+  for (const auto& c : removed) {
+    double bc[2] = {0, 0};
+    for (int k = 0; k < nt; ++k)
+      for (int a = 0; a < nu; ++a)
+        bc[k] += B[(1 + k) * nu + a] * c[a];
+    for (int k = 0; k < nt; ++k)
+      for (int j = 0; j < nt; ++j)
+        M[k][j] -= bc[k] * bc[j];
+  }
   // A direction is prescribed when its free part is round-off of the whole operator (the
   // eigenvalues below come with round-off of order 1e-16 scale; a free direction's part is at
   // least the square of a shape value, far above 1e-12 unless the point sits on a node).

@@ -1,11 +1,11 @@
 #pragma once
-// Friction at a contact point whose tangential motion the Dirichlet conditions already fix (a
-// slave node on a symmetry axis, a supported corner in contact). The slip operators B_k of such
-// a direction vanish on every free dof, so its friction multiplier appears in no free row: the
-// stick law's row (Lambda - Lambda^ = -r_t v) is zero there and the tangent is singular, with
-// every algorithm. code_aster asks the user to list such nodes (SANS_GROUP_NO_FR); here they
-// are found from B: the directions q of the tangent plane with B_q = sum_k q_k B_k = 0 on the
-// free dofs. Their multiplier component q . Lambda is dropped (set to 0 by its own row): the
+// Friction at a contact point whose tangential motion the Dirichlet or symmetry conditions
+// already fix (a slave node on a symmetry axis or plane, a supported corner in contact). The slip
+// operators B_k of such a direction vanish on every free dof, so its friction multiplier appears in
+// no free row: the stick law's row (Lambda - Lambda^ = -r_t v) is zero there and the tangent is
+// singular, with every algorithm. code_aster asks the user to list such nodes (SANS_GROUP_NO_FR);
+// here they are found from B: the directions q of the tangent plane with B_q = sum_k q_k B_k = 0 on
+// the free dofs. Their multiplier component q . Lambda is dropped (set to 0 by its own row): the
 // force along q is the support's, and the friction law acts on the free directions. The
 // other rows are rotated with the same orthonormal basis (an invertible recombination of the
 // equations, so the free direction's law is unchanged).
@@ -24,9 +24,12 @@ struct PrescribedSlip {
 };
 
 // B: (1 + nt) x nu row-major operators (row 0 the gap, rows 1..nt the slips) on the element's
-// displacement dofs; free[a] whether dof a is free (not Dirichlet).
+// displacement dofs; free[a] whether dof a is free (not Dirichlet); `removed`: orthonormal
+// directions over the nu dofs, on free dofs only, that the free space also lacks (the normal of
+// an inclined symmetry plane at a node): the motion allowed is the free dofs less these.
 PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
-                              const std::vector<char>& free);
+                              const std::vector<char>& free,
+                              const std::vector<std::vector<double>>& removed = {});
 
 // Replaces the friction multipliers' rows of `out` (law variables 2 + nt .. 1 + 2 nt, after the
 // kinematic ones and p) as described above. Lambda: the multipliers at the point.

@@ -120,6 +120,17 @@ double estimateElements(const RingSectorParams& p) {
   return structured(p.elementType, double(p.radialDivisions) * p.circumferentialDivisions, 2);
 }
 
+double estimateElements(const TubeInTubesheetParams& p) {
+  const int nz = p.axialDivisions[0] + p.axialDivisions[1] + p.axialDivisions[2];
+  const int ntS = p.sheetCircumferentialDivisions > 0 ? p.sheetCircumferentialDivisions
+                                                      : p.circumferentialDivisions;
+  const int nzS = p.sheetAxialDivisions > 0 ? p.sheetAxialDivisions : nz;
+  return structured(p.elementType,
+                    double(p.tubeRadialDivisions) * p.circumferentialDivisions * nz +
+                        double(p.sheetRadialDivisions) * ntS * nzS,
+                    3);
+}
+
 double estimateElements(const BoxParams& p) {
   return structured(p.elementType, double(p.divisions[0]) * p.divisions[1] * p.divisions[2], 3);
 }

@@ -26,6 +26,7 @@ double estimateElements(const StackedBlocks2DParams& p);
 double estimateElements(const StackedBlocks3DParams& p);
 double estimateElements(const BladeRootParams& p);
 double estimateElements(const DieOnSlabParams& p);
+double estimateElements(const TubeInTubesheetParams& p);
 
 // Throws std::invalid_argument when estimate > limit, naming the generator and the key.
 void requireElementLimit(const std::string& generator, double estimate, int limit);

@@ -240,4 +240,41 @@ struct DieOnSlabParams {
 };
 Mesh generateDieOnSlab(const DieOnSlabParams& p);
 
+// A steam-generator tube in its tubesheet hole, a sector of Angle degrees about the z axis (the
+// tube's), two separately meshed bodies (disjoint nodes): the tube, inner radius Tube Outer
+// Diameter / 2 - Tube Wall to outer radius Tube Outer Diameter / 2, and the tubesheet around it,
+// from the hole's radius (the tube's outer radius + Clearance) to Sheet Outer Radius (the
+// ligament as an equivalent sleeve), both over z in [0, Thickness]. Structured hexes: Tube
+// Radial Divisions through the wall, Sheet Radial Divisions through the sleeve (sizes growing
+// outward by Sheet Radial Grading), Circumferential Divisions along the arc, and Axial Divisions
+// below, along and above the expansion zone [Expansion Start, Expansion End] (grid planes at its
+// ends); the tubesheet may have its own arc and axial divisions (Sheet Circumferential
+// Divisions, Sheet Axial Divisions, uniform along z). Types: hex8 hex20 hex27. Blocks "tube",
+// "tubesheet"; boundaries "tube-inner", "tube-inner-expanded" (its part in the expansion zone,
+// where the expansion pressure acts), "tube-outer", "hole" (the contact pair), "sheet-outer",
+// "tube-bottom", "tube-top", "sheet-bottom", "sheet-top" (z = 0, z = Thickness), "cut-start" (the
+// plane y = 0, both bodies) and "cut-end" (the plane at Angle, both bodies): the sector's symmetry
+// planes.
+struct TubeInTubesheetParams {
+  double tubeOuterDiameter = 19.05;
+  double tubeWall = 1.09;
+  double clearance = 0.1;
+  double sheetOuterRadius = 15.0;
+  double thickness = 20.0;
+  double expansionStart = 2.5;
+  double expansionEnd = 17.5;
+  double angle = 10.0;  // degrees
+  int tubeRadialDivisions = 2;
+  int sheetRadialDivisions = 6;
+  double sheetRadialGrading = 4.0;
+  int circumferentialDivisions = 2;
+  std::array<int, 3> axialDivisions{2, 12, 2};  // below, along, above the expansion zone
+  // The tubesheet's own divisions along the arc and along z (uniform); 0: the tube's. Meshes
+  // that do not match keep slave nodes off the master's nodes and edges.
+  int sheetCircumferentialDivisions = 3;
+  int sheetAxialDivisions = 11;
+  std::string elementType = "hex8";
+};
+Mesh generateTubeInTubesheet(const TubeInTubesheetParams& p);
+
 }  // namespace contactlab

@@ -217,6 +217,38 @@ RCP<const ParameterList> stacked3DParameters() {
   return p;
 }
 
+RCP<const ParameterList> tubeInTubesheetParameters() {
+  auto p = Teuchos::rcp(new ParameterList("tube-in-tubesheet"));
+  TubeInTubesheetParams d;
+  p->set("Tube Outer Diameter", d.tubeOuterDiameter, "The tube's outer diameter (> 0)");
+  p->set("Tube Wall", d.tubeWall, "The tube's wall thickness (> 0, < its outer radius)");
+  p->set("Clearance", d.clearance,
+         "Radial gap between the tube and its hole before expansion (>= 0)");
+  p->set("Sheet Outer Radius", d.sheetOuterRadius,
+         "Outer radius of the tubesheet sleeve around the hole (the ligament as an equivalent "
+         "cylinder; > the hole's radius)");
+  p->set("Thickness", d.thickness, "Axial length of tube and tubesheet, z in [0, Thickness]");
+  p->set("Expansion Start", d.expansionStart, "z where the expansion zone begins (>= 0)");
+  p->set("Expansion End", d.expansionEnd,
+         "z where the expansion zone ends (> Expansion Start, <= Thickness)");
+  p->set("Angle", d.angle, "Sector angle in degrees, in (0, 90]");
+  p->set("Tube Radial Divisions", d.tubeRadialDivisions, "Divisions through the tube's wall");
+  p->set("Sheet Radial Divisions", d.sheetRadialDivisions, "Divisions through the sleeve");
+  p->set("Sheet Radial Grading", d.sheetRadialGrading,
+         "Ratio of the sleeve's outermost element's radial size to its innermost's (> 0)");
+  p->set("Circumferential Divisions", d.circumferentialDivisions, "Divisions along the arc");
+  p->set("Axial Divisions",
+         arrayOf<int>({d.axialDivisions[0], d.axialDivisions[1], d.axialDivisions[2]}),
+         "Divisions below, along and above the expansion zone (0 where that part is empty)");
+  p->set("Sheet Circumferential Divisions", d.sheetCircumferentialDivisions,
+         "The tubesheet's divisions along the arc; 0: the tube's");
+  p->set("Sheet Axial Divisions", d.sheetAxialDivisions,
+         "The tubesheet's divisions along z, uniform; 0: the tube's");
+  p->set("Element", d.elementType, "Element type", oneOf({"hex8", "hex20", "hex27"}));
+  addElementLimit(*p);
+  return p;
+}
+
 RCP<const ParameterList> dieOnSlabParameters() {
   auto p = Teuchos::rcp(new ParameterList("die-on-slab"));
   DieOnSlabParams d;
@@ -476,6 +508,34 @@ void registerMeshSources() {
            g.elementType = p.get<std::string>("Element");
            return std::make_unique<Mesh>(
                generateStackedBlocks2D(withinLimit("stacked-blocks-2d", p, g)));
+         }});
+  r.add({"tube-in-tubesheet",
+         "A steam-generator tube in its tubesheet hole, a sector about the tube's axis z, two "
+         "separately meshed bodies of structured hexes. Blocks 'tube', 'tubesheet'; boundaries "
+         "'tube-inner', 'tube-inner-expanded' (its part in the expansion zone), 'tube-outer' "
+         "and 'hole' (the contact pair), 'sheet-outer', 'tube-bottom', 'tube-top', "
+         "'sheet-bottom', 'sheet-top' (z = 0, Thickness), 'cut-start' (the plane y = 0) and "
+         "'cut-end' (the plane at Angle), both bodies': the sector's symmetry planes.",
+         tubeInTubesheetParameters, [](const ParameterList& p, const std::string&) {
+           TubeInTubesheetParams g;
+           g.tubeOuterDiameter = p.get<double>("Tube Outer Diameter");
+           g.tubeWall = p.get<double>("Tube Wall");
+           g.clearance = p.get<double>("Clearance");
+           g.sheetOuterRadius = p.get<double>("Sheet Outer Radius");
+           g.thickness = p.get<double>("Thickness");
+           g.expansionStart = p.get<double>("Expansion Start");
+           g.expansionEnd = p.get<double>("Expansion End");
+           g.angle = p.get<double>("Angle");
+           g.tubeRadialDivisions = p.get<int>("Tube Radial Divisions");
+           g.sheetRadialDivisions = p.get<int>("Sheet Radial Divisions");
+           g.sheetRadialGrading = p.get<double>("Sheet Radial Grading");
+           g.circumferentialDivisions = p.get<int>("Circumferential Divisions");
+           g.axialDivisions = fixed<3, int>(p, "Axial Divisions");
+           g.sheetCircumferentialDivisions = p.get<int>("Sheet Circumferential Divisions");
+           g.sheetAxialDivisions = p.get<int>("Sheet Axial Divisions");
+           g.elementType = p.get<std::string>("Element");
+           return std::make_unique<Mesh>(
+               generateTubeInTubesheet(withinLimit("tube-in-tubesheet", p, g)));
          }});
   r.add({"stacked-blocks-3d",
          "Two separately meshed boxes stacked along z. Blocks 'lower', 'upper'; faces "

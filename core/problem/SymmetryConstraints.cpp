@@ -155,6 +155,9 @@ SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& 
     const bool owned = dofs.nodeOwner(node) == rank;
     const int overlap = dofs.overlapNodeIndex(node);
     nodes_.push_back(node);
+    normals_.emplace_back();
+    for (const auto& entry : list)
+      normals_.back().push_back(entry.second);
     if (owned) ownedNodes_.push_back({static_cast<LO>(overlap * dim_), list});
     // Reduced row echelon form of the planes' rows over the free components (full pivoting):
     // each pivot row r then reads u_k + sum_j a_rj u_j = 0 over the non-pivot components j.
@@ -205,6 +208,12 @@ SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& 
   }
   const int local = all_.empty() ? 0 : 1;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(anywhere_));
+}
+
+std::vector<std::array<double, 3>> SymmetryConstraints::planeNormals(std::int64_t node) const {
+  const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
+  if (it == nodes_.end() || *it != node) return {};
+  return normals_[static_cast<std::size_t>(it - nodes_.begin())];
 }
 
 void SymmetryConstraints::project(double* owned) const {

@@ -47,6 +47,8 @@ class SymmetryConstraints {
   bool empty() const { return !anywhere_; }
   // Nodes (mesh indices) that carry an inclined symmetry condition (every rank's).
   const std::vector<std::int64_t>& nodes() const { return nodes_; }
+  // The unit normals of the inclined planes through a mesh node (empty: none).
+  std::vector<std::array<double, 3>> planeNormals(std::int64_t node) const;
 
   // u_k = sum_j c_kj u_j on this rank's dependent components. `owned`: an owned vector whose
   // first entries are the solid's owned dofs (the solid's or the contact problem's).
@@ -79,7 +81,8 @@ class SymmetryConstraints {
   int dim_;
   std::vector<Dependent> all_;
   std::vector<OwnedNode> ownedNodes_;
-  std::vector<std::int64_t> nodes_;
+  std::vector<std::int64_t> nodes_;                          // sorted
+  std::vector<std::vector<std::array<double, 3>>> normals_;  // per nodes_ entry
   std::size_t numConditions_ = 0;
   int anywhere_ = 0;
   Teuchos::RCP<const Comm> comm_;

@@ -34,6 +34,22 @@ TEST(PrescribedSlip, ASymmetryPlaneFixesOneDirectionWhateverTheTangentBasis) {
   EXPECT_NEAR(s.basis[0][1] * fy1 + s.basis[1][1] * fy2, 0.0, 1e-14);  // prescribed column
 }
 
+TEST(PrescribedSlip, AnInclinedSymmetryPlaneFixesItsNormalDirection) {
+  // The plane through the z axis at 35 degrees (normal m = (-sin b, cos b, 0)) removes m from
+  // the free motion: the slip along m is prescribed, the one along the plane's in-plane
+  // tangent free. In (t1, t2) coordinates, m is (cos(b - a), sin(b - a)) rotated by 90 degrees.
+  const double a = 0.3, b = 35.0 * M_PI / 180.0;
+  const std::vector<double> m{-std::sin(b), std::cos(b), 0};
+  const PrescribedSlip s = prescribedSlip(pointOnAPlane(a), 2, 3, {1, 1, 1}, {m});
+  ASSERT_EQ(s.prescribed, 1);
+  const double m1 = m[0] * std::cos(a) + m[1] * std::sin(a);                   // m . t1
+  const double m2 = -m[0] * std::sin(a) + m[1] * std::cos(a);                  // m . t2
+  EXPECT_NEAR(std::abs(s.basis[0][1] * m1 + s.basis[1][1] * m2), 1.0, 1e-14);  // prescribed: m
+  EXPECT_NEAR(s.basis[0][0] * m1 + s.basis[1][0] * m2, 0.0, 1e-14);
+  // A plane whose normal is the contact normal (z) removes no tangential motion.
+  EXPECT_EQ(prescribedSlip(pointOnAPlane(a), 2, 3, {1, 1, 1}, {{0, 0, 1}}).prescribed, 0);
+}
+
 TEST(PrescribedSlip, TwoDimensionsOnASymmetryAxis) {
   // 2D: (gap, slip) = (y, x) on one node; x fixed.
   EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {0, 1}).prescribed, 1);
