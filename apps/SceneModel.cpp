@@ -319,6 +319,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       comm);
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
+  sm.model.axisymmetric = p.sublist("Geometry").get<std::string>("Type") == "axisymmetric";
   const int dim = mesh->dim;
 
   // Materials, one per block.

@@ -239,6 +239,19 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   return p;
 }
 
+ParameterList geometrySection() {
+  ParameterList p("Geometry");
+  p.set("Type", "plane-strain",
+        "What a 2D mesh stands for: 'plane-strain' (a slice of unit thickness, out-of-plane "
+        "strains zero; ignored in 3D) or 'axisymmetric' (the solid of revolution about the y "
+        "axis: x = r >= 0 the radius, y the axial coordinate, as Abaqus CAX and code_aster "
+        "AXIS; small-strain materials only; the zz stress is the hoop stress sigma_tt; every "
+        "force, reaction, spring and point load is per full 360 degree ring, so a point load "
+        "is a ring load; nodes on the axis need a Dirichlet condition on x; doc/scenes.md)",
+        choices({"plane-strain", "axisymmetric"}));
+  return p;
+}
+
 ParameterList outputSection(const ParameterList* user, const std::string& where) {
   ParameterList p("Output");
   p.set("Directory", "",
@@ -281,6 +294,7 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Description", "", "Free text, copied to summary.json");
   valid.set("Mesh", typedSection(meshSourceRegistry(), userSublist(&scene, "Mesh"), "rectangle",
                                  where, "Mesh"));
+  valid.set("Geometry", geometrySection());
   valid.set("Point Groups", namedSection(userSublist(&scene, "Point Groups"), "Point Groups", where,
                                          [](const ParameterList&, const std::string&) {
                                            return pointGroupItem();

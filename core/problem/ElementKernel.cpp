@@ -2,20 +2,25 @@
 
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/ReferenceElement.hpp"
+#include "core/problem/AxisymmetricKernel.hpp"
 #include "core/problem/SmallStrainKernel.hpp"
 #include "core/problem/TotalLagrangianKernel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace contactlab {
 
-ElementKernel::ElementKernel(ElementType type, int quadratureDegree)
-    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes) {
+ElementKernel::ElementKernel(ElementType type, int quadratureDegree, bool axisymmetric)
+    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes), axisymmetric_(axisymmetric) {
   if (dim_ != 2 && dim_ != 3)
     throw std::invalid_argument(std::string("a solid element kernel needs a 2D or 3D cell type, "
                                             "got ") +
+                                info(type).name);
+  if (axisymmetric && dim_ != 2)
+    throw std::invalid_argument(std::string("an axisymmetric kernel needs a 2D cell type, got ") +
                                 info(type).name);
   rule_ = &quadratureRule(
       type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type) : quadratureDegree);
@@ -38,8 +43,13 @@ void ElementKernel::initializeState(const Material& material, double* state) con
 }
 
 double ElementKernel::gradients(int q, const double* x, double* dNdx) const {
-  return rule_->weights[q] *
-         physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+  const double w = rule_->weights[q] *
+                   physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+  if (!axisymmetric_) return w;
+  double r = 0.0;  // the quadrature point's radius
+  for (int a = 0; a < numNodes_; ++a)
+    r += N_[q * numNodes_ + a] * x[3 * a];
+  return 2.0 * M_PI * r * w;
 }
 
 double ElementKernel::measure(int q, const double* x) const {
@@ -115,7 +125,12 @@ void ElementKernel::bodyForce(const double* x,
 }
 
 std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
-                                                 int quadratureDegree) {
+                                                 int quadratureDegree, bool axisymmetric) {
+  if (axisymmetric) {
+    if (kinematics == Kinematics::FiniteStrain)
+      throw std::invalid_argument("axisymmetric models take small-strain materials only");
+    return std::make_unique<AxisymmetricKernel>(type, quadratureDegree);
+  }
   if (kinematics == Kinematics::FiniteStrain)
     return std::make_unique<TotalLagrangianKernel>(type, quadratureDegree);
   return std::make_unique<SmallStrainKernel>(type, quadratureDegree);

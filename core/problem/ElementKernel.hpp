@@ -1,6 +1,7 @@
 #pragma once
 // A solid element kernel: internal force f = dW/du and tangent K = df/du of one 2D (plane
-// strain, per unit thickness) or 3D cell, for one kinematics. The small-strain kernel takes
+// strain, per unit thickness; or axisymmetric, per full 360 degree ring) or 3D cell, for one
+// kinematics. The small-strain kernel takes
 // the linearized strain to the material; the total-Lagrangian kernel the deformation gradient.
 // makeElementKernel picks one from the material's kinematics(), so blocks of both kinds live in
 // one model and the next kernel is a new class.
@@ -70,14 +71,17 @@ class ElementKernel {
 
  protected:
   // quadratureDegree < 0 selects stiffnessQuadratureDegree(type). Throws std::invalid_argument
-  // for types that are not 2D or 3D cells.
-  ElementKernel(ElementType type, int quadratureDegree);
+  // for types that are not 2D or 3D cells, or for axisymmetric 3D cells. An axisymmetric
+  // kernel's measures (gradients(), hence volume, body forces, stresses' averages) carry the
+  // ring's 2 pi r: x is the radius, y the axis.
+  ElementKernel(ElementType type, int quadratureDegree, bool axisymmetric = false);
   // The kernel's one pass over the quadrature points: each output that is not nullptr is
   // filled (residual, tangent, pointStress, averageStress as in compute() and stresses()).
   virtual void evaluate(const double* x, const double* u, const Material& material,
                         const double* stateOld, double* stateNew, double* residual, double* tangent,
                         double* pointStress, double* averageStress) const = 0;
-  // Reference gradients at quadrature point q; returns det J times the weight.
+  // Reference gradients at quadrature point q; returns det J times the weight (times 2 pi r_q
+  // in axisymmetry).
   double gradients(int q, const double* x, double* dNdx) const;
   double measure(int q, const double* x) const;
   // Throws std::invalid_argument when the material is not of this kernel's kinematics or has
@@ -106,13 +110,16 @@ class ElementKernel {
   int dim_;
   int numNodes_;
   int numPoints_;
+  bool axisymmetric_;
   const QuadratureRule* rule_;
   std::vector<double> N_;      // N_[q * numNodes + a]
   std::vector<double> dNdxi_;  // dNdxi_[(q * numNodes + a) * dim + j]
 };
 
-// The kernel of `type` for materials of `kinematics`.
+// The kernel of `type` for materials of `kinematics`; `axisymmetric` (2D small strain only,
+// else std::invalid_argument) the ring kernel of AxisymmetricKernel.hpp.
 std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
-                                                 int quadratureDegree = -1);
+                                                 int quadratureDegree = -1,
+                                                 bool axisymmetric = false);
 
 }  // namespace contactlab
