@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""Axisymmetric verification (Geometry/Type: axisymmetric; x = r, y = z, per full ring).
+
+usage: check_axisymmetric.py CONTACTLAB SCENE OUTDIR CASE [options] [--set key=value ...]
+CASE:
+  lame        scenes/axisymmetric-thick-cylinder.yaml (a <= r <= b, internal pressure p, plane
+              strain) at the radial divisions --divisions, against Lame's solution (Timoshenko &
+              Goodier, Theory of Elasticity, 3rd ed. 1970, section 28): A = p a^2/(b^2 - a^2),
+              B = p a^2 b^2/(b^2 - a^2), sigma_rr = A - B/r^2, sigma_tt = A + B/r^2,
+              sigma_zz = 2 nu A, u_r = (1 + nu)/E ((1 - 2 nu) A r + B/r). Errors: the largest
+              nodal |u_r - u| / u(a), and the largest |cell average - exact average| / p of
+              sigma_rr (xx), sigma_tt (the hoop stress, output slot zz) and sigma_zz (yy), the
+              averages weighted by r as the kernel's (2 pi r dA). The finest mesh's errors must be
+              below --tol, and each error's mean rate from the coarsest to the finest mesh at
+              least --min-rate (unless the finest is below 1e-9, round-off).
+  shrink-fit  scenes/shrink-fit-axisymmetric.yaml: an inner ring a <= r <= b + delta pressed into
+              an outer ring b <= r <= c (same E, nu), frictionless contact on r = b, open ends
+              (sigma_zz = 0: each ring held axially on its bottom face only). The interface
+              pressure (Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed.,
+              section 3-16, eq. 3-57, equal materials):
+                  p = E delta / b * (c^2 - b^2)(b^2 - a^2) / (2 b^2 (c^2 - a^2))
+              (first order in delta / b; the model's contact radius is b). Checked: every
+              contact point's pressure in contact.csv and the recovered pressure within --tol of
+              p, the normal force on the interface 2 pi b L p within --tol (a full ring's force),
+              the hoop stress at the bore of the outer ring p (c^2 + b^2)/(c^2 - b^2) within
+              --tol p, and the axial reactions zero (open ends) within 1e-6 of 2 pi b L p.
+Prints "RESULT ..." lines for doc/verification.md."""
+import argparse, csv, json, math, os, sys
+
+import yaml
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contactlab_run import converged_run, read_grid, result_frames  # noqa: E402
+
+ap = argparse.ArgumentParser()
+ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
+ap.add_argument("case", choices=["lame", "shrink-fit"])
+ap.add_argument("--tol", type=float, default=1e-3)
+ap.add_argument("--element")
+ap.add_argument("--divisions", default="2,4,8,16")
+ap.add_argument("--min-rate", type=float, default=1.5)
+ap.add_argument("--set", action="append", default=[])
+args = ap.parse_args()
+scene = yaml.safe_load(open(args.scene))["contactlab"]
+assert scene["Geometry"]["Type"] == "axisymmetric"
+
+
+def cells(grid):
+    """Each cell's (corners [(r, z)...] counter-clockwise, stress Voigt 6); VTK lists a cell's
+    corners first, its mid-side nodes after (the cells here have straight sides)."""
+    stress = grid.GetCellData().GetArray("stress")
+    out = []
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        corners = 3 if cell.GetCellType() in (5, 22) else 4  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE
+        ids = cell.GetPointIds()
+        points = [grid.GetPoint(ids.GetId(k))[:2] for k in range(corners)]
+        out.append((points, [stress.GetComponent(c, k) for k in range(6)]))
+    return out
+
+
+def ring_average(f, corners, n=10):
+    """int f r dA / int r dA over the straight-sided cell (its triangles from the first corner,
+    each by Gauss-Legendre in the collapsed square): the kernel's 2 pi r weighted average."""
+    import numpy as np
+    x, w = np.polynomial.legendre.leggauss(n)
+    s, t = np.meshgrid((x + 1) / 2, (x + 1) / 2)
+    ws = np.outer(w, w) / 4
+    num = den = 0.0
+    for k in range(1, len(corners) - 1):
+        (x0, y0), (x1, y1), (x2, y2) = corners[0], corners[k], corners[k + 1]
+        jac = abs((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0))
+        # (s, t) in [0, 1]^2 -> the triangle: xi = s (1 - t), eta = t, dA = jac (1 - t) ds dt
+        xi, eta = s * (1 - t), t
+        r = x0 + (x1 - x0) * xi + (x2 - x0) * eta
+        weight = ws * jac * (1 - t) * r
+        num += float(np.sum(weight * f(r)))
+        den += float(np.sum(weight))
+    return num / den
+
+
+def lame():
+    mesh = scene["Mesh"]["rectangle"]
+    material = scene["Materials"]["body"]["linear-elastic"]
+    a = float(mesh["Origin"][0]); b = a + float(mesh["Lx"])
+    E, nu = float(material["E"]), float(material["nu"])
+    p = float(scene["Loads"]["bore"]["Value"])
+    A, B = p * a * a / (b * b - a * a), p * a * a * b * b / (b * b - a * a)
+    u = lambda r: (1 + nu) / E * ((1 - 2 * nu) * A * r + B / r)
+    exact = {0: lambda r: A - B / r**2, 2: lambda r: A + B / r**2, 1: lambda r: 2 * nu * A + 0 * r}
+    names = {0: "sigma_rr", 2: "sigma_tt", 1: "sigma_zz"}
+    element = args.element or mesh["Element"]
+    rows = []
+    for n in [int(d) for d in args.divisions.split(",")]:
+        out = os.path.join(args.out, f"{element}-{n}")
+        sets = args.set + [f"Mesh/rectangle/nx={n}", f"Mesh/rectangle/Element={element}"]
+        summary = converged_run(args.exe, args.scene, out, sets)
+        grid = read_grid(result_frames(out)[-1][1])
+        disp = grid.GetPointData().GetArray("displacement")
+        eu = max(abs(disp.GetComponent(i, 0) - u(grid.GetPoint(i)[0]))
+                 for i in range(grid.GetNumberOfPoints())) / u(a)
+        es = {k: 0.0 for k in names}
+        for corners, s in cells(grid):
+            for k in names:
+                es[k] = max(es[k], abs(s[k] - ring_average(exact[k], corners)) / p)
+        rows.append((n, eu, es, summary["time"]["total"] if "time" in summary else float("nan")))
+        print(f"RESULT lame {element} nr={n}: max |u_r err|/u(a) = {eu:.3e}, " +
+              ", ".join(f"max |{names[k]} err|/p = {es[k]:.3e}" for k in names))
+    failures = []
+    n, eu, es, _ = rows[-1]
+    for label, e in [("u_r", eu)] + [(names[k], es[k]) for k in names]:
+        if not e < args.tol:
+            failures.append(f"{element} nr={n}: {label} error {e:.3e} >= {args.tol}")
+    # The rate over the whole sequence, not per halving: the coarsest meshes are pre-asymptotic.
+    (n1, eu1, es1, _), (n2, eu2, es2, _) = rows[0], rows[-1]
+    for label, e1, e2 in [("u_r", eu1, eu2)] + [(names[k], es1[k], es2[k]) for k in names]:
+        rate = math.log(e1 / max(e2, 1e-300)) / math.log(n2 / n1)
+        print(f"RESULT lame {element} rate {label} nr {n1}->{n2}: {rate:.2f}")
+        if e2 > 1e-9 and rate < args.min_rate:
+            failures.append(f"{element} {label} nr {n1}->{n2}: rate {rate:.2f} < {args.min_rate}")
+    return failures
+
+
+def shrink_fit():
+    mesh = scene["Mesh"]["stacked-blocks-2d"]
+    material = scene["Materials"]["inner"]["linear-elastic"]
+    assert scene["Materials"]["outer"]["linear-elastic"] == material, "equal materials"
+    E = float(material["E"])
+    a = float(mesh["Origin"][0]); L = float(mesh["Width"])
+    delta = -float(mesh["Gap"]); b = a + float(mesh["Lower Height"]) - delta
+    c = b + float(mesh["Upper Height"])
+    p = E * delta / b * (c * c - b * b) * (b * b - a * a) / (2 * b * b * (c * c - a * a))
+    force = 2 * math.pi * b * L * p
+    summary = converged_run(args.exe, args.scene, args.out, args.set)
+    failures = []
+    pressures = [float(r["pressure"]) for r in csv.DictReader(open(os.path.join(args.out, "contact.csv")))
+                 if r["status"] != "free"]
+    if not pressures:
+        return ["no contact point closed"]
+    worst = max(abs(q - p) for q in pressures) / p
+    print(f"RESULT shrink-fit reference p = {p:.6g}; contact points {len(pressures)}, pressure "
+          f"min {min(pressures):.6g} max {max(pressures):.6g}: max |p_i - p|/p = {worst:.3e}")
+    if not worst < args.tol:
+        failures.append(f"contact pressure error {worst:.3e} >= {args.tol}")
+    zone = next(iter(summary["contact"]["zones"].values())) if "zones" in summary.get("contact", {}) else None
+    normal = None
+    if zone is not None:
+        normal = zone.get("normal_force_magnitude")
+    if normal is None:
+        normal = summary["contact"]["normal_force"] if "contact" in summary else None
+    ef = abs(float(normal) - force) / force
+    print(f"RESULT shrink-fit normal force {float(normal):.6g} against 2 pi b L p = {force:.6g}: "
+          f"relative error {ef:.3e}")
+    if not ef < args.tol:
+        failures.append(f"normal force error {ef:.3e} >= {args.tol}")
+    grid = read_grid(result_frames(args.out)[-1][1])
+    hoop = (c * c + b * b) / (c * c - b * b) * p
+    # The outer ring's cells along its bore, against Lame's hoop stress averaged over each.
+    A, B = p * b * b / (c * c - b * b), p * b * b * c * c / (c * c - b * b)
+    eh, count = 0.0, 0
+    for corners, s in cells(grid):
+        if abs(min(r for r, z in corners) - b) < 1e-9 * b:
+            count += 1
+            eh = max(eh, abs(s[2] - ring_average(lambda r: A + B / r**2, corners)) / p)
+    if count == 0:
+        return failures + ["no cell of the outer ring at the bore"]
+    print(f"RESULT shrink-fit outer ring's hoop stress (bore value {hoop:.6g}) in its {count} bore "
+          f"cells: max |error| / p = {eh:.3e}")
+    if not eh < args.tol:
+        failures.append(f"hoop stress error {eh:.3e} >= {args.tol}")
+    for name, reaction in summary["reactions"].items():
+        if not abs(reaction[1]) < 1e-6 * force:
+            failures.append(f"axial reaction {name} = {reaction[1]} is not zero (open ends)")
+        print(f"RESULT shrink-fit reaction {name}: {reaction}")
+    return failures
+
+
+failures = lame() if args.case == "lame" else shrink_fit()
+if failures:
+    sys.exit("FAIL:\n  " + "\n  ".join(failures))
+print("ok")
