@@ -20,10 +20,11 @@ CASE:
               section 3-16, eq. 3-57, equal materials):
                   p = E delta / b * (c^2 - b^2)(b^2 - a^2) / (2 b^2 (c^2 - a^2))
               (first order in delta / b; the model's contact radius is b). Checked: every
-              contact point's pressure in contact.csv and the recovered pressure within --tol of
-              p, the normal force on the interface 2 pi b L p within --tol (a full ring's force),
-              the hoop stress at the bore of the outer ring p (c^2 + b^2)/(c^2 - b^2) within
-              --tol p, and the axial reactions zero (open ends) within 1e-6 of 2 pi b L p.
+              closed contact point's pressure in contact.csv within --tol of p (a pressure:
+              force per area of the ring), the interface's normal force against 2 pi b L p within
+              --force-tol (a full ring's force), the outer ring's cells along its bore against
+              Lame's hoop stress (p (c^2 + b^2)/(c^2 - b^2) at r = b) averaged over each cell
+              within --tol p, and the axial reactions zero (open ends) within 1e-6 of the force.
 Prints "RESULT ..." lines for doc/verification.md."""
 import argparse, csv, json, math, os, sys
 
@@ -36,6 +37,8 @@ ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
 ap.add_argument("case", choices=["lame", "shrink-fit"])
 ap.add_argument("--tol", type=float, default=1e-3)
+ap.add_argument("--force-tol", type=float, default=2e-3,
+                help="shrink-fit: the interface's normal force, relative")
 ap.add_argument("--element")
 ap.add_argument("--divisions", default="2,4,8,16")
 ap.add_argument("--min-rate", type=float, default=1.5)
@@ -123,36 +126,39 @@ def lame():
 
 def shrink_fit():
     mesh = scene["Mesh"]["stacked-blocks-2d"]
-    material = scene["Materials"]["inner"]["linear-elastic"]
-    assert scene["Materials"]["outer"]["linear-elastic"] == material, "equal materials"
+    material = scene["Materials"]["lower"]["linear-elastic"]
+    assert scene["Materials"]["upper"]["linear-elastic"] == material, "equal materials"
     E = float(material["E"])
     a = float(mesh["Origin"][0]); L = float(mesh["Width"])
     delta = -float(mesh["Gap"]); b = a + float(mesh["Lower Height"]) - delta
     c = b + float(mesh["Upper Height"])
     p = E * delta / b * (c * c - b * b) * (b * b - a * a) / (2 * b * b * (c * c - a * a))
     force = 2 * math.pi * b * L * p
+    # The same small-strain theory on the rings as meshed (the inner one's outer radius b + delta,
+    # nu no longer cancelling): how much of the error is the formula's first order in delta / b.
+    nu = float(material["nu"]); d = b + delta
+    exact = delta * E / (b * ((c * c + b * b) / (c * c - b * b) + nu) +
+                         d * ((d * d + a * a) / (d * d - a * a) - nu))
+    print(f"RESULT shrink-fit classical p = {p:.6g}; the meshed rings' small-strain p = {exact:.6g} "
+          f"({exact / p - 1:+.1e})")
     summary = converged_run(args.exe, args.scene, args.out, args.set)
     failures = []
+    # contact.csv's status: 0 free (ContactPointResult.hpp).
     pressures = [float(r["pressure"]) for r in csv.DictReader(open(os.path.join(args.out, "contact.csv")))
-                 if r["status"] != "free"]
+                 if r["status"] != "0"]
     if not pressures:
         return ["no contact point closed"]
     worst = max(abs(q - p) for q in pressures) / p
-    print(f"RESULT shrink-fit reference p = {p:.6g}; contact points {len(pressures)}, pressure "
-          f"min {min(pressures):.6g} max {max(pressures):.6g}: max |p_i - p|/p = {worst:.3e}")
+    print(f"RESULT shrink-fit reference p = {p:.6g}; {len(pressures)} closed points, pressure "
+          f"{min(pressures):.6g} to {max(pressures):.6g}: max |p_i - p| / p = {worst:.3e}")
     if not worst < args.tol:
         failures.append(f"contact pressure error {worst:.3e} >= {args.tol}")
-    zone = next(iter(summary["contact"]["zones"].values())) if "zones" in summary.get("contact", {}) else None
-    normal = None
-    if zone is not None:
-        normal = zone.get("normal_force_magnitude")
-    if normal is None:
-        normal = summary["contact"]["normal_force"] if "contact" in summary else None
-    ef = abs(float(normal) - force) / force
-    print(f"RESULT shrink-fit normal force {float(normal):.6g} against 2 pi b L p = {force:.6g}: "
+    normal = float(summary["contact"]["normal_force"])
+    ef = abs(normal - force) / force
+    print(f"RESULT shrink-fit normal force {normal:.6g} against 2 pi b L p = {force:.6g}: "
           f"relative error {ef:.3e}")
-    if not ef < args.tol:
-        failures.append(f"normal force error {ef:.3e} >= {args.tol}")
+    if not ef < args.force_tol:
+        failures.append(f"normal force error {ef:.3e} >= {args.force_tol}")
     grid = read_grid(result_frames(args.out)[-1][1])
     hoop = (c * c + b * b) / (c * c - b * b) * p
     # The outer ring's cells along its bore, against Lame's hoop stress averaged over each.
