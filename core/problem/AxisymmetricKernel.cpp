@@ -1,7 +1,5 @@
 #include "core/problem/AxisymmetricKernel.hpp"
 
-#include "core/problem/ElementUpdateError.hpp"
-
 namespace contactlab {
 namespace {
 
@@ -14,7 +12,7 @@ void AxisymmetricKernel::evaluate(const double* x, const double* u, const Materi
                                   const double* stateOld, double* stateNew, double* residual,
                                   double* tangent, double* pointStress,
                                   double* averageStress) const {
-  const int n = numNodes_, nd = 2 * n, ss = material.stateSize();
+  const int n = numNodes_, nd = 2 * n;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
   double dNdx[kMaxNodes * 2];
@@ -45,21 +43,8 @@ void AxisymmetricKernel::evaluate(const double* x, const double* u, const Materi
         e += B[v][k] * u[k];
       in.strain[kRows[v]] = e;
     }
-    in.stateOld = ss ? stateOld + q * ss : nullptr;
-    out.stateNew = ss ? stateNew + q * ss : nullptr;
-    out.stress.fill(0.0);
-    out.tangent.fill(0.0);
-    material.evaluate(in, out);
-    if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
-
-    if (pointStress)
-      for (int k = 0; k < 6; ++k)
-        pointStress[6 * q + k] = out.stress[k];
-    if (averageStress) {
-      for (int k = 0; k < 6; ++k)
-        averageStress[k] += w * out.stress[k];
-      volume += w;
-    }
+    evaluateSmallStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
+                             averageStress, volume);
     if (residual)
       for (int k = 0; k < nd; ++k)
         for (int v = 0; v < 4; ++v)

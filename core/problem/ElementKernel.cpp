@@ -3,6 +3,7 @@
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/ReferenceElement.hpp"
 #include "core/problem/AxisymmetricKernel.hpp"
+#include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/SmallStrainKernel.hpp"
 #include "core/problem/TotalLagrangianKernel.hpp"
 
@@ -83,6 +84,28 @@ void ElementKernel::beginEvaluation(const Material& material, const double* stat
   if (averageStress)
     for (int k = 0; k < 6; ++k)
       averageStress[k] = 0.0;
+}
+
+void ElementKernel::evaluateSmallStrainPoint(int q, double w, const Material& material,
+                                             const double* stateOld, double* stateNew,
+                                             MaterialInput& in, MaterialOutput& out,
+                                             double* pointStress, double* averageStress,
+                                             double& volume) const {
+  const int ss = material.stateSize();
+  in.stateOld = ss ? stateOld + q * ss : nullptr;
+  out.stateNew = ss ? stateNew + q * ss : nullptr;
+  out.stress.fill(0.0);
+  out.tangent.fill(0.0);
+  material.evaluate(in, out);
+  if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
+  if (pointStress)
+    for (int k = 0; k < 6; ++k)
+      pointStress[6 * q + k] = out.stress[k];
+  if (averageStress) {
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] += w * out.stress[k];
+    volume += w;
+  }
 }
 
 void ElementKernel::quadraturePoints(const double* x, double* points) const {

@@ -91,6 +91,13 @@ class ElementKernel {
   // quadrature points (residual, tangent, averageStress; each when not nullptr) set to zero.
   void beginEvaluation(const Material& material, const double* stateOld, double* stateNew,
                        double* residual, double* tangent, double* averageStress) const;
+  // The small-strain kernels' step at quadrature point q (measure w), once in.strain is set:
+  // the material evaluated with point q's state slices (ElementUpdateError when it fails), its
+  // stress recorded into pointStress and added, weighted, to averageStress and `volume` (each
+  // when not nullptr).
+  void evaluateSmallStrainPoint(int q, double w, const Material& material, const double* stateOld,
+                                double* stateNew, MaterialInput& in, MaterialOutput& out,
+                                double* pointStress, double* averageStress, double& volume) const;
   // Copies the strictly upper blocks K_ab (b > a, dim x dim each) of a numDofs()^2 row-major
   // tangent onto K_ba^T, adding to what is there: the kernels accumulate only the blocks
   // b >= a of a symmetric tangent.

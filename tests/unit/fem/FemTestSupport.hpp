@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 #include <string>
 #include <vector>
@@ -139,6 +140,48 @@ class UnsymmetricNonlinear : public IsotropicElastic {
  private:
   static constexpr double kQuad = 500.0, kSkew = 30.0;
 };
+
+// Checks every column of the kernel's tangent K at u against central differences of its
+// residual (step 1e-6, within 1e-6 of max |K|; gtest expectations labelled `label`); returns
+// whether K is unsymmetric at that tolerance.
+template <class Kernel, class Material>
+bool expectTangentMatchesDifferences(const Kernel& kernel, const std::vector<double>& x,
+                                     const std::vector<double>& u, const Material& material,
+                                     const double* stateOld, double* stateNew,
+                                     const std::vector<double>& K, const std::string& label) {
+  const int nd = static_cast<int>(u.size());
+  std::vector<double> fp(nd), fm(nd);
+  const double h = 1e-6, scale = maxAbs(K);
+  bool unsymmetric = false;
+  for (int k = 0; k < nd; ++k) {
+    auto up = u, um = u;
+    up[k] += h, um[k] -= h;
+    kernel.compute(x.data(), up.data(), material, stateOld, stateNew, fp.data(), nullptr);
+    kernel.compute(x.data(), um.data(), material, stateOld, stateNew, fm.data(), nullptr);
+    for (int i = 0; i < nd; ++i) {
+      EXPECT_NEAR(K[i * nd + k], (fp[i] - fm[i]) / (2 * h), 1e-6 * scale)
+          << label << " K(" << i << "," << k << ")";
+      unsymmetric |= std::abs(K[i * nd + k] - K[k * nd + i]) > 1e-6 * scale;
+    }
+  }
+  return unsymmetric;
+}
+
+// Expects the kernel's stress at every quadrature point, and its average, to be `expected`
+// (6 Voigt components) within 1e-12.
+template <class Kernel, class Material>
+void expectUniformStress(const Kernel& kernel, const std::vector<double>& x,
+                         const std::vector<double>& u, const Material& material,
+                         const double* expected, const std::string& label) {
+  std::vector<double> stress(6 * kernel.numQuadraturePoints());
+  double average[6];
+  kernel.stresses(x.data(), u.data(), material, nullptr, nullptr, stress.data(), average);
+  for (int q = 0; q < kernel.numQuadraturePoints(); ++q)
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(stress[6 * q + k], expected[k], 1e-12) << label << " q=" << q;
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(average[k], expected[k], 1e-12) << label;
+}
 
 // An element of `Kernel` on distortedNodes(t): x holds 3 coordinates per node, n nodes of d
 // displacement components each.
