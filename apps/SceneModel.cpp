@@ -382,6 +382,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     }
     if (type == "centrifugal") {
       sm.model.centrifugalLoads.push_back(centrifugalLoad(l, name, dim, endTime, where));
+      // A 2D model's z spin axis is, in axisymmetry, the model's own axis y.
+      if (sm.model.axisymmetric) sm.model.centrifugalLoads.back().axis = {0.0, 1.0, 0.0};
       continue;
     }
     if (type != "point-load" && l.get<std::string>("Distribution") != "total")

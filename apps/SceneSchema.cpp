@@ -141,9 +141,11 @@ ParameterList loadItem() {
         "centrifugal: spin rate omega in radians per unit time at the end of the load; the "
         "force, rho omega^2 r, is scaled by Function");
   p.set("Centre", Teuchos::Array<double>(3, 0.0),
-        "centrifugal: a point of the spin axis (2D: the centre of rotation in the plane)");
+        "centrifugal: a point of the spin axis (2D: the centre of rotation in the plane; "
+        "axisymmetric: its x must be 0)");
   p.set("Axis", Teuchos::Array<double>({0.0, 0.0, 1.0}),
-        "centrifugal: direction of the spin axis (3D; a 2D model spins about z)");
+        "centrifugal: direction of the spin axis (3D; a plane 2D model spins about z, an "
+        "axisymmetric one about its axis y)");
   p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
   p.set("Follower", "automatic",
         "pressure: 'true' makes it follow the deformation (p on the current facets, "

@@ -14,8 +14,8 @@ CentrifugalLoadKernel::CentrifugalLoadKernel(const CentrifugalLoad& load, int di
     throw std::invalid_argument("centrifugal load '" + load.name + "': the axis is zero");
   if (axisymmetric && (a[0] != 0 || a[2] != 0 || load.centre[0] != 0))
     throw std::invalid_argument("centrifugal load '" + load.name +
-                                "': an axisymmetric model spins about its axis, Axis [0, 1, 0] "
-                                "through a Centre with x = 0");
+                                "': an axisymmetric model spins about its own axis, the y axis "
+                                "(x = 0): give a Centre with x = 0");
   if (dim == 2 && !axisymmetric && (a[0] != 0 || a[1] != 0))
     throw std::invalid_argument("centrifugal load '" + load.name +
                                 "': a 2D model spins about the z axis only");

@@ -114,8 +114,8 @@ cases = [
     ("axisymmetric spin axis", AXI.replace(
         "    p: {Type: pressure, Group: top, Value: 1.0}\n",
         "    p: {Type: pressure, Group: top, Value: 1.0}\n"
-        "    spin: {Type: centrifugal, Density: 1, Angular Velocity: 1}\n"),
-     [], ["spin", "Axis [0, 1, 0]"]),
+        "    spin: {Type: centrifugal, Density: 1, Angular Velocity: 1, Centre: [1, 0]}\n"),
+     [], ["spin", "spins about its own axis", "Centre with x = 0"]),
     ("missing boundary group", scene_with("Group: bottom", "Group: bottm"), [],
      ["scene.yaml", "'bottm'", "fix", "bottom, right, top, left"]),
     ("wrong value type", scene_with("nx: 4", "nx: four"), [], ["Mesh/rectangle/nx", "integer"]),

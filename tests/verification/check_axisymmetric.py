@@ -13,6 +13,14 @@ CASE:
               averages weighted by r as the kernel's (2 pi r dA). The finest mesh's errors must be
               below --tol, and each error's mean rate from the coarsest to the finest mesh at
               least --min-rate (unless the finest is below 1e-9, round-off).
+  spin        the same cylinder without pressure, spinning about its axis (a centrifugal load
+              rho omega^2 r, here rho omega^2 = 10, on --divisions' last mesh), against the
+              rotating long cylinder in plane strain (Timoshenko & Goodier, section 32, with
+              k = (3 - 2 nu) rho omega^2 / (8 (1 - nu))): sigma_rr = k (b^2 + a^2 - a^2 b^2/r^2 - r^2),
+              sigma_tt = k (b^2 + a^2 + a^2 b^2/r^2 - (1 + 2 nu) r^2 / (3 - 2 nu)),
+              sigma_zz = nu (sigma_rr + sigma_tt), u_r = r (sigma_tt - nu (sigma_rr + sigma_zz))/E:
+              the largest nodal u_r error / u(a) and cell-average stress errors / (rho omega^2 b^2)
+              below --tol.
   shrink-fit  scenes/shrink-fit-axisymmetric.yaml: an inner ring a <= r <= b + delta pressed into
               an outer ring b <= r <= c (same E, nu), frictionless contact on r = b, open ends
               (sigma_zz = 0: each ring held axially on its bottom face only). The interface
@@ -35,7 +43,7 @@ from contactlab_run import converged_run, read_grid, result_frames  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
-ap.add_argument("case", choices=["lame", "shrink-fit"])
+ap.add_argument("case", choices=["lame", "spin", "shrink-fit"])
 ap.add_argument("--tol", type=float, default=1e-3)
 ap.add_argument("--force-tol", type=float, default=2e-3,
                 help="shrink-fit: the interface's normal force, relative")
@@ -124,6 +132,36 @@ def lame():
     return failures
 
 
+def spin():
+    mesh = scene["Mesh"]["rectangle"]
+    material = scene["Materials"]["body"]["linear-elastic"]
+    a = float(mesh["Origin"][0]); b = a + float(mesh["Lx"])
+    E, nu = float(material["E"]), float(material["nu"])
+    rho, omega = 1e-3, 100.0
+    k = (3 - 2 * nu) * rho * omega**2 / (8 * (1 - nu))
+    srr = lambda r: k * (b * b + a * a - a * a * b * b / r**2 - r * r)
+    stt = lambda r: k * (b * b + a * a + a * a * b * b / r**2 - (1 + 2 * nu) / (3 - 2 * nu) * r * r)
+    szz = lambda r: nu * (srr(r) + stt(r))
+    u = lambda r: r * (stt(r) - nu * (srr(r) + szz(r))) / E
+    n = int(args.divisions.split(",")[-1])
+    element = args.element or mesh["Element"]
+    sets = args.set + ["Loads/bore/Value=0", "Loads/spin/Type=centrifugal",
+                       f"Loads/spin/Density={rho!r}", f"Loads/spin/Angular Velocity={omega!r}",
+                       f"Mesh/rectangle/nx={n}", f"Mesh/rectangle/Element={element}"]
+    converged_run(args.exe, args.scene, args.out, sets)
+    grid = read_grid(result_frames(args.out)[-1][1])
+    disp = grid.GetPointData().GetArray("displacement")
+    eu = max(abs(disp.GetComponent(i, 0) - u(grid.GetPoint(i)[0]))
+             for i in range(grid.GetNumberOfPoints())) / u(a)
+    scale = rho * omega**2 * b * b
+    es = max(abs(s[k] - ring_average(f, corners)) / scale for corners, s in cells(grid)
+             for k, f in [(0, srr), (2, stt), (1, szz)])
+    print(f"RESULT spin {element} nr={n}: max |u_r err|/u(a) = {eu:.3e}, max stress err / "
+          f"(rho omega^2 b^2) = {es:.3e}")
+    return [f"{label} error {e:.3e} >= {args.tol}" for label, e in [("u_r", eu), ("stress", es)]
+            if not e < args.tol]
+
+
 def shrink_fit():
     mesh = scene["Mesh"]["stacked-blocks-2d"]
     material = scene["Materials"]["lower"]["linear-elastic"]
@@ -181,7 +219,7 @@ def shrink_fit():
     return failures
 
 
-failures = lame() if args.case == "lame" else shrink_fit()
+failures = {"lame": lame, "spin": spin, "shrink-fit": shrink_fit}[args.case]()
 if failures:
     sys.exit("FAIL:\n  " + "\n  ".join(failures))
 print("ok")
