@@ -404,7 +404,9 @@ std::string sceneReference() {
   std::ostringstream out;
   out << "## Sections\n\n";
   ParameterList dirichlet = dirichletItem(), load = loadItem(), probe = probeItem();
-  out << "### Point Groups/<name>\n\n";
+  out << "### Geometry\n\n";
+  describeList(out, geometrySection(), "");
+  out << "\n### Point Groups/<name>\n\n";
   describeList(out, pointGroupItem(), "");
   out << "\n### Dirichlet/<name>\n\n";
   describeList(out, dirichlet, "");
