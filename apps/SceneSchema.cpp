@@ -247,7 +247,8 @@ ParameterList geometrySection() {
         "What a 2D mesh stands for: 'plane-strain' (a slice of unit thickness, out-of-plane "
         "strains zero; ignored in 3D) or 'axisymmetric' (the solid of revolution about the y "
         "axis: x = r >= 0 the radius, y the axial coordinate, as Abaqus CAX and code_aster "
-        "AXIS; small-strain materials only; the zz stress is the hoop stress sigma_tt; every "
+        "AXIS; small- and finite-strain materials, pressures dead (Follower: false); the zz "
+        "stress is the hoop stress sigma_tt; every "
         "force, reaction, spring and point load is per full 360 degree ring, so a point load "
         "is a ring load; nodes on the axis need a Dirichlet condition on x; doc/scenes.md)",
         choices({"plane-strain", "axisymmetric"}));

@@ -45,28 +45,8 @@ void AxisymmetricKernel::evaluate(const double* x, const double* u, const Materi
     }
     evaluateSmallStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
                              averageStress, volume);
-    if (residual)
-      for (int k = 0; k < nd; ++k)
-        for (int v = 0; v < 4; ++v)
-          residual[k] += w * B[v][k] * out.stress[kRows[v]];
-    if (tangent) {
-      // w C B, then K += B^T (w C B): the material's tangent as given, unsymmetric or not.
-      double CB[4][kMaxNodes * 2];
-      for (int v = 0; v < 4; ++v)
-        for (int k = 0; k < nd; ++k) {
-          double s = 0.0;
-          for (int m = 0; m < 4; ++m)
-            s += out.tangent[kRows[v] * 6 + kRows[m]] * B[m][k];
-          CB[v][k] = w * s;
-        }
-      for (int i = 0; i < nd; ++i)
-        for (int v = 0; v < 4; ++v) {
-          if (B[v][i] == 0.0) continue;
-          double* row = &tangent[i * nd];
-          for (int k = 0; k < nd; ++k)
-            row[k] += B[v][i] * CB[v][k];
-        }
-    }
+    addOperatorTerms(4, kRows, B, nd, w, out.stress.data(), out.tangent.data(), 6, residual,
+                     tangent);
   }
   if (averageStress)
     for (int k = 0; k < 6; ++k)

@@ -70,6 +70,8 @@ class ElementKernel {
                  double* f) const;
 
  protected:
+  static constexpr int kMaxNodes = 27;
+
   // quadratureDegree < 0 selects stiffnessQuadratureDegree(type). Throws std::invalid_argument
   // for types that are not 2D or 3D cells, or for axisymmetric 3D cells. An axisymmetric
   // kernel's measures (gradients(), hence volume, body forces, stresses' averages) carry the
@@ -98,6 +100,19 @@ class ElementKernel {
   void evaluateSmallStrainPoint(int q, double w, const Material& material, const double* stateOld,
                                 double* stateNew, MaterialInput& in, MaterialOutput& out,
                                 double* pointStress, double* averageStress, double& volume) const;
+  // The finite-strain kernels' step at quadrature point q, once in.F is set: det F > 0 checked
+  // (else ElementUpdateError "inverted-element"), the material evaluated with point q's state
+  // slices, and the Cauchy stress P F^T / det F recorded as in evaluateSmallStrainPoint.
+  void evaluateFiniteStrainPoint(int q, double w, const Material& material, const double* stateOld,
+                                 double* stateNew, MaterialInput& in, MaterialOutput& out,
+                                 double* pointStress, double* averageStress, double& volume) const;
+  // The ring kernels' accumulation at one quadrature point of weight w, for an operator B of
+  // `rows` rows (B[r][k]: d(measure slots[r]) / du_k over nd dofs) and the material's response
+  // in those slots: residual += w B^T s (s[slots[r]]) and, unless tangent is nullptr,
+  // tangent += w B^T C B (C[slots[r] * ldC + slots[m]], as given: unsymmetric or not).
+  static void addOperatorTerms(int rows, const int* slots, const double (*B)[kMaxNodes * 2], int nd,
+                               double w, const double* s, const double* C, int ldC,
+                               double* residual, double* tangent);
   // Copies the strictly upper blocks K_ab (b > a, dim x dim each) of a numDofs()^2 row-major
   // tangent onto K_ba^T, adding to what is there: the kernels accumulate only the blocks
   // b >= a of a symmetric tangent.
@@ -111,7 +126,6 @@ class ElementKernel {
             tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
   }
 
-  static constexpr int kMaxNodes = 27;
 
   ElementType type_;
   int dim_;
@@ -123,8 +137,9 @@ class ElementKernel {
   std::vector<double> dNdxi_;  // dNdxi_[(q * numNodes + a) * dim + j]
 };
 
-// The kernel of `type` for materials of `kinematics`; `axisymmetric` (2D small strain only,
-// else std::invalid_argument) the ring kernel of AxisymmetricKernel.hpp.
+// The kernel of `type` for materials of `kinematics`; `axisymmetric` (2D only, else
+// std::invalid_argument) the ring kernels AxisymmetricKernel and
+// AxisymmetricTotalLagrangianKernel.
 std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
                                                  int quadratureDegree = -1,
                                                  bool axisymmetric = false);

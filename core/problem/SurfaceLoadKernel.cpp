@@ -94,6 +94,8 @@ void SurfaceLoadKernel::pressure(const double* x, const std::function<double(con
 
 void SurfaceLoadKernel::followerPressure(const double* x, const double* u, double p, double* f,
                                          double* dfdu) const {
+  if (axisymmetric_)
+    throw std::invalid_argument("SurfaceLoadKernel: no follower pressure on axisymmetric facets");
   const int n = numNodes_, D = spaceDim_, refDim = D - 1, nd = numDofs();
   std::fill(f, f + nd, 0.0);
   if (dfdu) std::fill(dfdu, dfdu + nd * nd, 0.0);

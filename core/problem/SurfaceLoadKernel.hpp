@@ -10,7 +10,7 @@
 // 3 coordinates per node; f holds spaceDim() values per node. The default quadrature degree,
 // 2 * order + 1, integrates a constant pressure exactly even on curved facets.
 // Axisymmetric (2D, x the radius): dA = 2 pi r ds, the load on the whole ring
-// (AxisymmetricKernel.hpp); dead loads only (follower pressures are for finite strain).
+// (AxisymmetricKernel.hpp); dead loads only (followerPressure throws std::invalid_argument).
 #include "core/fem/QuadratureRule.hpp"
 #include "core/mesh/ElementType.hpp"
 

@@ -23,20 +23,11 @@ namespace {
 using test::maxAbs;
 using test::nameOf;
 
-std::vector<ElementType> planeTypes() {
-  std::vector<ElementType> t;
-  for (ElementType type : test::solidTypes())
-    if (info(type).dim == 2) t.push_back(type);
-  return t;
-}
+using test::planeTypes;
 
-// distortedNodes, shifted to r > 0 (its x spans about [-1.1, 1.9]).
+// An element on test::ringNodes.
 struct RingElement {
-  explicit RingElement(ElementType t) : kernel(t), x(test::distortedNodes(t)) {
-    for (int a = 0; a < kernel.numNodes(); ++a)
-      x[3 * a] += 2.5;
-    n = kernel.numNodes();
-  }
+  explicit RingElement(ElementType t) : kernel(t), x(test::ringNodes(t)), n(kernel.numNodes()) {}
   AxisymmetricKernel kernel;
   std::vector<double> x;
   int n;
@@ -158,8 +149,13 @@ TEST(AxisymmetricKernel, MeasuresAreThoseOfTheRing) {
 
 TEST(AxisymmetricKernel, RefusesThreeDimensionalCells) {
   EXPECT_THROW(AxisymmetricKernel(ElementType::Hex8), std::invalid_argument);
-  EXPECT_THROW(makeElementKernel(ElementType::Quad4, Kinematics::FiniteStrain, -1, true),
+  EXPECT_THROW(makeElementKernel(ElementType::Hex8, Kinematics::FiniteStrain, -1, true),
                std::invalid_argument);
+  // Each kinematics has its ring kernel.
+  EXPECT_EQ(makeElementKernel(ElementType::Quad4, Kinematics::FiniteStrain, -1, true)->kinematics(),
+            Kinematics::FiniteStrain);
+  EXPECT_EQ(makeElementKernel(ElementType::Quad4, Kinematics::SmallStrain, -1, true)->kinematics(),
+            Kinematics::SmallStrain);
 }
 
 }  // namespace
