@@ -341,6 +341,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
       comm);
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
+  sm.model.axisymmetric = p.sublist("Geometry").get<std::string>("Type") == "axisymmetric";
   const int dim = mesh->dim;
 
   // Materials, one per block.
@@ -415,6 +416,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     }
     if (type == "centrifugal") {
       sm.model.centrifugalLoads.push_back(centrifugalLoad(l, name, dim, endTime, where));
+      // A 2D model's z spin axis is, in axisymmetry, the model's own axis y.
+      if (sm.model.axisymmetric) sm.model.centrifugalLoads.back().axis = {0.0, 1.0, 0.0};
       continue;
     }
     if (type != "point-load" && l.get<std::string>("Distribution") != "total")

@@ -159,9 +159,11 @@ ParameterList loadItem() {
         "centrifugal: spin rate omega in radians per unit time at the end of the load; the "
         "force, rho omega^2 r, is scaled by Function");
   p.set("Centre", Teuchos::Array<double>(3, 0.0),
-        "centrifugal: a point of the spin axis (2D: the centre of rotation in the plane)");
+        "centrifugal: a point of the spin axis (2D: the centre of rotation in the plane; "
+        "axisymmetric: its x must be 0)");
   p.set("Axis", Teuchos::Array<double>({0.0, 0.0, 1.0}),
-        "centrifugal: direction of the spin axis (3D; a 2D model spins about z)");
+        "centrifugal: direction of the spin axis (3D; a plane 2D model spins about z, an "
+        "axisymmetric one about its axis y)");
   p.set("Value", 0.0, "Pressure at the end of the load (pressure)");
   p.set("Follower", "automatic",
         "pressure: 'true' makes it follow the deformation (p on the current facets, "
@@ -257,6 +259,20 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   return p;
 }
 
+ParameterList geometrySection() {
+  ParameterList p("Geometry");
+  p.set("Type", "plane-strain",
+        "What a 2D mesh stands for: 'plane-strain' (a slice of unit thickness, out-of-plane "
+        "strains zero; ignored in 3D) or 'axisymmetric' (the solid of revolution about the y "
+        "axis: x = r >= 0 the radius, y the axial coordinate, as Abaqus CAX and code_aster "
+        "AXIS; small- and finite-strain materials, pressures dead (Follower: false); the zz "
+        "stress is the hoop stress sigma_tt; every "
+        "force, reaction, spring and point load is per full 360 degree ring, so a point load "
+        "is a ring load; nodes on the axis need a Dirichlet condition on x; doc/scenes.md)",
+        choices({"plane-strain", "axisymmetric"}));
+  return p;
+}
+
 ParameterList outputSection(const ParameterList* user, const std::string& where) {
   ParameterList p("Output");
   p.set("Directory", "",
@@ -299,6 +315,7 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Description", "", "Free text, copied to summary.json");
   valid.set("Mesh", typedSection(meshSourceRegistry(), userSublist(&scene, "Mesh"), "rectangle",
                                  where, "Mesh"));
+  valid.set("Geometry", geometrySection());
   valid.set("Point Groups", namedSection(userSublist(&scene, "Point Groups"), "Point Groups", where,
                                          [](const ParameterList&, const std::string&) {
                                            return pointGroupItem();
@@ -409,7 +426,9 @@ std::string sceneReference() {
   std::ostringstream out;
   out << "## Sections\n\n";
   ParameterList dirichlet = dirichletItem(), load = loadItem(), probe = probeItem();
-  out << "### Point Groups/<name>\n\n";
+  out << "### Geometry\n\n";
+  describeList(out, geometrySection(), "");
+  out << "\n### Point Groups/<name>\n\n";
   describeList(out, pointGroupItem(), "");
   out << "\n### Dirichlet/<name>\n\n";
   describeList(out, dirichlet, "");

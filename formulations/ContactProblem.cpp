@@ -36,6 +36,11 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
   const GO displacementDofs = dofs.numGlobalDofs();
   ownedDisplacements_ = static_cast<LO>(dofs.ownedMap()->getNodeNumElements());
 
+  // An axisymmetric model's surfaces are rings: areas, mortar integrals and so the contact
+  // forces carry 2 pi r, and a multiplier or penalty traction stays a pressure.
+  if (solid_.model().axisymmetric)
+    for (ContactZone& zone : zones_)
+      zone.areaWeight = [](const double* x) { return 2.0 * M_PI * x[0]; };
   std::vector<GO> ownedMultipliers;
   // The solid leaves its symmetry reduction to this problem, which reduces the monolithic system.
   solid_.deferSymmetryReduction();
@@ -58,7 +63,8 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     std::vector<std::int64_t> noFriction;
     if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);
     // Tributary areas by HRZ lumping in the reference configuration.
-    const auto weights = tributaryAreas(mesh, zone.slave, dim_, referencePositions(mesh));
+    const auto weights =
+        tributaryAreas(mesh, zone.slave, dim_, referencePositions(mesh), zone.areaWeight);
     for (std::int64_t node : mesh.boundaryNodes(zone.slave)) {
       if (dofs.globalNode(node) < 0) continue;
       const bool frictionless = std::binary_search(noFriction.begin(), noFriction.end(), node);

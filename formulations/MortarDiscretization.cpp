@@ -29,6 +29,7 @@ MortarDiscretization::MortarDiscretization(const ContactZone& zone, const Mesh& 
       zoneName_(zone.name),
       slave_(zone.slave),
       basis_(zone.multiplierBasis),
+      areaWeight_(zone.areaWeight),
       master_(mesh, zone.master) {}
 
 void MortarDiscretization::prepare(const ContactSurfaceState& state, double /*t*/) {
@@ -39,8 +40,9 @@ void MortarDiscretization::prepare(const ContactSurfaceState& state, double /*t*
   // weight by its facets' reference-to-current area ratio, which makes the mortar multiplier a
   // nominal pressure too (it differs from the current one by the surface strain, ~1 % in the
   // Hertz cases) and keeps a uniform pressure uniform.
-  currentAreas_ = tributaryAreas(mesh_, slave_, dim_,
-                                 [&state](std::int64_t node) { return state.position(node); });
+  currentAreas_ = tributaryAreas(
+      mesh_, slave_, dim_, [&state](std::int64_t node) { return state.position(node); },
+      areaWeight_);
 }
 
 PointPairing MortarDiscretization::pair(ContactPoint& pt, const std::array<double, 3>& xs,
@@ -143,7 +145,7 @@ std::map<std::int64_t, MortarDiscretization::Row> MortarDiscretization::rows(
       slaveNormals[a] = normals.at(facetNodes[offset + a]);
     MortarIntegrals in;
     try {
-      in = integrateMortar(f, slaveNormals, masters, basis_);
+      in = integrateMortar(f, slaveNormals, masters, basis_, areaWeight_);
     } catch (const std::invalid_argument& e) {
       throw InputError("Contact/" + zoneName_ + ": mortar: " + e.what());
     }

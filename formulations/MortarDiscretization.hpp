@@ -39,6 +39,7 @@ class MortarDiscretization : public ContactDiscretization {
   const Mesh& mesh_;
   std::string zoneName_, slave_;
   MultiplierBasis basis_;
+  SurfaceWeight areaWeight_;  // the zone's (ContactZone::areaWeight)
   MasterSurface master_;
   std::map<std::int64_t, Row> rows_;             // at the last prepare()
   std::map<std::int64_t, double> currentAreas_;  // tributary areas at the last prepare()

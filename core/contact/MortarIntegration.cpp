@@ -104,7 +104,8 @@ int shapeDegree(ElementType t) {
 // int N_j dA over the whole facet, and int N_j N_k dA into `mass` when given. The rule is exact
 // on straight and flat facets; a curved quadratic facet's dA is not polynomial, hence the extra
 // degrees.
-std::vector<double> wholeFacetIntegrals(const Facet& f, int spaceDim, std::vector<double>* mass) {
+std::vector<double> wholeFacetIntegrals(const Facet& f, int spaceDim, std::vector<double>* mass,
+                                        const SurfaceWeight& weight = {}) {
   const ReferenceElement& ref = ReferenceElement::get(f.type);
   const int n = ref.numNodes(), order = info(f.type).order;
   const QuadratureRule& rule = quadratureRule(f.type, 2 * order + (order > 1 ? 6 : 2));
@@ -114,7 +115,8 @@ std::vector<double> wholeFacetIntegrals(const Facet& f, int spaceDim, std::vecto
     FacetPoint p;
     evaluate(ref, f.coords.data(), &rule.points[q * ref.dim()], p);
     double normal[3];
-    const double dA = rule.weights[q] * areaElement(f, spaceDim, p.dN, normal);
+    const double dA =
+        rule.weights[q] * areaElement(f, spaceDim, p.dN, normal) * (weight ? weight(p.x) : 1.0);
     for (int j = 0; j < n; ++j) {
       lumped[j] += p.N[j] * dA;
       for (int k = 0; mass && k < n; ++k)
@@ -273,7 +275,8 @@ double projectOnMaster(const Facet& master, const ReferenceElement& ref, const d
 }
 
 void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& normals,
-                 const std::vector<const Facet*>& masters, MortarIntegrals& out) {
+                 const std::vector<const Facet*>& masters, const SurfaceWeight& weight,
+                 MortarIntegrals& out) {
   const ReferenceElement& sref = ReferenceElement::get(slave.type);
   const int ns = sref.numNodes();
   const SlaveLine line{slave, sref, normals};
@@ -329,7 +332,8 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
       FacetPoint ps, pm;
       meetMaster(0.5 * (lo + hi) + 0.5 * (hi - lo) * rule.points[q], ps, pm);
       double geometric[3];
-      const double dA = 0.5 * (hi - lo) * rule.weights[q] * areaElement(slave, 2, ps.dN, geometric);
+      const double dA = 0.5 * (hi - lo) * rule.weights[q] *
+                        areaElement(slave, 2, ps.dN, geometric) * (weight ? weight(ps.x) : 1.0);
       accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
       out.coveredArea += dA;
     }
@@ -518,8 +522,11 @@ std::vector<double> dualBasisCoefficients(const Facet& slave) {
 
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
-                                const std::vector<const Facet*>& masters, MultiplierBasis basis) {
+                                const std::vector<const Facet*>& masters, MultiplierBasis basis,
+                                const SurfaceWeight& weight) {
   const int spaceDim = checkFacet(slave);
+  if (weight && spaceDim != 2)
+    throw std::invalid_argument("mortar integration: a weighted measure is for 2D (line) facets");
   const int ns = info(slave.type).nodes;
   if (slaveNormals.size() != static_cast<std::size_t>(ns))
     throw std::invalid_argument("mortar integration: " + std::to_string(slaveNormals.size()) +
@@ -540,13 +547,14 @@ MortarIntegrals integrateMortar(const Facet& slave,
   out.D.assign(static_cast<std::size_t>(ns) * ns, 0.0);
   const bool dual = basis == MultiplierBasis::Dual;
   std::vector<double> mass;
-  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, dual ? &mass : nullptr);
+  const std::vector<double> lumped =
+      wholeFacetIntegrals(slave, spaceDim, dual ? &mass : nullptr, weight);
   out.area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
   // Checks the dual basis exists before integrating (a sentence, not a singular matrix).
   const std::vector<double> whole =
       dual ? wholeFacetDualBasis(slave, lumped, mass) : std::vector<double>();
   if (spaceDim == 2)
-    integrate2d(slave, slaveNormals, masters, out);
+    integrate2d(slave, slaveNormals, masters, weight, out);
   else
     integrate3d(slave, slaveNormals, masters, out);
   if (dual && out.coveredArea > 0)

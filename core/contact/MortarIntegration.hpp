@@ -39,6 +39,7 @@
 // N and sums to 1, so a uniform traction has equal nodal multipliers; only the displacement
 // side keeps N (D_jk = int Phi_j N_k is then not diagonal on these facets).
 #include "core/contact/ContactSearch.hpp"
+#include "core/contact/SurfaceWeight.hpp"
 
 #include <array>
 #include <cstddef>
@@ -74,9 +75,13 @@ struct MortarIntegrals {
 // normal onto a facet does not converge (a facet nearly parallel to the projection direction). In
 // 2D a master whose end nodes cannot be projected onto the slave (Newton diverges: far beyond a
 // curved slave's ends) counts as not overlapping. Thread-safe: no shared mutable state.
+// `weight` (2D only, else std::invalid_argument): every dA, D's, M's, the areas' and the dual
+// basis's, becomes dA w(x) at the slave point x (SurfaceWeight.hpp: 2 pi r on an axisymmetric
+// model's rings).
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
-                                const std::vector<const Facet*>& masters, MultiplierBasis basis);
+                                const std::vector<const Facet*>& masters, MultiplierBasis basis,
+                                const SurfaceWeight& weight = {});
 
 // Coefficients B (row major ns x ns) of the dual basis on `slave`, Phi = B N: B = A T with
 // A = D_e M_e^-1, D_e = diag(int_S T N dA), M_e = int_S T N (T N)^T dA over the whole facet.

@@ -17,7 +17,8 @@ NodePosition referencePositions(const Mesh& mesh) {
 }
 
 std::map<std::int64_t, double> tributaryAreas(const Mesh& mesh, const std::string& group, int dim,
-                                              const NodePosition& position) {
+                                              const NodePosition& position,
+                                              const SurfaceWeight& weight) {
   std::map<std::int64_t, double> weights;
   for (const CellGroup* g : mesh.findBoundaries(group)) {
     const ReferenceElement& ref = ReferenceElement::get(g->type);
@@ -36,7 +37,12 @@ std::map<std::int64_t, double> tributaryAreas(const Mesh& mesh, const std::strin
         const double* xi = &rule.points[q * rule.dim];
         ref.shape(xi, N.data());
         ref.shapeDerivatives(xi, dN.data());
-        const double dA = facetGeometry(dim, n, x.data(), dN.data(), normal) * rule.weights[q];
+        double dA = facetGeometry(dim, n, x.data(), dN.data(), normal) * rule.weights[q];
+        if (weight) {
+          double point[3];
+          interpolatePosition(n, x.data(), N.data(), point);
+          dA *= weight(point);
+        }
         area += dA;
         for (int a = 0; a < n; ++a)
           diag[a] += N[a] * N[a] * dA;

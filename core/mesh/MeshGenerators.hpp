@@ -136,7 +136,9 @@ Mesh generateHalfSphere(const HalfSphereParams& p);
 // the vertical axis through its centre (counter-clockwise, degrees). Types: tri3 tri6 quad4
 // quad8 quad9. Blocks "lower", "upper"; boundaries "lower-bottom", "lower-top", "lower-left",
 // "lower-right", "upper-bottom", "upper-top", "upper-left", "upper-right" (names refer to the
-// unrotated blocks).
+// unrotated blocks). alongX puts the blocks side by side instead, "upper" to the right of
+// "lower": the heights and the gap are then along x and the width along y, so the interface is
+// vertical (lower-right against upper-left): two concentric rings of an axisymmetric model.
 struct StackedBlocks2DParams {
   std::array<double, 2> origin{0.0, 0.0};
   double width = 1.0;
@@ -147,6 +149,7 @@ struct StackedBlocks2DParams {
   std::array<int, 2> upperDivisions{3, 3};
   double upperRotationDeg = 0.0;
   std::string elementType = "quad4";
+  bool alongX = false;
 };
 Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p);
 

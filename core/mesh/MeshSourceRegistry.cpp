@@ -195,6 +195,11 @@ RCP<const ParameterList> stacked2DParameters() {
   p->set("Lower Divisions", arrayOf<int>({2, 2}), "nx, ny of the lower block");
   p->set("Upper Divisions", arrayOf<int>({3, 3}), "nx, ny of the upper block");
   p->set("Upper Rotation", 0.0, "Rotation of the upper block's mesh, degrees");
+  p->set("Stacking", "y",
+         "'y': the upper block above the lower; 'x': side by side, the upper block to the right "
+         "(the heights and the gap along x, Width along y, the interface vertical: two "
+         "concentric rings of an axisymmetric model)",
+         oneOf({"y", "x"}));
   p->set("Element", "quad4", "Element type", oneOf(k2D));
   addElementLimit(*p);
   return p;
@@ -506,6 +511,7 @@ void registerMeshSources() {
            g.upperDivisions = fixed<2, int>(p, "Upper Divisions");
            g.upperRotationDeg = p.get<double>("Upper Rotation");
            g.elementType = p.get<std::string>("Element");
+           g.alongX = p.get<std::string>("Stacking") == "x";
            return std::make_unique<Mesh>(
                generateStackedBlocks2D(withinLimit("stacked-blocks-2d", p, g)));
          }});

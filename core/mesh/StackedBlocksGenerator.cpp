@@ -5,6 +5,7 @@
 
 #include <gmsh.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -56,13 +57,17 @@ Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p) {
   requireStacking(gen, p.lowerHeight, p.upperHeight, p.gap, p.upperRotationDeg);
   const std::string source = requireBlockDivisions(gen, p.elementType, p.lowerDivisions.data(),
                                                    p.upperDivisions.data(), 2);
-  const double upperY = p.origin[1] + p.lowerHeight + p.gap;
+  // Along y the heights are the blocks' y extents; along x their x extents.
+  const int along = p.alongX ? 0 : 1, across = 1 - along;
+  std::array<double, 2> upperOrigin = p.origin, lowerSize, upperSize;
+  upperOrigin[along] += p.lowerHeight + p.gap;
+  lowerSize[along] = p.lowerHeight, lowerSize[across] = p.width;
+  upperSize[along] = p.upperHeight, upperSize[across] = p.width;
   Mesh mesh = inGmshModel("gmsh could not generate the " + source, [&] {
     resetMeshOptions();
-    const auto lower =
-        addStructuredRectangle(p.origin, {p.width, p.lowerHeight}, p.lowerDivisions, !spec.simplex);
-    const auto upper = addStructuredRectangle({p.origin[0], upperY}, {p.width, p.upperHeight},
-                                              p.upperDivisions, !spec.simplex);
+    const auto lower = addStructuredRectangle(p.origin, lowerSize, p.lowerDivisions, !spec.simplex);
+    const auto upper =
+        addStructuredRectangle(upperOrigin, upperSize, p.upperDivisions, !spec.simplex);
     const char* sides[] = {"bottom", "right", "top", "left"};
     for (const auto& [block, r] : {std::pair{"lower", lower}, std::pair{"upper", upper}}) {
       addGroup(2, {r.surface}, block);
@@ -73,8 +78,8 @@ Mesh generateStackedBlocks2D(const StackedBlocks2DParams& p) {
     applyOrder(spec);
     return meshFromGmshModel(source, source);
   });
-  rotateBlockAboutZ(mesh, "upper", p.origin[0] + p.width / 2, upperY + p.upperHeight / 2,
-                    p.upperRotationDeg);
+  rotateBlockAboutZ(mesh, "upper", upperOrigin[0] + upperSize[0] / 2,
+                    upperOrigin[1] + upperSize[1] / 2, p.upperRotationDeg);
   return mesh;
 }
 

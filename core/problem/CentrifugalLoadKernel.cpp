@@ -5,13 +5,18 @@
 
 namespace contactlab {
 
-CentrifugalLoadKernel::CentrifugalLoadKernel(const CentrifugalLoad& load, int dim)
+CentrifugalLoadKernel::CentrifugalLoadKernel(const CentrifugalLoad& load, int dim,
+                                             bool axisymmetric)
     : load_(load), dim_(dim) {
   const auto& a = load.axis;
   const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
   if (!(norm > 0) || !std::isfinite(norm))
     throw std::invalid_argument("centrifugal load '" + load.name + "': the axis is zero");
-  if (dim == 2 && (a[0] != 0 || a[1] != 0))
+  if (axisymmetric && (a[0] != 0 || a[2] != 0 || load.centre[0] != 0))
+    throw std::invalid_argument("centrifugal load '" + load.name +
+                                "': an axisymmetric model spins about its own axis, the y axis "
+                                "(x = 0): give a Centre with x = 0");
+  if (dim == 2 && !axisymmetric && (a[0] != 0 || a[1] != 0))
     throw std::invalid_argument("centrifugal load '" + load.name +
                                 "': a 2D model spins about the z axis only");
   for (int i = 0; i < 3; ++i)

@@ -13,8 +13,10 @@ namespace contactlab {
 
 class CentrifugalLoadKernel {
  public:
-  // Throws std::invalid_argument for a zero axis or a 2D model whose axis is not z.
-  CentrifugalLoadKernel(const CentrifugalLoad& load, int dim);
+  // Throws std::invalid_argument for a zero axis, a plane 2D model whose axis is not z, or an
+  // axisymmetric one (SolidModel::axisymmetric) whose axis is not its symmetry axis, the y axis
+  // through x = 0 (then P (x - c) is the radius vector (r, 0) and M carries the ring's 2 pi r).
+  CentrifugalLoadKernel(const CentrifugalLoad& load, int dim, bool axisymmetric = false);
 
   // f += the forces for nodal positions `x` (3 per node: reference, or current for a follower
   // load), `mass` the element's unit-density consistent mass (numNodes * dim squared).

@@ -2,20 +2,29 @@
 
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/ReferenceElement.hpp"
+#include "core/materials/Tensor3.hpp"
+#include "core/problem/AxisymmetricKernel.hpp"
+#include "core/problem/AxisymmetricTotalLagrangianKernel.hpp"
+#include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/SmallStrainKernel.hpp"
 #include "core/problem/TotalLagrangianKernel.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace contactlab {
 
-ElementKernel::ElementKernel(ElementType type, int quadratureDegree)
-    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes) {
+ElementKernel::ElementKernel(ElementType type, int quadratureDegree, bool axisymmetric)
+    : type_(type), dim_(info(type).dim), numNodes_(info(type).nodes), axisymmetric_(axisymmetric) {
   if (dim_ != 2 && dim_ != 3)
     throw std::invalid_argument(std::string("a solid element kernel needs a 2D or 3D cell type, "
                                             "got ") +
+                                info(type).name);
+  if (axisymmetric && dim_ != 2)
+    throw std::invalid_argument(std::string("an axisymmetric kernel needs a 2D cell type, got ") +
                                 info(type).name);
   rule_ = &quadratureRule(
       type, quadratureDegree < 0 ? stiffnessQuadratureDegree(type) : quadratureDegree);
@@ -38,8 +47,13 @@ void ElementKernel::initializeState(const Material& material, double* state) con
 }
 
 double ElementKernel::gradients(int q, const double* x, double* dNdx) const {
-  return rule_->weights[q] *
-         physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+  const double w = rule_->weights[q] *
+                   physicalGradients(dim_, numNodes_, x, &dNdxi_[q * numNodes_ * dim_], dNdx);
+  if (!axisymmetric_) return w;
+  double r = 0.0;  // the quadrature point's radius
+  for (int a = 0; a < numNodes_; ++a)
+    r += N_[q * numNodes_ + a] * x[3 * a];
+  return 2.0 * M_PI * r * w;
 }
 
 double ElementKernel::measure(int q, const double* x) const {
@@ -73,6 +87,86 @@ void ElementKernel::beginEvaluation(const Material& material, const double* stat
   if (averageStress)
     for (int k = 0; k < 6; ++k)
       averageStress[k] = 0.0;
+}
+
+void ElementKernel::evaluateSmallStrainPoint(int q, double w, const Material& material,
+                                             const double* stateOld, double* stateNew,
+                                             MaterialInput& in, MaterialOutput& out,
+                                             double* pointStress, double* averageStress,
+                                             double& volume) const {
+  const int ss = material.stateSize();
+  in.stateOld = ss ? stateOld + q * ss : nullptr;
+  out.stateNew = ss ? stateNew + q * ss : nullptr;
+  out.stress.fill(0.0);
+  out.tangent.fill(0.0);
+  material.evaluate(in, out);
+  if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
+  if (pointStress)
+    for (int k = 0; k < 6; ++k)
+      pointStress[6 * q + k] = out.stress[k];
+  if (averageStress) {
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] += w * out.stress[k];
+    volume += w;
+  }
+}
+
+void ElementKernel::evaluateFiniteStrainPoint(int q, double w, const Material& material,
+                                              const double* stateOld, double* stateNew,
+                                              MaterialInput& in, MaterialOutput& out,
+                                              double* pointStress, double* averageStress,
+                                              double& volume) const {
+  const double detF = tensor3::determinant(in.F);
+  if (!(detF > 0)) {
+    std::ostringstream s;
+    s << "det F = " << detF << " <= 0: the displacement turns the element inside out";
+    throw ElementUpdateError("inverted-element", q, s.str());
+  }
+  const int ss = material.stateSize();
+  in.stateOld = ss ? stateOld + q * ss : nullptr;
+  out.stateNew = ss ? stateNew + q * ss : nullptr;
+  material.evaluate(in, out);
+  if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
+  if (!pointStress && !averageStress) return;
+  constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+  double sigma[6] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      double s = 0.0;
+      for (int K = 0; K < 3; ++K)
+        s += out.P[i * 3 + K] * in.F[j * 3 + K];
+      sigma[kVoigt3[i][j]] = s / detF;
+    }
+  for (int k = 0; k < 6; ++k) {
+    if (pointStress) pointStress[6 * q + k] = sigma[k];
+    if (averageStress) averageStress[k] += w * sigma[k];
+  }
+  volume += w;
+}
+
+void ElementKernel::addOperatorTerms(int rows, const int* slots, const double (*B)[kMaxNodes * 2],
+                                     int nd, double w, const double* s, const double* C, int ldC,
+                                     double* residual, double* tangent) {
+  if (residual)
+    for (int k = 0; k < nd; ++k)
+      for (int r = 0; r < rows; ++r)
+        residual[k] += w * B[r][k] * s[slots[r]];
+  if (!tangent) return;
+  double CB[9][kMaxNodes * 2];  // w C B, then K += B^T (w C B)
+  for (int r = 0; r < rows; ++r)
+    for (int k = 0; k < nd; ++k) {
+      double v = 0.0;
+      for (int m = 0; m < rows; ++m)
+        v += C[slots[r] * ldC + slots[m]] * B[m][k];
+      CB[r][k] = w * v;
+    }
+  for (int i = 0; i < nd; ++i)
+    for (int r = 0; r < rows; ++r) {
+      if (B[r][i] == 0.0) continue;
+      double* row = &tangent[i * nd];
+      for (int k = 0; k < nd; ++k)
+        row[k] += B[r][i] * CB[r][k];
+    }
 }
 
 void ElementKernel::quadraturePoints(const double* x, double* points) const {
@@ -115,7 +209,12 @@ void ElementKernel::bodyForce(const double* x,
 }
 
 std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
-                                                 int quadratureDegree) {
+                                                 int quadratureDegree, bool axisymmetric) {
+  if (axisymmetric) {
+    if (kinematics == Kinematics::FiniteStrain)
+      return std::make_unique<AxisymmetricTotalLagrangianKernel>(type, quadratureDegree);
+    return std::make_unique<AxisymmetricKernel>(type, quadratureDegree);
+  }
   if (kinematics == Kinematics::FiniteStrain)
     return std::make_unique<TotalLagrangianKernel>(type, quadratureDegree);
   return std::make_unique<SmallStrainKernel>(type, quadratureDegree);

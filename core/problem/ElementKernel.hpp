@@ -1,6 +1,7 @@
 #pragma once
 // A solid element kernel: internal force f = dW/du and tangent K = df/du of one 2D (plane
-// strain, per unit thickness) or 3D cell, for one kinematics. The small-strain kernel takes
+// strain, per unit thickness; or axisymmetric, per full 360 degree ring) or 3D cell, for one
+// kinematics. The small-strain kernel takes
 // the linearized strain to the material; the total-Lagrangian kernel the deformation gradient.
 // makeElementKernel picks one from the material's kinematics(), so blocks of both kinds live in
 // one model and the next kernel is a new class.
@@ -69,15 +70,20 @@ class ElementKernel {
                  double* f) const;
 
  protected:
+  static constexpr int kMaxNodes = 27;
+
   // quadratureDegree < 0 selects stiffnessQuadratureDegree(type). Throws std::invalid_argument
-  // for types that are not 2D or 3D cells.
-  ElementKernel(ElementType type, int quadratureDegree);
+  // for types that are not 2D or 3D cells, or for axisymmetric 3D cells. An axisymmetric
+  // kernel's measures (gradients(), hence volume, body forces, stresses' averages) carry the
+  // ring's 2 pi r: x is the radius, y the axis.
+  ElementKernel(ElementType type, int quadratureDegree, bool axisymmetric = false);
   // The kernel's one pass over the quadrature points: each output that is not nullptr is
   // filled (residual, tangent, pointStress, averageStress as in compute() and stresses()).
   virtual void evaluate(const double* x, const double* u, const Material& material,
                         const double* stateOld, double* stateNew, double* residual, double* tangent,
                         double* pointStress, double* averageStress) const = 0;
-  // Reference gradients at quadrature point q; returns det J times the weight.
+  // Reference gradients at quadrature point q; returns det J times the weight (times 2 pi r_q
+  // in axisymmetry).
   double gradients(int q, const double* x, double* dNdx) const;
   double measure(int q, const double* x) const;
   // Throws std::invalid_argument when the material is not of this kernel's kinematics or has
@@ -87,6 +93,26 @@ class ElementKernel {
   // quadrature points (residual, tangent, averageStress; each when not nullptr) set to zero.
   void beginEvaluation(const Material& material, const double* stateOld, double* stateNew,
                        double* residual, double* tangent, double* averageStress) const;
+  // The small-strain kernels' step at quadrature point q (measure w), once in.strain is set:
+  // the material evaluated with point q's state slices (ElementUpdateError when it fails), its
+  // stress recorded into pointStress and added, weighted, to averageStress and `volume` (each
+  // when not nullptr).
+  void evaluateSmallStrainPoint(int q, double w, const Material& material, const double* stateOld,
+                                double* stateNew, MaterialInput& in, MaterialOutput& out,
+                                double* pointStress, double* averageStress, double& volume) const;
+  // The finite-strain kernels' step at quadrature point q, once in.F is set: det F > 0 checked
+  // (else ElementUpdateError "inverted-element"), the material evaluated with point q's state
+  // slices, and the Cauchy stress P F^T / det F recorded as in evaluateSmallStrainPoint.
+  void evaluateFiniteStrainPoint(int q, double w, const Material& material, const double* stateOld,
+                                 double* stateNew, MaterialInput& in, MaterialOutput& out,
+                                 double* pointStress, double* averageStress, double& volume) const;
+  // The ring kernels' accumulation at one quadrature point of weight w, for an operator B of
+  // `rows` rows (B[r][k]: d(measure slots[r]) / du_k over nd dofs) and the material's response
+  // in those slots: residual += w B^T s (s[slots[r]]) and, unless tangent is nullptr,
+  // tangent += w B^T C B (C[slots[r] * ldC + slots[m]], as given: unsymmetric or not).
+  static void addOperatorTerms(int rows, const int* slots, const double (*B)[kMaxNodes * 2], int nd,
+                               double w, const double* s, const double* C, int ldC,
+                               double* residual, double* tangent);
   // Copies the strictly upper blocks K_ab (b > a, dim x dim each) of a numDofs()^2 row-major
   // tangent onto K_ba^T, adding to what is there: the kernels accumulate only the blocks
   // b >= a of a symmetric tangent.
@@ -100,19 +126,22 @@ class ElementKernel {
             tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
   }
 
-  static constexpr int kMaxNodes = 27;
 
   ElementType type_;
   int dim_;
   int numNodes_;
   int numPoints_;
+  bool axisymmetric_;
   const QuadratureRule* rule_;
   std::vector<double> N_;      // N_[q * numNodes + a]
   std::vector<double> dNdxi_;  // dNdxi_[(q * numNodes + a) * dim + j]
 };
 
-// The kernel of `type` for materials of `kinematics`.
+// The kernel of `type` for materials of `kinematics`; `axisymmetric` (2D only, else
+// std::invalid_argument) the ring kernels AxisymmetricKernel and
+// AxisymmetricTotalLagrangianKernel.
 std::unique_ptr<ElementKernel> makeElementKernel(ElementType type, Kinematics kinematics,
-                                                 int quadratureDegree = -1);
+                                                 int quadratureDegree = -1,
+                                                 bool axisymmetric = false);
 
 }  // namespace contactlab

@@ -3,9 +3,12 @@
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/ReferenceElement.hpp"
 
+#include <cmath>
+
 namespace contactlab {
 
-MassKernel::MassKernel(ElementType type) : dim_(info(type).dim), numNodes_(info(type).nodes) {
+MassKernel::MassKernel(ElementType type, bool axisymmetric)
+    : dim_(info(type).dim), numNodes_(info(type).nodes), axisymmetric_(axisymmetric) {
   rule_ = &quadratureRule(type, 2 * info(type).order);
   const ReferenceElement& ref = ReferenceElement::get(type);
   const int nq = rule_->size();
@@ -21,9 +24,15 @@ void MassKernel::add(const double* x, double density, bool lumped, double* mass)
   const int n = numNodes_, nd = numDofs();
   std::vector<double> m(static_cast<std::size_t>(n * n), 0.0), dNdx(dNdxi_.size() / rule_->size());
   for (int q = 0; q < rule_->size(); ++q) {
-    const double w = density * rule_->weights[q] *
-                     physicalGradients(dim_, n, x, &dNdxi_[q * n * dim_], dNdx.data());
+    double w = density * rule_->weights[q] *
+               physicalGradients(dim_, n, x, &dNdxi_[q * n * dim_], dNdx.data());
     const double* N = &N_[q * n];
+    if (axisymmetric_) {
+      double r = 0.0;
+      for (int a = 0; a < n; ++a)
+        r += N[a] * x[3 * a];
+      w *= 2.0 * M_PI * r;
+    }
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b)
         m[a * n + b] += w * N[a] * N[b];

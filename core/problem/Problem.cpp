@@ -4,6 +4,7 @@
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
+#include "core/problem/AxisymmetricModel.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/ElementKernel.hpp"
 #include "core/problem/ElementUpdateError.hpp"
@@ -59,8 +60,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     auto [it, inserted] =
         kernelOf.emplace(std::make_pair(block.type, kinematics), static_cast<int>(kernels_.size()));
     if (inserted) {
-      kernels_.push_back(makeElementKernel(block.type, kinematics));
-      massKernels_.push_back(std::make_unique<MassKernel>(block.type));
+      kernels_.push_back(makeElementKernel(block.type, kinematics, -1, model_.axisymmetric));
+      massKernels_.push_back(std::make_unique<MassKernel>(block.type, model_.axisymmetric));
     }
     LocalElement e;
     e.block = ref.block;
@@ -111,7 +112,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
 
   for (const auto& load : model_.centrifugalLoads) {
     try {
-      centrifugal_.emplace_back(load, dim);
+      centrifugal_.emplace_back(load, dim, model_.axisymmetric);
     } catch (const std::invalid_argument& e) {
       throw InputError(e.what());
     }
@@ -205,6 +206,7 @@ void Problem::checkModel() const {
     if (!load.block.empty() && mesh.findBlocks(load.block).empty())
       throw InputError("centrifugal load '" + load.name + "' names block '" + load.block +
                        "', which is not in " + where);
+  checkAxisymmetricModel(model_);
 }
 
 void Problem::buildGraph() {

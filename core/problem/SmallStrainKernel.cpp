@@ -1,7 +1,5 @@
 #include "core/problem/SmallStrainKernel.hpp"
 
-#include "core/problem/ElementUpdateError.hpp"
-
 namespace contactlab {
 namespace {
 
@@ -23,7 +21,7 @@ void SmallStrainKernel::evaluateIn(const double* x, const double* u, const Mater
                                    double* tangent, double* pointStress,
                                    double* averageStress) const {
   constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
-  const int n = numNodes_, ss = material.stateSize();
+  const int n = numNodes_;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
 
@@ -45,21 +43,8 @@ void SmallStrainKernel::evaluateIn(const double* x, const double* u, const Mater
     for (int i = 0; i < D; ++i)
       for (int j = i; j < D; ++j)
         in.strain[kVoigt3[i][j]] = i == j ? H[i][i] : H[i][j] + H[j][i];
-    in.stateOld = ss ? stateOld + q * ss : nullptr;
-    out.stateNew = ss ? stateNew + q * ss : nullptr;
-    out.stress.fill(0.0);
-    out.tangent.fill(0.0);
-    material.evaluate(in, out);
-    if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
-
-    if (pointStress)
-      for (int k = 0; k < 6; ++k)
-        pointStress[6 * q + k] = out.stress[k];
-    if (averageStress) {
-      for (int k = 0; k < 6; ++k)
-        averageStress[k] += w * out.stress[k];
-      volume += w;
-    }
+    evaluateSmallStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
+                             averageStress, volume);
     if (residual) {
       double sigma[D][D];
       for (int i = 0; i < D; ++i)

@@ -23,6 +23,11 @@ struct SolidModel {
   std::vector<CentrifugalLoad> centrifugalLoads;
   std::vector<PointLoad> pointLoads;
   std::vector<NodalSpring> springs;
+  // A 2D model of the solid of revolution about the y axis (x = r >= 0, y = z):
+  // AxisymmetricKernel.hpp, AxisymmetricTotalLagrangianKernel.hpp. Every integral, load, reaction
+  // and spring is then per full ring (a point load is a ring load: its force on the whole circle);
+  // checkAxisymmetricModel.
+  bool axisymmetric = false;
 
   // Some block's material carries internal variables (plasticity): outputs add its fields.
   bool hasInternalVariables() const {

@@ -13,12 +13,13 @@ namespace contactlab {
 
 SurfaceLoadAssembler::SurfaceLoadAssembler(const SolidModel& model, const DofMap& dofs,
                                            const std::vector<int>& partition)
-    : dim_(dofs.dim()), loads_(model.surfaceLoads) {
+    : dim_(dofs.dim()), axisymmetric_(model.axisymmetric), loads_(model.surfaceLoads) {
   if (loads_.empty()) return;
   locate(model, dofs, partition);
   for (const auto& facet : facets_)
     if (!kernels_.count(facet.type))
-      kernels_[facet.type] = std::make_unique<SurfaceLoadKernel>(facet.type, dim_);
+      kernels_[facet.type] =
+          std::make_unique<SurfaceLoadKernel>(facet.type, dim_, -1, axisymmetric_);
 }
 
 SurfaceLoadAssembler::~SurfaceLoadAssembler() = default;

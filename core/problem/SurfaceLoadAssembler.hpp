@@ -63,6 +63,7 @@ class SurfaceLoadAssembler {
   void gather(const Facet& facet, const double* u, std::vector<double>& ue) const;
 
   int dim_;
+  bool axisymmetric_;  // facets weighted by 2 pi r (SolidModel::axisymmetric)
   std::vector<SurfaceLoad> loads_;
   std::vector<Facet> facets_;
   std::vector<std::size_t> followerFacets_;  // indices in facets_

@@ -4,13 +4,20 @@
 #include "core/fem/ReferenceElement.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace contactlab {
 
-SurfaceLoadKernel::SurfaceLoadKernel(ElementType facetType, int spaceDim, int quadratureDegree)
-    : type_(facetType), spaceDim_(spaceDim), numNodes_(info(facetType).nodes) {
+SurfaceLoadKernel::SurfaceLoadKernel(ElementType facetType, int spaceDim, int quadratureDegree,
+                                     bool axisymmetric)
+    : type_(facetType),
+      spaceDim_(spaceDim),
+      numNodes_(info(facetType).nodes),
+      axisymmetric_(axisymmetric) {
+  if (axisymmetric && spaceDim != 2)
+    throw std::invalid_argument("SurfaceLoadKernel: axisymmetric facets are lines in 2D");
   const int facetDim = info(facetType).dim;
   if ((facetDim != 1 && facetDim != 2) || spaceDim != facetDim + 1)
     throw std::invalid_argument(std::string("SurfaceLoadKernel: ") + info(facetType).name +
@@ -37,7 +44,7 @@ void SurfaceLoadKernel::forEachPoint(const double* x, Visit&& visit) const {
     const double dA =
         facetGeometry(spaceDim_, numNodes_, x, &dNdxi_[q * numNodes_ * refDim], normal);
     interpolatePosition(numNodes_, x, &N_[q * numNodes_], point);
-    visit(q, point, normal, rule_->weights[q] * dA);
+    visit(q, point, normal, rule_->weights[q] * dA * (axisymmetric_ ? 2.0 * M_PI * point[0] : 1.0));
   }
 }
 
@@ -87,6 +94,8 @@ void SurfaceLoadKernel::pressure(const double* x, const std::function<double(con
 
 void SurfaceLoadKernel::followerPressure(const double* x, const double* u, double p, double* f,
                                          double* dfdu) const {
+  if (axisymmetric_)
+    throw std::invalid_argument("SurfaceLoadKernel: no follower pressure on axisymmetric facets");
   const int n = numNodes_, D = spaceDim_, refDim = D - 1, nd = numDofs();
   std::fill(f, f + nd, 0.0);
   if (dfdu) std::fill(dfdu, dfdu + nd * nd, 0.0);

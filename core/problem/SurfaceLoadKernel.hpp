@@ -9,6 +9,8 @@
 // Facets: line2/line3 in 2D (per unit thickness), tri3/tri6/quad4/quad8/quad9 in 3D. x holds
 // 3 coordinates per node; f holds spaceDim() values per node. The default quadrature degree,
 // 2 * order + 1, integrates a constant pressure exactly even on curved facets.
+// Axisymmetric (2D, x the radius): dA = 2 pi r ds, the load on the whole ring
+// (AxisymmetricKernel.hpp); dead loads only (followerPressure throws std::invalid_argument).
 #include "core/fem/QuadratureRule.hpp"
 #include "core/mesh/ElementType.hpp"
 
@@ -20,9 +22,10 @@ namespace contactlab {
 class SurfaceLoadKernel {
  public:
   // spaceDim must be the facet's dimension + 1 (2 for lines, 3 for surfaces): otherwise, or for
-  // a type that is not a line or surface, throws std::invalid_argument. quadratureDegree < 0
-  // selects 2 * order + 1.
-  SurfaceLoadKernel(ElementType facetType, int spaceDim, int quadratureDegree = -1);
+  // a type that is not a line or surface, or axisymmetric in 3D, throws std::invalid_argument.
+  // quadratureDegree < 0 selects 2 * order + 1.
+  SurfaceLoadKernel(ElementType facetType, int spaceDim, int quadratureDegree = -1,
+                    bool axisymmetric = false);
 
   ElementType type() const { return type_; }
   int spaceDim() const { return spaceDim_; }
@@ -57,6 +60,7 @@ class SurfaceLoadKernel {
   ElementType type_;
   int spaceDim_;
   int numNodes_;
+  bool axisymmetric_;
   const QuadratureRule* rule_;
   std::vector<double> N_;      // N_[q * numNodes + a]
   std::vector<double> dNdxi_;  // dNdxi_[(q * numNodes + a) * (spaceDim - 1) + j]

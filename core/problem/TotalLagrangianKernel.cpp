@@ -1,23 +1,13 @@
 #include "core/problem/TotalLagrangianKernel.hpp"
 
-#include "core/materials/Tensor3.hpp"
-#include "core/problem/ElementUpdateError.hpp"
-
-#include <sstream>
-
 namespace contactlab {
-namespace {
-
-constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
-
-}  // namespace
 
 template <int D>
 void TotalLagrangianKernel::evaluateIn(const double* x, const double* u, const Material& material,
                                        const double* stateOld, double* stateNew, double* residual,
                                        double* tangent, double* pointStress,
                                        double* averageStress) const {
-  const int n = numNodes_, nd = D * n, ss = material.stateSize();
+  const int n = numNodes_, nd = D * n;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
 
@@ -39,32 +29,8 @@ void TotalLagrangianKernel::evaluateIn(const double* x, const double* u, const M
       for (int i = 0; i < D; ++i)
         for (int J = 0; J < D; ++J)
           in.F[i * 3 + J] += u[a * D + i] * dNdX[a * D + J];
-    const double detF = tensor3::determinant(in.F);
-    if (!(detF > 0)) {
-      std::ostringstream s;
-      s << "det F = " << detF << " <= 0: the displacement turns the element inside out";
-      throw ElementUpdateError("inverted-element", q, s.str());
-    }
-    in.stateOld = ss ? stateOld + q * ss : nullptr;
-    out.stateNew = ss ? stateNew + q * ss : nullptr;
-    material.evaluate(in, out);
-    if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
-
-    if (pointStress || averageStress) {
-      double sigma[6] = {};
-      for (int i = 0; i < 3; ++i)
-        for (int j = i; j < 3; ++j) {
-          double s = 0.0;
-          for (int K = 0; K < 3; ++K)
-            s += out.P[i * 3 + K] * in.F[j * 3 + K];
-          sigma[kVoigt3[i][j]] = s / detF;
-        }
-      for (int k = 0; k < 6; ++k) {
-        if (pointStress) pointStress[6 * q + k] = sigma[k];
-        if (averageStress) averageStress[k] += w * sigma[k];
-      }
-      volume += w;
-    }
+    evaluateFiniteStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
+                              averageStress, volume);
     if (residual)
       for (int a = 0; a < n; ++a)
         for (int i = 0; i < D; ++i) {

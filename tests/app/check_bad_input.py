@@ -68,6 +68,11 @@ def contact_with(old, new):
     assert old in CONTACT, old
     return CONTACT.replace(old, new)
 
+# GOOD as an axisymmetric model off the axis (x = r in [1, 3]).
+AXI = GOOD.replace("rectangle: {Lx:", "rectangle: {Origin: [1.0, 0.0], Lx:") + \
+    "  Geometry: {Type: axisymmetric}\n"
+
+
 def scene_with(old, new):
     assert old in GOOD, old
     return GOOD.replace(old, new)
@@ -91,6 +96,26 @@ cases = [
      ["quad5", "Mesh/rectangle/Element", "quad4"]),
     ("E <= 0", scene_with("E: 100.0", "E: -5.0"), [], ["Materials/body", "E must be > 0"]),
     ("nu outside (-1, 0.5)", scene_with("nu: 0.3", "nu: 0.5"), [], ["Materials/body", "(-1, 0.5)"]),
+    # Axisymmetric models (Geometry/Type: axisymmetric, x = r): the half-plane x >= 0, 2D,
+    # small strain, the axis held radially, a centrifugal load about the axis.
+    ("axisymmetric node at x < 0",
+     AXI.replace("Origin: [1.0, 0.0]", "Origin: [-1.0, 0.0]"), [],
+     ["node 1 at (-1, 0)", "x < 0", "x = r >= 0"]),
+    ("axisymmetric axis not held", AXI.replace("Origin: [1.0, 0.0]", "Origin: [0.0, 0.0]"), [],
+     ["node 4 at (0, 1)", "on the axis", "Dirichlet condition on x"]),
+    ("axisymmetric follower pressure",
+     AXI.replace("Type: linear-elastic\n      linear-elastic:", "Type: neo-hookean\n      neo-hookean:"),
+     [], ["load 'p'", "no follower pressure", "Follower: false"]),
+    ("axisymmetric 3D", GOOD.replace(
+        "Type: rectangle\n    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}",
+        "Type: box\n    box: {Origin: [1, 0, 0], nx: 1, ny: 1, nz: 1, Element: hex8}").replace(
+        "Group: top", "Group: zmax").replace("Group: bottom", "Group: zmin") + "  Geometry: {Type: axisymmetric}\n", [],
+     ["needs a 2D mesh", "3D"]),
+    ("axisymmetric spin axis", AXI.replace(
+        "    p: {Type: pressure, Group: top, Value: 1.0}\n",
+        "    p: {Type: pressure, Group: top, Value: 1.0}\n"
+        "    spin: {Type: centrifugal, Density: 1, Angular Velocity: 1, Centre: [1, 0]}\n"),
+     [], ["spin", "spins about its own axis", "Centre with x = 0"]),
     ("missing boundary group", scene_with("Group: bottom", "Group: bottm"), [],
      ["scene.yaml", "'bottm'", "fix", "bottom, right, top, left"]),
     ("wrong value type", scene_with("nx: 4", "nx: four"), [], ["Mesh/rectangle/nx", "integer"]),

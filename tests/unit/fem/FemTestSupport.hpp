@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,13 @@ inline std::vector<ElementType> solidTypes() {
   std::vector<ElementType> t;
   for (ElementType type : allTypes())
     if (info(type).dim >= 2) t.push_back(type);
+  return t;
+}
+
+inline std::vector<ElementType> planeTypes() {
+  std::vector<ElementType> t;
+  for (ElementType type : solidTypes())
+    if (info(type).dim == 2) t.push_back(type);
   return t;
 }
 
@@ -84,6 +92,15 @@ inline std::vector<double> distortedNodes(ElementType type, double eps = 0.05) {
   return x;
 }
 
+// distortedNodes of a 2D type moved to x in about [1.4, 4.4]: a cell of an axisymmetric model
+// off its axis (x = r).
+inline std::vector<double> ringNodes(ElementType type) {
+  auto x = distortedNodes(type);
+  for (std::size_t a = 0; a < x.size(); a += 3)
+    x[a] += 2.5;
+  return x;
+}
+
 // Isotropic linear elasticity, small strain.
 class IsotropicElastic : public Material {
  public:
@@ -110,6 +127,50 @@ class IsotropicElastic : public Material {
 
  private:
   std::array<double, 36> C_{};
+};
+
+// Saint Venant-Kirchhoff written out here, so that the kernels's tests do not depend on the
+// materials module: S = lambda tr(E) I + 2 mu E, P = F S,
+// dP_iJ/dF_kL = delta_ik S_JL + F_iI (lambda delta_IJ F_kL + mu (delta_IL F_kJ + delta_JL F_kI)).
+class TestKirchhoff : public Material {
+ public:
+  TestKirchhoff(double lambda, double mu) : lambda_(lambda), mu_(mu) {}
+  std::string name() const override { return "test-kirchhoff"; }
+  Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
+  void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
+    const auto F = [&](int i, int J) { return in.F[i * 3 + J]; };
+    double E[3][3], S[3][3], trE = 0;
+    for (int I = 0; I < 3; ++I)
+      for (int J = 0; J < 3; ++J) {
+        double c = 0;
+        for (int k = 0; k < 3; ++k)
+          c += F(k, I) * F(k, J);
+        E[I][J] = 0.5 * (c - (I == J));
+      }
+    for (int I = 0; I < 3; ++I)
+      trE += E[I][I];
+    for (int I = 0; I < 3; ++I)
+      for (int J = 0; J < 3; ++J)
+        S[I][J] = lambda_ * trE * (I == J) + 2 * mu_ * E[I][J];
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J) {
+        double p = 0;
+        for (int I = 0; I < 3; ++I)
+          p += F(i, I) * S[I][J];
+        out.P[i * 3 + J] = p;
+        for (int k = 0; k < 3; ++k)
+          for (int L = 0; L < 3; ++L) {
+            double a = (i == k) * S[J][L];
+            for (int I = 0; I < 3; ++I)
+              a += F(i, I) *
+                   (lambda_ * (I == J) * F(k, L) + mu_ * ((I == L) * F(k, J) + (J == L) * F(k, I)));
+            out.dPdF[(i * 3 + J) * 9 + k * 3 + L] = a;
+          }
+      }
+  }
+
+ private:
+  double lambda_, mu_;
 };
 
 // Nonlinear, unsymmetric law with one internal variable (a counter), to exercise the kernel's
@@ -139,6 +200,48 @@ class UnsymmetricNonlinear : public IsotropicElastic {
  private:
   static constexpr double kQuad = 500.0, kSkew = 30.0;
 };
+
+// Checks every column of the kernel's tangent K at u against central differences of its
+// residual (step 1e-6, within 1e-6 of max |K|; gtest expectations labelled `label`); returns
+// whether K is unsymmetric at that tolerance.
+template <class Kernel, class Material>
+bool expectTangentMatchesDifferences(const Kernel& kernel, const std::vector<double>& x,
+                                     const std::vector<double>& u, const Material& material,
+                                     const double* stateOld, double* stateNew,
+                                     const std::vector<double>& K, const std::string& label) {
+  const int nd = static_cast<int>(u.size());
+  std::vector<double> fp(nd), fm(nd);
+  const double h = 1e-6, scale = maxAbs(K);
+  bool unsymmetric = false;
+  for (int k = 0; k < nd; ++k) {
+    auto up = u, um = u;
+    up[k] += h, um[k] -= h;
+    kernel.compute(x.data(), up.data(), material, stateOld, stateNew, fp.data(), nullptr);
+    kernel.compute(x.data(), um.data(), material, stateOld, stateNew, fm.data(), nullptr);
+    for (int i = 0; i < nd; ++i) {
+      EXPECT_NEAR(K[i * nd + k], (fp[i] - fm[i]) / (2 * h), 1e-6 * scale)
+          << label << " K(" << i << "," << k << ")";
+      unsymmetric |= std::abs(K[i * nd + k] - K[k * nd + i]) > 1e-6 * scale;
+    }
+  }
+  return unsymmetric;
+}
+
+// Expects the kernel's stress at every quadrature point, and its average, to be `expected`
+// (6 Voigt components) within 1e-12.
+template <class Kernel, class Material>
+void expectUniformStress(const Kernel& kernel, const std::vector<double>& x,
+                         const std::vector<double>& u, const Material& material,
+                         const double* expected, const std::string& label) {
+  std::vector<double> stress(6 * kernel.numQuadraturePoints());
+  double average[6];
+  kernel.stresses(x.data(), u.data(), material, nullptr, nullptr, stress.data(), average);
+  for (int q = 0; q < kernel.numQuadraturePoints(); ++q)
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(stress[6 * q + k], expected[k], 1e-12) << label << " q=" << q;
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(average[k], expected[k], 1e-12) << label;
+}
 
 // An element of `Kernel` on distortedNodes(t): x holds 3 coordinates per node, n nodes of d
 // displacement components each.

@@ -52,14 +52,7 @@ TEST(SmallStrainKernel, ConstantStrainGivesExactStress) {
       for (int j = 0; j < 6; ++j)
         expected[i] += material.C()[i * 6 + j] * eps[j];
     const auto u = e.affineDisplacement(G, c);
-    std::vector<double> stress(6 * e.kernel.numQuadraturePoints());
-    double average[6];
-    e.kernel.stresses(e.x.data(), u.data(), material, nullptr, nullptr, stress.data(), average);
-    for (int q = 0; q < e.kernel.numQuadraturePoints(); ++q)
-      for (int k = 0; k < 6; ++k)
-        EXPECT_NEAR(stress[6 * q + k], expected[k], 1e-12) << nameOf(t) << " q=" << q;
-    for (int k = 0; k < 6; ++k)
-      EXPECT_NEAR(average[k], expected[k], 1e-12) << nameOf(t);
+    test::expectUniformStress(e.kernel, e.x, u, material, expected, nameOf(t));
   }
 }
 
@@ -99,7 +92,7 @@ TEST(SmallStrainKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMa
   for (ElementType t : test::solidTypes()) {
     Element e(t);
     const int nd = e.n * e.d, nq = e.kernel.numQuadraturePoints();
-    std::vector<double> u(nd), f(nd), K(nd * nd), fp(nd), fm(nd);
+    std::vector<double> u(nd), f(nd), K(nd * nd);
     std::vector<double> stateOld(nq), stateNew(nq);
     e.kernel.initializeState(material, stateOld.data());
     for (int q = 0; q < nq; ++q)
@@ -110,21 +103,8 @@ TEST(SmallStrainKernel, TangentMatchesFiniteDifferencesForNonlinearUnsymmetricMa
                      K.data());
     for (int q = 0; q < nq; ++q)
       EXPECT_EQ(stateNew[q], 11 + q);
-    const double h = 1e-6, scale = maxAbs(K);
-    bool unsymmetric = false;
-    for (int k = 0; k < nd; ++k) {
-      auto up = u, um = u;
-      up[k] += h, um[k] -= h;
-      e.kernel.compute(e.x.data(), up.data(), material, stateOld.data(), stateNew.data(), fp.data(),
-                       nullptr);
-      e.kernel.compute(e.x.data(), um.data(), material, stateOld.data(), stateNew.data(), fm.data(),
-                       nullptr);
-      for (int i = 0; i < nd; ++i) {
-        EXPECT_NEAR(K[i * nd + k], (fp[i] - fm[i]) / (2 * h), 1e-6 * scale)
-            << nameOf(t) << " K(" << i << "," << k << ")";
-        unsymmetric |= std::abs(K[i * nd + k] - K[k * nd + i]) > 1e-6 * scale;
-      }
-    }
+    const bool unsymmetric = test::expectTangentMatchesDifferences(
+        e.kernel, e.x, u, material, stateOld.data(), stateNew.data(), K, nameOf(t));
     EXPECT_TRUE(unsymmetric) << nameOf(t) << ": the test material should be unsymmetric";
   }
 }

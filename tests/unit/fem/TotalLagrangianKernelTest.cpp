@@ -15,49 +15,7 @@ namespace {
 using test::maxAbs;
 using test::nameOf;
 
-// Saint Venant-Kirchhoff written out here, so that the kernel's tests do not depend on the
-// materials module: S = lambda tr(E) I + 2 mu E, P = F S,
-// dP_iJ/dF_kL = delta_ik S_JL + F_iI (lambda delta_IJ F_kL + mu (delta_IL F_kJ + delta_JL F_kI)).
-class TestKirchhoff : public Material {
- public:
-  TestKirchhoff(double lambda, double mu) : lambda_(lambda), mu_(mu) {}
-  std::string name() const override { return "test-kirchhoff"; }
-  Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
-  void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
-    const auto F = [&](int i, int J) { return in.F[i * 3 + J]; };
-    double E[3][3], S[3][3], trE = 0;
-    for (int I = 0; I < 3; ++I)
-      for (int J = 0; J < 3; ++J) {
-        double c = 0;
-        for (int k = 0; k < 3; ++k)
-          c += F(k, I) * F(k, J);
-        E[I][J] = 0.5 * (c - (I == J));
-      }
-    for (int I = 0; I < 3; ++I)
-      trE += E[I][I];
-    for (int I = 0; I < 3; ++I)
-      for (int J = 0; J < 3; ++J)
-        S[I][J] = lambda_ * trE * (I == J) + 2 * mu_ * E[I][J];
-    for (int i = 0; i < 3; ++i)
-      for (int J = 0; J < 3; ++J) {
-        double p = 0;
-        for (int I = 0; I < 3; ++I)
-          p += F(i, I) * S[I][J];
-        out.P[i * 3 + J] = p;
-        for (int k = 0; k < 3; ++k)
-          for (int L = 0; L < 3; ++L) {
-            double a = (i == k) * S[J][L];
-            for (int I = 0; I < 3; ++I)
-              a += F(i, I) *
-                   (lambda_ * (I == J) * F(k, L) + mu_ * ((I == L) * F(k, J) + (J == L) * F(k, I)));
-            out.dPdF[(i * 3 + J) * 9 + k * 3 + L] = a;
-          }
-      }
-  }
-
- private:
-  double lambda_, mu_;
-};
+using test::TestKirchhoff;
 
 using Element = test::KernelElement<TotalLagrangianKernel>;
 
