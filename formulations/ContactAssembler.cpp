@@ -102,6 +102,8 @@ void ContactAssembler::add(const ContactPoint& pt, const std::vector<double>& re
     return state_.constrained(j < nd ? pt.surfacePos[j] : pt.geometrySurfacePos[j - nd]);
   };
   for (int i = 0; i < nd; ++i) {
+    if (!contactForces_.is_null() && pt.rows[i] >= 0 && pt.rows[i] < ownedDisplacements_)
+      contactForces_[pt.rows[i]] += re[i];
     if (pt.rows[i] < 0 || state_.constrained(pt.surfacePos[i])) continue;
     if (!residual_.is_null()) residual_[pt.rows[i]] += re[i];
     if (!withTangent_) continue;
@@ -114,9 +116,14 @@ void ContactAssembler::add(const ContactPoint& pt, const std::vector<double>& re
   }
 }
 
+void ContactAssembler::collectContactForces(Vector* forces) {
+  contactForces_ = forces ? forces->getDataNonConst(0) : Teuchos::null;
+}
+
 void ContactAssembler::end() {
   if (withTangent_) matrix_->fillComplete(map_, map_);
   residual_ = Teuchos::null;
+  contactForces_ = Teuchos::null;
 }
 
 }  // namespace contactlab

@@ -31,6 +31,9 @@ class ContactAssembler {
   void begin(Vector* residual, const Vector* solidResidual, const Matrix* solidTangent);
   void add(const ContactPoint& pt, const std::vector<double>& re, const std::vector<double>& ke,
            bool geometric);
+  // Until end(), also sums each point's force on the solid's owned dofs into `forces` (shaped
+  // as the solid's vectors), constrained rows included: the supports' share of the reactions.
+  void collectContactForces(Vector* forces);
   void end();
 
  private:
@@ -41,7 +44,7 @@ class ContactAssembler {
   std::vector<std::size_t> solidOffsets_;  // solid CRS entry -> our CRS entry
   bool patternChanged_ = true;
   // The assembly in progress.
-  Teuchos::ArrayRCP<double> residual_;
+  Teuchos::ArrayRCP<double> residual_, contactForces_;
   bool withTangent_ = false;
   std::vector<double> row_;
   std::vector<LO> columns_;

@@ -495,6 +495,10 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
   const auto start = std::chrono::steady_clock::now();
   state_->import(x);
   assembler_->begin(residual, ru.get(), withTangent ? solid_.tangent().get() : nullptr);
+  // The contact forces on the solid's dofs, for the reactions: at a support's node contact
+  // pushes on the support, not on the body.
+  Teuchos::RCP<Vector> contactForces = residual ? solid_.createVector() : Teuchos::null;
+  assembler_->collectContactForces(contactForces.get());
   std::vector<double> re, ke;
   statusChanges_ = 0;
   for (ContactPoint& pt : points_) {
@@ -509,6 +513,7 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
     assembler_->add(pt, re, ke, geometric || field);
   }
   assembler_->end();
+  if (contactForces) solid_.addToReactions(*contactForces);
   solid_.symmetry().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
   contactSeconds_ += secondsSince(start);
 }

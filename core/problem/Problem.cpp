@@ -430,6 +430,24 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   if (!deferSymmetry_) symmetry_->reduce(reducedTangent, residual);
 }
 
+void Problem::addToReactions(const Vector& forces) {
+  const auto f = forces.getData(0);
+  std::vector<double> sums(3 * model_.dirichlet.size(), 0.0), global(sums.size(), 0.0);
+  for (const auto& c : constraints_)
+    sums[3 * c.condition + c.component] += f[c.lid];
+  if (!sums.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
+                       global.data());
+  for (std::size_t d = 0; d < model_.dirichlet.size(); ++d)
+    for (int c = 0; c < 3; ++c)
+      reactions_[d].force[c] += global[3 * d + c];
+  if (symmetry_->empty()) return;
+  const auto planes = symmetry_->reactions(forces);
+  for (std::size_t s = 0; s < planes.size(); ++s)
+    for (int c = 0; c < 3; ++c)
+      reactions_[model_.dirichlet.size() + s].force[c] += planes[s][c];
+}
+
 void Problem::commitState() {
   for (auto& e : elements_) {
     if (e.stateNew.empty()) continue;

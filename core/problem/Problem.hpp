@@ -80,8 +80,12 @@ class Problem : public NonlinearSystem {
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
   AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
   // Reactions of the Dirichlet conditions (those of the symmetry planes normal to an axis
-  // among them), then of the inclined symmetry planes, at the last assemble() with a residual.
+  // among them), then of the inclined symmetry planes, at the last assemble() with a residual,
+  // plus what addToReactions added since (the contact forces at supported nodes).
   const std::vector<Reaction>& reactions() const { return reactions_; }
+  // Adds forces that other terms put on the constrained dofs (contact's, shaped as an owned
+  // displacement vector) to the reactions of the last assembly (collective).
+  void addToReactions(const Vector& forces);
   // Force each spring exerts on the body (-sum k u over its nodes), at the same assembly.
   const std::vector<Reaction>& springForces() const { return springForces_; }
   // Internal variables: the last assembled (trial) state becomes the converged one.
