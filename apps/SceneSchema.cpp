@@ -104,7 +104,8 @@ ParameterList symmetryItem() {
   ParameterList p;
   p.set("Group", "",
         "Boundary physical group on a plane (a line in 2D): its nodes keep n . u = 0 and slide "
-        "freely in it (a roller)");
+        "freely in it (a roller), and a contact point on it has no friction along n (zero by "
+        "symmetry; a plain Dirichlet condition does not say that, so declare a cut here)");
   p.set("Normal", Teuchos::Array<double>(3, 0.0),
         "Normal of the plane (any length, either sense); [0, 0, 0] fits it through the group's "
         "nodes. The group must lie on the plane (within 1e-6 of its extent). A plane normal to "

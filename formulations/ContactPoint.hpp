@@ -57,6 +57,9 @@ struct ContactPoint {
   // Orthonormal directions over the displacement dofs of `dofs` that inclined symmetry planes
   // remove from the free ones (PrescribedSlip.hpp); empty without such a plane.
   std::vector<std::vector<double>> removedDirections;
+  // Unit normals of the symmetry planes through the slave node (any: inclined or normal to an
+  // axis), whose friction direction symmetry drops (PrescribedSlip.hpp).
+  std::vector<std::array<double, 3>> symmetryNormals;
   std::vector<LO> cols, rows;
   std::vector<int> surfacePos;
   // Geometric linearization: the displacement dofs of the master nodes around the facet that

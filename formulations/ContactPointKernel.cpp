@@ -84,7 +84,11 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   law.evaluate(in, out);
   pt.prescribedSlip = 0;
   if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_) {
-    const PrescribedSlip prescribed = prescribedSlip(B, nt, nu, pt.freeDofs, pt.removedDirections);
+    std::vector<std::array<double, 2>> symmetric;
+    for (const auto& normal : pt.symmetryNormals)
+      symmetric.push_back({dot(normal, pt.t1), nt > 1 ? dot(normal, pt.t2) : 0.0});
+    const PrescribedSlip prescribed =
+        prescribedSlip(B, nt, nu, pt.freeDofs, pt.removedDirections, symmetric);
     pt.prescribedSlip = prescribed.prescribed;
     dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
   }

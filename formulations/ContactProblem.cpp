@@ -459,6 +459,7 @@ void ContactProblem::layOutPointDofs() {
       addRemovedDirections(solid_.symmetry().planeNormals(node), first, pt);
     };
     addNode(pt.node);
+    pt.symmetryNormals = solid_.symmetry().allPlaneNormals(pt.node);
     for (std::int64_t m : pt.master)
       addNode(m);
     for (auto& direction : pt.removedDirections)

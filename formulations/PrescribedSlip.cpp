@@ -1,14 +1,44 @@
 #include "formulations/PrescribedSlip.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace contactlab {
 
+namespace {
+
+// The symmetry planes' directions in the tangent plane, orthonormalized: 0, 1 or 2 of them.
+std::vector<std::array<double, 2>> symmetricDirections(
+    int nt, const std::vector<std::array<double, 2>>& symmetric) {
+  std::vector<std::array<double, 2>> basis;
+  for (std::array<double, 2> q : symmetric) {
+    if (nt == 1) q[1] = 0;
+    if (std::hypot(q[0], q[1]) <= 0.5) continue;  // the plane's normal is the contact's
+    for (const auto& b : basis) {
+      const double d = q[0] * b[0] + q[1] * b[1];
+      q[0] -= d * b[0];
+      q[1] -= d * b[1];
+    }
+    const double norm = std::hypot(q[0], q[1]);
+    if (norm <= 0.5) continue;  // the earlier planes span it
+    basis.push_back({q[0] / norm, q[1] / norm});
+  }
+  return basis;
+}
+
+}  // namespace
+
 PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
                               const std::vector<char>& free,
-                              const std::vector<std::vector<double>>& removed) {
+                              const std::vector<std::vector<double>>& removed,
+                              const std::vector<std::array<double, 2>>& symmetric) {
   PrescribedSlip s;
   if (nt == 0) return s;
+  const auto bySymmetry = symmetricDirections(nt, symmetric);
+  if (static_cast<int>(bySymmetry.size()) >= nt) {
+    s.prescribed = nt;
+    return s;
+  }
   // Gram matrices of the slip rows over the allowed motion (M = B P B^T, P the projector on the
   // free dofs less the removed directions) and over all dofs (scale).
   double M[2][2] = {{0, 0}, {0, 0}}, scale = 0;
@@ -35,6 +65,22 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
   const double tiny = 1e-12 * scale;
   if (nt == 1) {
     s.prescribed = M[0][0] <= tiny ? 1 : 0;
+    return s;
+  }
+  if (!bySymmetry.empty()) {
+    // The one direction symmetry leaves (f, normal to the plane's q) is free if B moves it.
+    const auto& q = bySymmetry.front();
+    const double f[2] = {-q[1], q[0]};
+    double fMf = 0;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        fMf += f[k] * M[k][j] * f[j];
+    if (fMf <= tiny) {
+      s.prescribed = 2;
+      return s;
+    }
+    s.prescribed = 1;
+    s.basis = {{{f[0], q[0]}, {f[1], q[1]}}};  // columns f, q
     return s;
   }
   // 2 x 2: eigenvalues of the symmetric M, the smaller one's eigenvector prescribed.

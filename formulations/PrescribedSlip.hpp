@@ -9,6 +9,13 @@
 // force along q is the support's, and the friction law acts on the free directions. The
 // other rows are rotated with the same orthonormal basis (an invertible recombination of the
 // equations, so the free direction's law is unchanged).
+//
+// A slave node on a symmetry plane drops the friction along the plane's normal too, whatever B
+// says: the tangential traction across a symmetry plane is zero by symmetry. B alone misses it
+// where the master point lies a little inside a facet whose other nodes are off the plane (a
+// faceted hole's chord: measured in the tube expansion, that direction's free part was 4e-4 of
+// the operator, enough to keep it but not to hold its multiplier, and the tangent was singular
+// once the point slipped).
 #include "formulations/ContactLaw.hpp"
 
 #include <array>
@@ -27,9 +34,13 @@ struct PrescribedSlip {
 // displacement dofs; free[a] whether dof a is free (not Dirichlet); `removed`: orthonormal
 // directions over the nu dofs, on free dofs only, that the free space also lacks (the normal of
 // an inclined symmetry plane at a node): the motion allowed is the free dofs less these.
+// `symmetric`: the normals of the symmetry planes through the slave node in the point's (t1, t2)
+// coordinates (n . t1, n . t2); a normal that lies mostly in the tangent plane (|s| > 1/2, the
+// contact normal in the symmetry plane) prescribes its direction.
 PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
                               const std::vector<char>& free,
-                              const std::vector<std::vector<double>>& removed = {});
+                              const std::vector<std::vector<double>>& removed = {},
+                              const std::vector<std::array<double, 2>>& symmetric = {});
 
 // Replaces the friction multipliers' rows of `out` (law variables 2 + nt .. 1 + 2 nt, after the
 // kinematic ones and p) as described above. Lambda: the multipliers at the point.

@@ -18,6 +18,9 @@ struct SolidModel {
   std::map<std::string, std::shared_ptr<const Material>> materials;  // by block name
   std::vector<DirichletCondition> dirichlet;
   std::vector<SymmetryCondition> symmetries;
+  // The symmetry planes normal to an axis, which resolveSymmetryConditions turns into Dirichlet
+  // conditions: kept for what symmetry says beyond n . u = 0 (no friction across the plane).
+  std::vector<SymmetryCondition> axisSymmetries;
   std::vector<SurfaceLoad> surfaceLoads;
   std::vector<BodyForce> bodyForces;
   std::vector<CentrifugalLoad> centrifugalLoads;

@@ -119,6 +119,7 @@ void resolveSymmetryConditions(SolidModel& model) {
       inclined.push_back(s);
       continue;
     }
+    model.axisSymmetries.push_back(s);
     DirichletCondition bc;
     bc.name = s.name;
     bc.group = s.group;
@@ -150,6 +151,9 @@ SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& 
       if (!repeated) list.push_back({static_cast<int>(s), n});
     }
   }
+  for (const SymmetryCondition& axis : model.axisSymmetries)
+    for (auto node : mesh.boundaryNodes(axis.group))
+      if (dofs.globalNode(node) >= 0) axisPlanes_[node].push_back(axis.normal);
   const int rank = comm_->getRank();
   for (const auto& [node, list] : planes) {
     const bool owned = dofs.nodeOwner(node) == rank;
@@ -208,6 +212,13 @@ SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& 
   }
   const int local = all_.empty() ? 0 : 1;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(anywhere_));
+}
+
+std::vector<std::array<double, 3>> SymmetryConstraints::allPlaneNormals(std::int64_t node) const {
+  auto normals = planeNormals(node);
+  const auto it = axisPlanes_.find(node);
+  if (it != axisPlanes_.end()) normals.insert(normals.end(), it->second.begin(), it->second.end());
+  return normals;
 }
 
 std::vector<std::array<double, 3>> SymmetryConstraints::planeNormals(std::int64_t node) const {

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ class SymmetryConstraints {
   const std::vector<std::int64_t>& nodes() const { return nodes_; }
   // The unit normals of the inclined planes through a mesh node (empty: none).
   std::vector<std::array<double, 3>> planeNormals(std::int64_t node) const;
+  // The unit normals of every symmetry plane through a mesh node: the inclined ones and those
+  // imposed as Dirichlet conditions (model.axisSymmetries).
+  std::vector<std::array<double, 3>> allPlaneNormals(std::int64_t node) const;
 
   // u_k = sum_j c_kj u_j on this rank's dependent components. `owned`: an owned vector whose
   // first entries are the solid's owned dofs (the solid's or the contact problem's).
@@ -81,8 +85,9 @@ class SymmetryConstraints {
   int dim_;
   std::vector<Dependent> all_;
   std::vector<OwnedNode> ownedNodes_;
-  std::vector<std::int64_t> nodes_;                          // sorted
-  std::vector<std::vector<std::array<double, 3>>> normals_;  // per nodes_ entry
+  std::vector<std::int64_t> nodes_;                                        // sorted
+  std::vector<std::vector<std::array<double, 3>>> normals_;                // per nodes_ entry
+  std::map<std::int64_t, std::vector<std::array<double, 3>>> axisPlanes_;  // by mesh node
   std::size_t numConditions_ = 0;
   int anywhere_ = 0;
   Teuchos::RCP<const Comm> comm_;

@@ -50,10 +50,42 @@ TEST(PrescribedSlip, AnInclinedSymmetryPlaneFixesItsNormalDirection) {
   EXPECT_EQ(prescribedSlip(pointOnAPlane(a), 2, 3, {1, 1, 1}, {{0, 0, 1}}).prescribed, 0);
 }
 
+// A slave node on a symmetry plane against a faceted master: the master point lies a little
+// inside a facet whose other nodes are off the plane, so B moves the slip along the plane's
+// normal through them, by a shape value of 2 % (the tube expansion's hole). The free part of
+// that direction is 4e-4 of the operator: kept by B alone, it is dropped by symmetry.
+std::vector<double> slaveOnAPlaneAgainstAFacet(double shape) {
+  // dofs: slave (x, y, z), master node on the plane, master node off it; the plane is y = 0
+  // (normal e_y), the contact normal x, t1 = z, t2 = y. The slave's y is fixed.
+  const double nOn = 1 - shape, nOff = shape;
+  return {1, 0, 0, -nOn, 0,    0,    -nOff, 0,     0,      // gap: x
+          0, 0, 1, 0,    0,    -nOn, 0,     0,     -nOff,  // slip 1: z
+          0, 1, 0, 0,    -nOn, 0,    0,     -nOff, 0};     // slip 2: y
+}
+
+TEST(PrescribedSlip, ASymmetryPlaneThroughTheSlaveNodeDropsItsDirectionWhateverTheMaster) {
+  const auto B = slaveOnAPlaneAgainstAFacet(0.02);
+  const std::vector<char> free{1, 0, 1, 1, 0, 1, 1, 1, 1};  // the off-plane master moves in y
+  EXPECT_EQ(prescribedSlip(B, 2, 9, free).prescribed, 0);   // B alone keeps y
+  const PrescribedSlip s = prescribedSlip(B, 2, 9, free, {}, {{0.0, 1.0}});  // e_y: (t1, t2)
+  ASSERT_EQ(s.prescribed, 1);
+  EXPECT_NEAR(std::abs(s.basis[1][1]), 1.0, 1e-14);  // prescribed column: t2 = y
+  EXPECT_NEAR(std::abs(s.basis[0][0]), 1.0, 1e-14);  // free column: t1 = z
+  // z fixed everywhere too: nothing is left free.
+  const std::vector<char> zFixed{1, 0, 0, 1, 0, 0, 1, 1, 0};
+  EXPECT_EQ(prescribedSlip(B, 2, 9, zFixed, {}, {{0.0, 1.0}}).prescribed, 2);
+  // Two planes through the node (an edge of the sector) prescribe both directions.
+  EXPECT_EQ(prescribedSlip(B, 2, 9, free, {}, {{0.0, 1.0}, {1.0, 0.0}}).prescribed, 2);
+  // A plane whose normal is the contact normal (n . t small) prescribes nothing.
+  EXPECT_EQ(prescribedSlip(B, 2, 9, free, {}, {{0.1, 0.1}}).prescribed, 0);
+}
+
 TEST(PrescribedSlip, TwoDimensionsOnASymmetryAxis) {
   // 2D: (gap, slip) = (y, x) on one node; x fixed.
   EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {0, 1}).prescribed, 1);
   EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {1, 0}).prescribed, 0);
+  // The symmetry axis x = 0 through the slave node: its normal is the tangent.
+  EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {1, 0}, {}, {{1.0, 0.0}}).prescribed, 1);
 }
 
 TEST(PrescribedSlip, TheDroppedMultiplierIsZeroAndTheOtherRowIsKept) {
