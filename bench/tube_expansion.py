@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""The seed's tube-expansion table in its shape (doc/performance.md, "Tube expansion"):
+scenes/tube-expansion-3d.yaml at mu = 0, 0.1, 0.3 under the fixed point (PF), partial Newton
+(NP) and generalized Newton (NG), each with the cycling treatment the presets use. Per run: the
+outcome (or the failure's name), load steps, Newton iterations, linear solves, wall time, peak
+memory, the residual normal force over the sector, and the mid-joint residual pressure (mean
+nodal pressure over z in [7.5, 12.5] mm after the release) with its deviation from the fixed
+point's at the same mu (the seed's "NP within 0.1 % of PF, NG 4.5 % off").
+
+usage: tube_expansion.py CONTACTLAB OUTDIR [--element hex8|hex20|hex27]
+                         [--discretization node-to-segment|mortar] [--steps N] [--doc DOC]
+The residual depends on the load step (backward Euler through a non-proportional plastic path:
+first order; hex8 NTS frictionless, residual normal force 384 / 412 / 423 / 428 / 430 N at 8 /
+16 / 32 / 64 / 128 steps), so a preset whose steps are cut follows another path: the default 32
+steps keep that within ~2 %.
+The scene's own (hex27, mortar) takes ~30 s frictionless and ~6 min per frictional run on this
+machine; hex8 node-to-segment a few seconds. --doc writes the table into DOC's
+<!-- bench:tube-expansion-ELEMENT:start/end --> block."""
+import argparse, csv, os
+
+import docblock
+import runs
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENE = os.path.join(HERE, "..", "scenes", "tube-expansion-3d.yaml")
+METHODS = [("PF", "fixed-point"), ("NP", "partial-newton"), ("NG", "generalized-newton")]
+
+
+def mid_joint_pressure(contact_csv):
+    rows = [r for r in csv.DictReader(open(contact_csv))
+            if 7.5 <= float(r["reference_z"]) <= 12.5]
+    return sum(float(r["pressure"]) for r in rows) / len(rows) if rows else float("nan")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("exe")
+    parser.add_argument("out")
+    parser.add_argument("--element", default="hex27")
+    parser.add_argument("--discretization", default="mortar")
+    parser.add_argument("--steps", type=int, default=32,
+                        help="load steps (the scene's 8 leave the residual 11 % from converged)")
+    parser.add_argument("--doc")
+    args = parser.parse_args()
+    lines = ["| μ | method | outcome | steps | Newton | linear solves | wall | peak memory "
+             "| residual normal force | mid-joint pressure | vs PF |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    print("\n".join(lines), flush=True)
+    for mu in (0.0, 0.1, 0.3):
+        reference = None
+        for short, method in METHODS:
+            folder = os.path.join(args.out, f"mu{mu:g}-{method}")
+            sets = [f"Mesh/tube-in-tubesheet/Element={args.element}",
+                    f"Contact/joint/Discretization={args.discretization}",
+                    f"Contact/joint/Friction={mu:g}", f"Algorithm/Method={method}",
+                    f"Load Steps/Steps={args.steps}"]
+            summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True)
+            if summary is None:
+                line = f"| {mu:g} | {short} | no summary: {done.stderr.strip()[-200:]} |"
+            else:
+                ok = summary.get("converged", False)
+                outcome = "converged" if ok else f"fails: {summary.get('failure', '?')}"
+                pressure = mid_joint_pressure(os.path.join(folder, "contact.csv")) if ok else None
+                if method == "fixed-point" and ok:
+                    reference = pressure
+                deviation = ("–" if pressure is None or reference is None or method == "fixed-point"
+                             else f"{100 * (pressure - reference) / reference:+.2f} %")
+                force = summary["contact"].get("normal_force") if ok else None
+                line = (f"| {mu:g} | {short} | {outcome} | {summary['load_steps']['converged']} ({summary['load_steps']['cuts']} cuts) | "
+                        f"{summary['iterations']['newton']} | {summary['linear_solves']} | "
+                        f"{wall:.1f} s | {summary.get('peak_memory_mb', 0):.0f} MB | "
+                        + (f"{force:.2f} N | {pressure:.2f} MPa | {deviation} |" if ok
+                           else "– | – | – |"))
+            lines.append(line)
+            print(line, flush=True)
+    if args.doc:
+        docblock.write(args.doc, f"tube-expansion-{args.element}",
+                       f"bench/tube_expansion.py --element {args.element} --discretization "
+                       f"{args.discretization} --steps {args.steps}", "\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
