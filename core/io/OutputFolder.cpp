@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 // What a run writes (RunCommand, VtkSeriesWriter, AtomicFile's temporaries).
 bool isRunOutput(const std::string& name) {
   static const std::regex pattern(
-      R"((result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact\.csv|summary\.json)"
+      R"((result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact\.csv|summary\.json|checkpoint\.h5)"
       R"(|\..+\.tmp\.\d+))");
   return std::regex_match(name, pattern);
 }
