@@ -86,6 +86,13 @@ void resolveSolverMode(Teuchos::ParameterList& scene, bool symmetric) {
   mumps.set("Mode", symmetric ? "symmetric-indefinite" : "general");
 }
 
+// A load time in a message: 0.625, not 0.625000.
+std::string formatTime(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t);
+  return buffer;
+}
+
 // The run's state before its first step: at rest, or a checkpoint's (--restart, Initial State).
 struct StartingPoint {
   std::string checkpoint;  // the file, empty: from rest
@@ -201,9 +208,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         if (from.restart) from.start.stepSize = from.info.stepSize;
       }
       if (from.start.time >= sm.solverOptions.endTime * (1 - 1e-12))
-        throw InputError(what + ": the checkpoint is at t = " + std::to_string(from.info.time) +
+        throw InputError(what + ": the checkpoint is at t = " + formatTime(from.info.time) +
                          ", not before Load Steps/End Time = " +
-                         std::to_string(sm.solverOptions.endTime) + ": nothing to run");
+                         formatTime(sm.solverOptions.endTime) + ": nothing to run");
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);

@@ -6,13 +6,14 @@ uninterrupted run: displacements, contact pressure and tractions, stresses and p
 of the last frame, bitwise (the same operations in the same order), and the continued run's
 outputs hold every step once (steps.csv rows 1..N, result.pvd frames at the same times).
 
-The scenes are small versions of scenes/cattaneo-mindlin-2d.yaml (Coulomb friction: the slip
-history matters) and scenes/plastic-strip-2d.yaml (J2 plasticity loaded past yield and unloaded:
+The scenes are small versions of scenes/cattaneo-mindlin-2d.yaml (Coulomb friction with the
+augmented Lagrangian and with penalty: the slip history matters) and scenes/plastic-strip-2d.yaml (J2 plasticity loaded past yield and unloaded:
 the internal variables matter). Their loads are tables of absolute times, so that scene A's
 shorter End Time does not rescale them, and the steps are 1/8, exact in binary, so that A's
 last time is the long run's.
 
-usage: check_restart.py CONTACTLAB CASE WORKDIR [--ranks N]   (CASE: friction | plasticity)"""
+usage: check_restart.py CONTACTLAB CASE WORKDIR [--ranks N]
+       (CASE: friction | friction-penalty | plasticity)"""
 import argparse, csv, os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -83,6 +84,15 @@ PLASTICITY = """contactlab:
   Load Steps: {Steps: 8, End Time: 1.0}
 """
 
+# The penalty law carries its friction history in the checkpoint's contact/resistance (the
+# multiplier laws in their multipliers).
+FRICTION_PENALTY = FRICTION.replace("Name: restart-friction", "Name: restart-friction-penalty").replace(
+    """        Type: augmented-lagrangian
+        augmented-lagrangian: {Normal Augmentation: 100.0, Tangential Augmentation: 1000.0}""",
+    """        Type: penalty
+        penalty: {Normal Penalty: 1000.0, Tangential Penalty: 1000.0}""")
+SCENES = {"friction": FRICTION, "friction-penalty": FRICTION_PENALTY, "plasticity": PLASTICITY}
+
 # Fields of the last frame compared (those the frame has).
 FIELDS = ["displacement", "contact_pressure", "tangential_traction", "slip", "stress",
           "equivalent_plastic_strain"]
@@ -135,6 +145,26 @@ def compare(reference, other, what):
           f"({'bitwise' if bitwise else f'to {worst:.1e} relative'})")
 
 
+def check_file_layout(out, k):
+    """checkpoint.h5 as doc/scenes.md describes it, read with h5py: the step, its time, and per
+    node id the displacement of the run's last frame."""
+    import h5py
+    import vtk.util.numpy_support as ns
+    with h5py.File(os.path.join(out, "checkpoint.h5"), "r") as f:
+        if f.attrs["step"] != k or f.attrs["time"] != k / 8:
+            fail(f"checkpoint.h5 says step {f.attrs['step']}, t = {f.attrs['time']}")
+        u = dict(zip(f["nodes/id"][:], f["nodes/displacement"][:]))
+    grid = read_grid(result_frames(out)[-1][1])
+    ids = ns.vtk_to_numpy(grid.GetPointData().GetArray("node_id")).astype(int)
+    frame = ns.vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+    dim = len(next(iter(u.values())))
+    for i, node in enumerate(ids):
+        if (u[node] != frame[i][:dim]).any():
+            fail(f"checkpoint.h5: node {node}'s displacement {u[node]}, the frame's {frame[i]}")
+    print(f"ok   checkpoint.h5 read with h5py: step {k}, t = {k / 8}, the displacements of the "
+          f"last frame by node id")
+
+
 def step_times(out):
     rows = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
     return [(int(r["step"]), r["time"]) for r in rows]
@@ -143,7 +173,7 @@ def step_times(out):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("app")
-    parser.add_argument("case", choices=["friction", "plasticity"])
+    parser.add_argument("case", choices=sorted(SCENES))
     parser.add_argument("work")
     parser.add_argument("--ranks", type=int, default=1)
     args = parser.parse_args()
@@ -151,7 +181,7 @@ def main():
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
     scene = os.path.join(args.work, f"{args.case}.yaml")
-    open(scene, "w").write(FRICTION if args.case == "friction" else PLASTICITY)
+    open(scene, "w").write(SCENES[args.case])
     full, killed = os.path.join(args.work, "full"), os.path.join(args.work, "killed")
     first, second = os.path.join(args.work, "chain-a"), os.path.join(args.work, "chain-b")
 
@@ -184,7 +214,8 @@ def main():
     if [s for s, _ in step_times(second)] != list(range(k + 1, 9)):
         fail(f"the chained run's steps are {step_times(second)}, not {k + 1}..8")
     compare(full, second, f"chained run (A to step {k}, B from A's checkpoint)")
-    print("4 passed, 0 failed")
+    check_file_layout(first, k)
+    print("5 passed, 0 failed")
 
 
 if __name__ == "__main__":
