@@ -262,7 +262,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   ProbeValues probes(sm, *problem);
   VtkSteps vtk(outDir, rawMpiComm(comm));
   // The series starts from rest: a t = 0 frame before step 1 (also what a run that converges
-  // no step leaves).
+  // no step leaves); a run from an earlier state starts from that state, at its time; a
+  // continued run appends to its series.
   if (!x) x = system.createVector();
   try {
     if (from.restart) {
