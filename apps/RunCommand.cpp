@@ -269,7 +269,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (from.restart) {
       // Continued: the series keep what was written up to the checkpoint, the rest is dropped.
       collectively(*comm, [&] {
-        if (root) stepsCsv.resume(from.info.stepsRows);
+        if (!root) return;
+        removeTemporaries(outDir);
+        stepsCsv.resume(from.info.stepsRows);
       });
       if (sm.writeVtk)
         collectively(*comm, [&] { vtk.resume(static_cast<int>(from.info.vtkFrames)); });

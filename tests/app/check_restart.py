@@ -195,7 +195,12 @@ def main():
         fail(f"the run was not killed after step {k} (exit {proc.returncode})")
     if len(step_times(killed)) != k:
         fail(f"the killed run's steps.csv has {len(step_times(killed))} rows, not {k}")
+    # What a writer killed mid-file leaves: a temporary, removed by the continued run.
+    open(os.path.join(killed, ".steps.csv.tmp.999999"), "w").write("half a file")
     must_succeed(*run([exe, "run", "--restart", killed, "--quiet"], ranks))
+    left = [f for f in os.listdir(killed) if ".tmp." in f]
+    if left:
+        fail(f"the continued run left temporaries: {left}")
     if step_times(killed) != step_times(full):
         fail(f"the continued steps.csv lists {step_times(killed)}, the uninterrupted run's "
              f"{step_times(full)}")
