@@ -10,13 +10,14 @@ namespace contactlab {
 RunReport runStatic(NonlinearSystem& system, ContactControls* controls, LinearSolver& solver,
                     const StaticSolverOptions& options, Vector& u,
                     const StaticSolver::StepCallback& onStep,
-                    const StaticSolver::IterationCallback& onIteration) {
+                    const StaticSolver::IterationCallback& onIteration, const RunStart& start) {
   std::unique_ptr<NewtonMethod> newton;
   if (options.driver == "nox")
     newton = std::make_unique<NoxNewton>(system, solver, controls, options.lineSearch, options.nox);
   else
     newton = std::make_unique<PlainNewton>(system, solver, controls);
-  return StaticSolver(system, controls, *newton, options, &solver).run(u, onStep, onIteration);
+  return StaticSolver(system, controls, *newton, options, &solver)
+      .run(u, onStep, onIteration, start);
 }
 
 }  // namespace contactlab

@@ -10,6 +10,7 @@ namespace contactlab {
 RunReport runStatic(NonlinearSystem& system, ContactControls* controls, LinearSolver& solver,
                     const StaticSolverOptions& options, Vector& u,
                     const StaticSolver::StepCallback& onStep = {},
-                    const StaticSolver::IterationCallback& onIteration = {});
+                    const StaticSolver::IterationCallback& onIteration = {},
+                    const RunStart& start = {});
 
 }  // namespace contactlab

@@ -469,11 +469,11 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
 }
 
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
-                            const IterationCallback& onIteration) {
+                            const IterationCallback& onIteration, const RunStart& start) {
   RunReport report;
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
-  if (controls_) controls_->seedInitialStatuses(u, 0.0);
-  slowDynamics_.start(u, 0.0);
+  if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
+  slowDynamics_.start(u, start.time);
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
   struct StaticAfterRun {
     const SlowDynamics& slowDynamics;
@@ -483,11 +483,11 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   auto x = problem_.createVector();
   const double nominal = options_.endTime / options_.steps;
   const double smallest = std::ldexp(nominal, -options_.maxCuts);
-  double t = 0, dt = nominal;
+  double t = start.time, dt = start.stepSize > 0 ? start.stepSize : nominal;
   int cuts = 0;  // in a row, for the current step
   while (t < options_.endTime * (1 - 1e-12)) {
     StepReport sr;
-    sr.step = report.steps + 1;
+    sr.step = start.step + report.steps + 1;
     sr.cuts = cuts;
     // Land exactly on End Time (no sliver of a last step).
     sr.time = (options_.endTime - (t + dt) < 1e-9 * nominal) ? options_.endTime : t + dt;
@@ -541,12 +541,16 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     slowDynamics_.commit(problem_, u, sr.time);
     problem_.commitState(u, sr.time);
     ++report.steps;
+    sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;
+    sr.runIterations = report.iterations;
+    sr.runLinearSolves = report.linearSolves;
+    sr.runCuts = report.cuts;
     const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);
     report.seconds.output +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     t = sr.time;
-    if (cuts == 0) dt = std::min(2 * dt, nominal);
+    dt = sr.nextStepSize;
     cuts = 0;
   }
   report.converged = true;

@@ -93,6 +93,17 @@ struct RunReport {
   PhaseSeconds seconds;
 };
 
+// Where a run starts: at rest at t = 0 (the default), or from a converged state of an earlier
+// run (a checkpoint: apps/RunCheckpoint) at `time`, after `step` converged steps, with the step
+// size that run would have tried next (0: End Time / Steps). A state handed in is taken as it
+// is: the contact statuses and normal fields are not seeded again.
+struct RunStart {
+  double time = 0;
+  int step = 0;
+  double stepSize = 0;
+  bool fromState = false;
+};
+
 class StaticSolver {
  public:
   using StepCallback = std::function<void(const StepReport&, const Vector& u)>;
@@ -107,7 +118,8 @@ class StaticSolver {
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
   // solution and onStep runs (results are written there). Never throws on a numerical failure:
   // the report names it, and u keeps the last converged step.
-  RunReport run(Vector& u, const StepCallback& onStep, const IterationCallback& onIteration = {});
+  RunReport run(Vector& u, const StepCallback& onStep, const IterationCallback& onIteration = {},
+                const RunStart& start = {});
 
  private:
   // One attempt at the step to time t from the converged state u; x holds the result.

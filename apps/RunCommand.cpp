@@ -3,6 +3,7 @@
 #include "algorithms/RunStatic.hpp"
 #include "algorithms/SlowDynamics.hpp"
 #include "apps/DefaultScene.hpp"
+#include "apps/RunCheckpoint.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
 #include "apps/output/ContactCsv.hpp"
@@ -19,7 +20,9 @@
 #include "formulations/ContactProblem.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -83,6 +86,31 @@ void resolveSolverMode(Teuchos::ParameterList& scene, bool symmetric) {
   mumps.set("Mode", symmetric ? "symmetric-indefinite" : "general");
 }
 
+// A load time in a message: 0.625, not 0.625000.
+std::string formatTime(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t);
+  return buffer;
+}
+
+// The run's state before its first step: at rest, or a checkpoint's (--restart, Initial State).
+struct StartingPoint {
+  std::string checkpoint;  // the file, empty: from rest
+  bool restart = false;    // --restart: the same run, continued in its own folder
+  CheckpointInfo info;     // the checkpoint's (after restoring)
+  RunStart start;          // for the solver
+};
+
+// For the tests of restarts: CONTACTLAB_TEST_KILL_AFTER_STEP=k kills every rank with SIGKILL
+// right after step k's outputs and checkpoint are written (a crash at a step boundary, which
+// nothing can clean up after).
+void killAfterStepForTests(int step, const Comm& comm) {
+  const char* value = std::getenv("CONTACTLAB_TEST_KILL_AFTER_STEP");
+  if (value == nullptr || std::atoi(value) != step) return;
+  comm.barrier();
+  std::raise(SIGKILL);
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) {
@@ -93,14 +121,47 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
 
   // 1. Read, validate and build everything that can fail on bad input: nothing is written yet.
   SceneModel sm;
+  StartingPoint from;
+  std::string hash;
+  std::vector<std::string> overrides = options.overrides;
+  std::string scenePath = options.scenePath;
+  Teuchos::RCP<Vector> x;
   std::unique_ptr<Problem> problem;
   std::unique_ptr<ContactProblem> contact;
   std::unique_ptr<LinearSolver> solver;
   try {
-    SceneFile file = options.scenePath.empty()
-                         ? readSceneText(kDefaultScene, "<default scene>", options.overrides)
-                         : readSceneFile(options.scenePath, options.overrides);
+    if (!options.restartDirectory.empty()) {
+      // --restart: the scene and overrides the checkpoint was written with.
+      from.restart = true;
+      from.checkpoint = checkpointPath(options.restartDirectory);
+      try {
+        from.info = readCheckpointInfo(from.checkpoint);
+      } catch (const InputError& e) {
+        throw InputError("--restart " + options.restartDirectory + ": " + e.what());
+      }
+      if (scenePath.empty()) scenePath = from.info.scenePath;
+      overrides = from.info.overrides;
+      overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+    }
+    SceneFile file = scenePath.empty() ? readSceneText(kDefaultScene, "<default scene>", overrides)
+                                       : readSceneFile(scenePath, overrides);
     sm = loadScene(std::move(file), comm);
+    hash = sceneHash(*sm.scene.params);
+    if (from.restart && hash != from.info.sceneHash)
+      throw InputError("--restart " + options.restartDirectory + ": the scene " + sm.scene.path +
+                       " (with the checkpoint's --set overrides) is not the one the checkpoint "
+                       "was written with (some value changed); --restart continues the same "
+                       "run. To go on with other settings, start a new run from the checkpoint: "
+                       "Initial State: {From: " +
+                       options.restartDirectory + "}");
+    if (!from.restart && !sm.initialStateFrom.empty()) {
+      from.checkpoint = checkpointPath(sm.initialStateFrom);
+      try {
+        from.info = readCheckpointInfo(from.checkpoint);
+      } catch (const InputError& e) {
+        throw InputError(sm.scene.path + ": Initial State/From: " + e.what());
+      }
+    }
     if (root)
       for (const std::string& sentence : sm.advice)
         std::cerr << "contactlab: " << sentence << "\n";
@@ -128,6 +189,29 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     } catch (const InputError& e) {
       throw InputError(sm.scene.path + ": Algorithm: " + e.what());
     }
+    if (!from.checkpoint.empty()) {
+      // The state the run starts from: refused now if it is not this model's.
+      NonlinearSystem& system = contact ? static_cast<NonlinearSystem&>(*contact) : *problem;
+      x = system.createVector();
+      const bool continueTime = from.restart || sm.initialStateContinuesTime;
+      const std::string what = from.restart ? "--restart " + options.restartDirectory
+                                            : sm.scene.path + ": Initial State/From";
+      try {
+        from.info = restoreCheckpoint(from.checkpoint, *problem, contact.get(), *x, continueTime);
+      } catch (const InputError& e) {
+        throw InputError(what + ": " + from.checkpoint + ": " + e.what());
+      }
+      from.start.fromState = true;
+      if (continueTime) {
+        from.start.time = from.info.time;
+        from.start.step = from.info.step;
+        if (from.restart) from.start.stepSize = from.info.stepSize;
+      }
+      if (from.start.time >= sm.solverOptions.endTime * (1 - 1e-12))
+        throw InputError(what + ": the checkpoint is at t = " + formatTime(from.info.time) +
+                         ", not before Load Steps/End Time = " +
+                         formatTime(sm.solverOptions.endTime) + ": nothing to run");
+    }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);
     checkSymmetry(*problem, *solver, sm.scene.path);
@@ -140,7 +224,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (root)
         std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
                   << sm.model.mesh->numElements() << " elements)\n";
-    } else {
+    } else if (!from.restart) {
       // Before solving: a folder that cannot be written is found now, not after step 1.
       const std::string folder =
           options.outputDirectory.empty() ? sm.outputDirectory : options.outputDirectory;
@@ -160,8 +244,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   if (options.validateOnly) return 0;
   const double setupSeconds = elapsed();
 
-  const std::string outDir =
-      options.outputDirectory.empty() ? sm.outputDirectory : options.outputDirectory;
+  const std::string outDir = from.restart                      ? options.restartDirectory
+                             : options.outputDirectory.empty() ? sm.outputDirectory
+                                                               : options.outputDirectory;
   const int steps = sm.solverOptions.steps;
   NonlinearSystem& system = contact ? static_cast<NonlinearSystem&>(*contact) : *problem;
   const long long multipliers = contact ? static_cast<long long>(contact->numMultipliers()) : 0;
@@ -177,20 +262,47 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   ProbeValues probes(sm, *problem);
   VtkSteps vtk(outDir, rawMpiComm(comm));
   // The series starts from rest: a t = 0 frame before step 1 (also what a run that converges
-  // no step leaves).
-  if (sm.writeVtk) vtk.writeRest(*problem, contact.get());
+  // no step leaves); a run from an earlier state starts from that state, at its time; a
+  // continued run appends to its series.
+  if (!x) x = system.createVector();
+  try {
+    if (from.restart) {
+      // Continued: the series keep what was written up to the checkpoint, the rest is dropped.
+      collectively(*comm, [&] {
+        if (!root) return;
+        removeTemporaries(outDir);
+        stepsCsv.resume(from.info.stepsRows);
+      });
+      if (sm.writeVtk)
+        collectively(*comm, [&] { vtk.resume(static_cast<int>(from.info.vtkFrames)); });
+    } else if (sm.writeVtk && from.start.fromState) {
+      vtk.write(from.start.time, *problem, contact.get(),
+                contact ? *contact->displacement(*x) : *x);
+    } else if (sm.writeVtk) {
+      vtk.writeRest(*problem, contact.get());
+    }
+  } catch (const InputError& e) {
+    return reportInputError(e, root);
+  }
   SummaryJson summary(sm, *problem, contact.get());
   // Output/Critical Mu Check: the uniqueness check after each converged step.
   std::unique_ptr<StepUniquenessCheck> uniqueness;
   if (sm.criticalMuCheck && contact)
     uniqueness = std::make_unique<StepUniquenessCheck>(sm, *contact, comm);
   RunProgress progress(root && !options.quiet, sm.solverOptions.endTime);
-  auto x = system.createVector();
 
   // The contact block of the last converged step: after a failure, the contact state left in
   // the problem is the failed iterate's, which summary.json reports under a key of its own.
   JsonValue convergedContact;
-  double lastTime = 0;
+  double lastTime = from.start.time;
+  // The checkpoint's bookkeeping: what this output series holds before this run's steps.
+  CheckpointInfo checkpoint;
+  checkpoint.scenePath =
+      scenePath.empty() ? "" : std::filesystem::absolute(scenePath).lexically_normal().string();
+  checkpoint.overrides = overrides;
+  checkpoint.sceneHash = hash;
+  const std::int64_t earlierRows = from.restart ? from.info.stepsRows : 0;
+  int stepsThisRun = 0;
   auto onStep = [&](const StepReport& s, const Vector& state) {
     lastTime = s.time;
     // The displacement part of the system's unknowns (the whole vector without contact).
@@ -213,12 +325,34 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (root) stepsCsv.write();
     probes.record(*solution);
     progress.step(s, steps, elapsed());
+    // The checkpoint last: when it names a step, that step's outputs are all written.
+    ++stepsThisRun;
+    checkpoint.time = s.time;
+    checkpoint.step = s.step;
+    checkpoint.stepSize = s.nextStepSize;
+    checkpoint.stepsRows = earlierRows + stepsThisRun;
+    checkpoint.vtkFrames = vtk.frames();
+    const CheckpointInfo& earlier = from.info;  // zeros unless restarted
+    checkpoint.iterations = (from.restart ? earlier.iterations : 0) + s.runIterations;
+    checkpoint.linearSolves = (from.restart ? earlier.linearSolves : 0) + s.runLinearSolves;
+    checkpoint.cuts = (from.restart ? earlier.cuts : 0) + s.runCuts;
+    const bool last = s.time >= sm.solverOptions.endTime;
+    if (sm.checkpointEvery > 0 && (s.step % sm.checkpointEvery == 0 || last))
+      writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state);
+    killAfterStepForTests(s.step, *comm);
   };
   auto onIteration = [&](int step, double time, int it, double residual) {
     if (root) progress.iteration(step, time, it, residual, elapsed());
   };
-  const RunReport report =
-      runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep, onIteration);
+  RunReport report = runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep,
+                               onIteration, from.start);
+  if (from.restart) {
+    // summary.json and the last line count the whole run, its part before the restart too.
+    report.steps += static_cast<int>(earlierRows);
+    report.iterations += static_cast<int>(from.info.iterations);
+    report.linearSolves += static_cast<int>(from.info.linearSolves);
+    report.cuts += static_cast<int>(from.info.cuts);
+  }
   // Said once per run: where the Dirichlet conditions fix a friction direction, its multiplier
   // was dropped (the singular tangent that would otherwise stop every algorithm there).
   if (contact)

@@ -18,6 +18,11 @@ struct RunOptions {
   bool criticalMu = false;
   // --quiet: no progress lines (scripts); warnings, errors and where the results are, still.
   bool quiet = false;
+  // --restart DIR: continue the run whose outputs are in DIR from its checkpoint.h5 to the
+  // scene's End Time, appending to its outputs. The scene and --set overrides are the
+  // checkpoint's (scenePath, when given, replaces the path); a scene whose validated values
+  // changed is refused (RunCheckpoint.hpp: sceneHash).
+  std::string restartDirectory;
 };
 
 // Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says

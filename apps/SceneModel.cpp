@@ -490,6 +490,11 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   sm.outputDirectory = output.get<std::string>("Directory");
   if (sm.outputDirectory.empty()) sm.outputDirectory = "results/" + scene.name;
   sm.writeVtk = output.get<bool>("VTK");
+  const ParameterList& initial = p.sublist("Initial State");
+  sm.initialStateFrom = initial.get<std::string>("From");
+  sm.initialStateContinuesTime = initial.get<std::string>("Time") == "continue";
+  sm.checkpointEvery = output.get<int>("Checkpoint Every");
+  if (sm.checkpointEvery < 0) throw InputError(where + ": Output/Checkpoint Every must be >= 0");
   sm.criticalMuCheck = output.get<bool>("Critical Mu Check");
   sm.criticalMuTolerance = output.get<double>("Critical Mu Tolerance");
   sm.criticalMuMaxPatterns = output.get<int>("Critical Mu Max Patterns");

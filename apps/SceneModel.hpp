@@ -31,6 +31,11 @@ struct SceneModel {
   StaticSolverOptions solverOptions;
   std::vector<Probe> probes;
   std::string outputDirectory;
+  // Initial State: the folder whose checkpoint the run starts from (empty: from rest), and
+  // whether the load time continues from the checkpoint's (Time: continue) or restarts at 0.
+  std::string initialStateFrom;
+  bool initialStateContinuesTime = true;
+  int checkpointEvery = 1;  // Output/Checkpoint Every (0: no checkpoint)
   bool writeVtk = true;
   bool criticalMuCheck = false;  // Output/Critical Mu Check
   // Output/Critical Mu Tolerance and Max Patterns (checkUniqueness).

@@ -274,6 +274,25 @@ ParameterList geometrySection() {
   return p;
 }
 
+ParameterList initialStateSection() {
+  ParameterList p("Initial State");
+  p.set("From", "",
+        "A folder of an earlier run (its checkpoint.h5, written after each converged step): "
+        "this run starts from that run's last converged state (displacements, contact "
+        "multipliers and friction history, the internal variables of every element) instead "
+        "of rest. The mesh must be the same (node and element ids are checked); a relative "
+        "path is taken from the current directory, like Output/Directory; empty: start "
+        "from rest");
+  p.set("Time", "continue",
+        "With From: 'continue' starts at the checkpoint's load time and step number and runs "
+        "to Load Steps/End Time with steps of End Time / Steps (the loads keep their time "
+        "functions, with this scene's End Time: a chain equals one long run when they do not "
+        "depend on it, e.g. tables); 'zero' starts the load time and the step count at 0 (a "
+        "new load history on the earlier state)",
+        choices({"continue", "zero"}));
+  return p;
+}
+
 ParameterList outputSection(const ParameterList* user, const std::string& where) {
   ParameterList p("Output");
   p.set("Directory", "",
@@ -282,6 +301,10 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
         "Write result.pvd and one .vtu (.pvtu on several ranks) per frame: a rest frame at "
         "t = 0 (the undeformed state, every contact point free), then one per converged step; "
         "a point field node_id holds each node's id (contact.csv's node column)");
+  p.set("Checkpoint Every", 1,
+        "Write checkpoint.h5 (the state a run continues from: Initial State/From, "
+        "`contactlab run --restart`) after every this many converged steps and after the "
+        "last (>= 0; 0: never)");
   p.set("Critical Mu Check", false,
         "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
         "patterns around the state, determinant signs, critical mu): a warning when mu >= "
@@ -348,6 +371,7 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Linear Solver",
             typedSection(linearSolverRegistry(), userSublist(&scene, "Linear Solver"), "mumps",
                          where, "Linear Solver"));
+  valid.set("Initial State", initialStateSection());
   valid.set("Output", outputSection(userSublist(&scene, "Output"), where));
   return valid;
 }
@@ -451,6 +475,8 @@ std::string sceneReference() {
   describeList(out, *StaticSolverOptions::validAlgorithm(), "");
   out << "\n### Algorithm/slow-dynamics\n\n";
   describeList(out, StaticSolverOptions::validAlgorithm()->sublist("slow-dynamics"), "");
+  out << "\n### Initial State\n\n";
+  describeList(out, initialStateSection(), "");
   out << "\n### Output\n\n";
   describeList(out, outputSection(nullptr, ""), "");
   out << "\n### Output/Probes/<name>\n\n";

@@ -2,6 +2,7 @@
 // compared on the same model.
 //
 //   contactlab run [SCENE] [--out DIR] [--set key=value ...]
+//   contactlab run --restart DIR
 //   contactlab validate SCENE [--set key=value ...]
 //   contactlab critical-mu SCENE [--out DIR] [--set key=value ...]
 //   contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]
@@ -31,7 +32,7 @@ const char* kUsage =
     "usage: contactlab <command> [options]\n"
     "\n"
     "commands:\n"
-    "  run [SCENE] [--out DIR] [--set key=value ...] [--quiet]\n"
+    "  run [SCENE] [--out DIR] [--set key=value ...] [--quiet], run --restart DIR\n"
     "                      solve SCENE (a YAML file; without one, a small built-in scene) and\n"
     "                      write result.pvd, steps.csv and summary.json to DIR\n"
     "  validate SCENE [--set key=value ...]\n"
@@ -54,6 +55,7 @@ const char* kUsage =
 const char* commandHelp(const std::string& command) {
   if (command == "run")
     return "usage: contactlab run [SCENE] [--out DIR] [--set key/path=value ...] [--quiet]\n"
+           "       contactlab run --restart DIR [--quiet]\n"
            "\n"
            "Solves SCENE (a YAML file; without one, a small built-in scene) and writes\n"
            "result.pvd (ParaView), steps.csv, contact.csv and summary.json to DIR (default: a\n"
@@ -62,7 +64,11 @@ const char* commandHelp(const std::string& command) {
            "Exit code 0 converged, 1 a numerical failure (named in summary.json), 2 bad input,\n"
            "128 + signal when interrupted. Progress: a line per Newton iterate and per step on\n"
            "stderr (on a terminal, a live line with the ETA); --quiet drops it. Scene keys:\n"
-           "`contactlab list`, doc/scenes.md.\n";
+           "`contactlab list`, doc/scenes.md.\n"
+           "A run writes DIR/checkpoint.h5 after each converged step (Output/Checkpoint Every).\n"
+           "--restart DIR continues a killed run from it to the scene's End Time, appending to\n"
+           "DIR's outputs (same scene and --set values required; a scene whose values changed\n"
+           "is refused). A new run starts from it with the scene key Initial State: {From: DIR}.\n";
   if (command == "validate")
     return "usage: contactlab validate SCENE [--set key/path=value ...]\n"
            "\n"
@@ -168,7 +174,7 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
   options.criticalMu = command == "critical-mu";
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if ((a == "--out" || a == "--set") && i + 1 >= args.size())
+    if ((a == "--out" || a == "--set" || a == "--restart") && i + 1 >= args.size())
       return root ? usageError(a + " needs a value") : 2;
     if (a == "--quiet" || a == "-q")
       options.quiet = true;
@@ -176,6 +182,8 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
       options.outputDirectory = args[++i];
     else if (a == "--set")
       options.overrides.push_back(args[++i]);
+    else if (a == "--restart" && command == "run")
+      options.restartDirectory = args[++i];
     else if (a.rfind("--", 0) == 0)
       return root ? usageError("unknown option '" + a + "'") : 2;
     else if (options.scenePath.empty())
@@ -183,6 +191,8 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
     else
       return root ? usageError("more than one scene given ('" + a + "')") : 2;
   }
+  if (!options.restartDirectory.empty() && !options.outputDirectory.empty())
+    return root ? usageError("--restart DIR writes to DIR: --out does not go with it") : 2;
   if ((options.validateOnly || options.criticalMu) && options.scenePath.empty())
     return root ? usageError(command + " needs a scene file") : 2;
   return contactlab::runCommand(options, comm);

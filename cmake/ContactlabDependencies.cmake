@@ -64,6 +64,11 @@ find_path(GMSH_INCLUDE_DIR gmsh.h HINTS ${_contactlab_hint_GMSH} ${_contactlab_r
 find_library(GMSH_LIBRARY gmsh HINTS ${_contactlab_hint_GMSH} ${_contactlab_required})
 find_path(METIS_INCLUDE_DIR metis.h HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
 find_library(METIS_LIBRARY metis HINTS ${_contactlab_hint_METIS} ${_contactlab_required})
+# HDF5 for the checkpoints (core/io/Hdf5Writer): Debian's OpenMPI build, the one Trilinos'
+# EpetraExt already loads into the process (the serial build beside it would define the same
+# symbols twice); used through its serial C API. Debian: libhdf5-openmpi-dev.
+find_path(HDF5_INCLUDE_DIR hdf5.h PATH_SUFFIXES hdf5/openmpi ${_contactlab_required})
+find_library(HDF5_LIBRARY hdf5_openmpi ${_contactlab_required})
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h HINTS ${_contactlab_hint_MUMPS} ${_contactlab_required})
 # Debian's libmumps-dev orders with PORD only; libmumps-ptscotch-dev (the same MUMPS built with
 # SCOTCH and PT-SCOTCH) is preferred when present: SCOTCH's nested dissection cuts the

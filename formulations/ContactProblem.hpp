@@ -28,6 +28,7 @@
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactControls.hpp"
+#include "formulations/ContactHistory.hpp"
 #include "formulations/ContactPointResult.hpp"
 #include "formulations/ContactZone.hpp"
 
@@ -80,6 +81,14 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
   void setFrictionScale(double scale) override;
+
+  // Checkpoints (ContactProblemHistory.cpp). The history of the converged state x (call after
+  // commitState), the same on every rank (collective).
+  ContactHistory convergedHistory(const Vector& x);
+  // Puts a checkpoint's history back as commitState(x, t) left it: x's point unknowns (x's
+  // displacements must be set already) and every point's history. Throws InputError, the same
+  // on every rank, when the checkpoint's points are not this problem's.
+  void restoreHistory(const ContactHistory& history, Vector& x, double t);
 
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;

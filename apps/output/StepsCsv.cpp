@@ -1,6 +1,10 @@
 #include "apps/output/StepsCsv.hpp"
 
+#include "core/io/AtomicFile.hpp"
+
 #include <algorithm>
+#include <fstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -78,8 +82,29 @@ void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
   table_.addFormattedRow(std::move(row));
 }
 
+void StepsCsv::resume(std::int64_t rows) {
+  // Rows are single lines: no cell of steps.csv holds a line break.
+  std::ifstream in(path_);
+  std::string line;
+  std::getline(in, line);  // the header, written again by write()
+  std::int64_t n = 0;
+  for (; n < rows && std::getline(in, line); ++n)
+    earlierRows_ += line + "\n";
+  if (n < rows)
+    throw std::runtime_error(path_ + ": " + std::to_string(n) +
+                             " step rows, the checkpoint counts " + std::to_string(rows));
+}
+
 void StepsCsv::write() const {
-  table_.write(path_);
+  if (earlierRows_.empty()) {
+    table_.write(path_);
+    return;
+  }
+  const std::string table = table_.str();
+  const std::size_t header = table.find('\n') + 1;
+  writeFileAtomically(path_, [&](std::ostream& out) {
+    out << table.substr(0, header) << earlierRows_ << table.substr(header);
+  });
 }
 
 }  // namespace contactlab

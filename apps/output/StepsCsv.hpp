@@ -27,6 +27,11 @@ class StepsCsv {
                std::optional<double> conditionEstimate, double cumulatedPairingSeconds,
                double cumulatedContactSeconds, const std::optional<std::string>& criticalMu);
 
+  // A run continued from a checkpoint (--restart): the file's first `rows` rows (those of the
+  // steps up to the checkpoint) come before the new ones. Call on rank 0 only, before write().
+  // Throws std::runtime_error when the file has fewer rows.
+  void resume(std::int64_t rows);
+
   // Writes the file; call on rank 0 only.
   void write() const;
 
@@ -36,6 +41,7 @@ class StepsCsv {
  private:
   const std::string path_;
   CsvWriter table_;
+  std::string earlierRows_;  // resume(): the earlier run's rows, as written
   double lastPairingSeconds_ = 0, lastContactSeconds_ = 0;
   double maxCondition_ = -1;
 };

@@ -44,4 +44,9 @@ std::optional<std::string> VtkSteps::pvdPath() const {
   return series_->pvdPath();
 }
 
+void VtkSteps::resume(int frames) {
+  series_ = std::make_unique<VtkSeriesWriter>(folder_, "result", comm_);
+  series_->resume(frames);
+}
+
 }  // namespace contactlab

@@ -24,8 +24,16 @@ class VtkSteps {
   // contact the same point fields as a step's, all zero (every point free). Call once, before
   // the first step.
   void writeRest(const Problem& problem, const ContactProblem* contact);
-  // Collective. u: the displacement at `time`; contact may be null.
+  // Collective. u: the displacement at `time`; contact may be null. A run started from an
+  // earlier state (Initial State) writes that state this way as its first frame, in place of
+  // the rest frame.
   void write(double time, const Problem& problem, const ContactProblem* contact, const Vector& u);
+
+  // Collective. A run continued from a checkpoint (--restart): the series keeps its first
+  // `frames` frames, and the next write appends to it.
+  void resume(int frames);
+  // Frames written so far (the rest frame included).
+  int frames() const { return series_ ? series_->numSteps() : 0; }
 
   // Empty until a frame was written.
   std::optional<std::string> pvdPath() const;

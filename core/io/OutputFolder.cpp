@@ -20,12 +20,36 @@ namespace fs = std::filesystem;
   throw InputError("cannot write results to the output folder '" + path + "': " + reason);
 }
 
+// AtomicFile's temporaries.
+bool isTemporary(const std::string& name) {
+  static const std::regex pattern(R"(\..+\.tmp\.\d+)");
+  return std::regex_match(name, pattern);
+}
+
 // What a run writes (RunCommand, VtkSeriesWriter, AtomicFile's temporaries).
 bool isRunOutput(const std::string& name) {
   static const std::regex pattern(
-      R"((result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact\.csv|summary\.json)"
-      R"(|\..+\.tmp\.\d+))");
-  return std::regex_match(name, pattern);
+      R"(result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact\.csv|summary\.json)"
+      R"(|checkpoint\.h5)");
+  return std::regex_match(name, pattern) || isTemporary(name);
+}
+
+// Removes the files in folder `path` that `which` accepts; returns their names.
+template <class Which>
+std::vector<std::string> removeFiles(const std::string& path, Which which) {
+  std::vector<std::string> removed;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(path), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!which(name) || entry.is_directory()) continue;
+    std::error_code removeError;
+    fs::remove(entry.path(), removeError);
+    if (removeError)
+      refuse(path, "cannot remove an earlier run's '" + name + "': " + removeError.message());
+    removed.push_back(name);
+  }
+  if (ec) refuse(path, "cannot list it: " + ec.message());
+  return removed;
 }
 
 // The first existing ancestor of `path` that is not a directory, if any.
@@ -59,18 +83,11 @@ std::vector<std::string> prepareOutputFolder(const std::string& path) {
     if (!out) refuse(path, errno ? std::strerror(errno) : "cannot create a file in it");
   }
   fs::remove(probe, ec);
-  std::vector<std::string> removed;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (!isRunOutput(name) || entry.is_directory()) continue;
-    std::error_code removeError;
-    fs::remove(entry.path(), removeError);
-    if (removeError)
-      refuse(path, "cannot remove an earlier run's '" + name + "': " + removeError.message());
-    removed.push_back(name);
-  }
-  if (ec) refuse(path, "cannot list it: " + ec.message());
-  return removed;
+  return removeFiles(path, isRunOutput);
+}
+
+std::vector<std::string> removeTemporaries(const std::string& path) {
+  return removeFiles(path, isTemporary);
 }
 
 }  // namespace contactlab

@@ -13,4 +13,9 @@ namespace contactlab {
 // Returns the names of the stale files removed (for the log).
 std::vector<std::string> prepareOutputFolder(const std::string& path);
 
+// A run continued in its own folder (--restart) keeps its outputs but not the temporaries a
+// killed writer left (".<name>.tmp.<pid>"); returns their names. Throws InputError when one
+// cannot be removed.
+std::vector<std::string> removeTemporaries(const std::string& path);
+
 }  // namespace contactlab

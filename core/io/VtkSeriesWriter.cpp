@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace contactlab {
@@ -198,6 +199,30 @@ void VtkSeriesWriter::writePvd() const {
     out << "  </Collection>\n"
         << "</VTKFile>\n";
   });
+}
+
+void VtkSeriesWriter::resume(int frames) {
+  // The .pvd is this class's own output (writePvd): one DataSet line per frame.
+  std::ifstream in(pvdPath());
+  std::vector<std::pair<double, std::string>> steps;
+  for (std::string line; std::getline(in, line) && static_cast<int>(steps.size()) < frames;) {
+    const std::size_t time = line.find("timestep=\""), file = line.find("file=\"");
+    if (time == std::string::npos || file == std::string::npos) continue;
+    const std::size_t fileEnd = line.find('"', file + 6);
+    std::string name = line.substr(file + 6, fileEnd - file - 6);
+    for (const auto& [escaped, plain] : {std::pair<std::string, std::string>{"&quot;", "\""},
+                                         {"&lt;", "<"},
+                                         {"&gt;", ">"},
+                                         {"&amp;", "&"}})
+      for (std::size_t at; (at = name.find(escaped)) != std::string::npos;)
+        name.replace(at, escaped.size(), plain);
+    steps.emplace_back(std::stod(line.substr(time + 10)), name);
+  }
+  if (static_cast<int>(steps.size()) < frames)
+    throw std::runtime_error(pvdPath() + ": " + std::to_string(steps.size()) +
+                             " frames, the checkpoint counts " + std::to_string(frames));
+  steps_ = std::move(steps);
+  if (rank_ == 0) writePvd();
 }
 
 }  // namespace contactlab

@@ -33,6 +33,12 @@ class VtkSeriesWriter {
   // and the step is then not added to the .pvd.
   void writeStep(double time, const MeshPiece& piece);
 
+  // Continues an existing series: keeps the first `frames` entries of the .pvd on disk (a run
+  // continued from a checkpoint drops the frames written after it), so the next writeStep
+  // appends frame `frames`. Every rank calls it. Throws std::runtime_error when the .pvd cannot be
+  // read or has fewer frames.
+  void resume(int frames);
+
   int numSteps() const { return static_cast<int>(steps_.size()); }
   std::string pvdPath() const;
   // Path of the file the .pvd names for `step` (.vtu on 1 rank, .pvtu on several).

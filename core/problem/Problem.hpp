@@ -50,6 +50,15 @@ struct MaterialStateSummary {
   double plasticVolumeFraction = 0;  // reference volume where it is > 0, over the total
 };
 
+// The converged internal variables of every element, in global element order (block by block,
+// cell by cell, as Mesh::blocks lists them): element k's values are
+// values[offsets[k] .. offsets[k + 1]), its quadrature points' states one after the other
+// (empty for a material without internal variables). Checkpoints carry them (apps/RunCheckpoint).
+struct ElementStates {
+  std::vector<std::int64_t> offsets;  // numElements + 1
+  std::vector<double> values;
+};
+
 struct Reaction {
   std::string name;               // the Dirichlet condition's (or spring's) name
   std::array<double, 3> force{};  // sum of reactions over its nodes (global)
@@ -91,6 +100,17 @@ class Problem : public NonlinearSystem {
   // Internal variables: the last assembled (trial) state becomes the converged one.
   void commitState();
   void commitState(const Vector& /*u*/, double /*t*/) override { commitState(); }
+  // Checkpoints (ProblemState.cpp): the state a run continues from, in mesh order so that a
+  // checkpoint does not depend on the number of ranks. Collective; the whole of it on rank 0,
+  // empty elsewhere. Displacements: numNodes() x dim in mesh node order (0 at nodes no element
+  // uses).
+  std::vector<double> gatherDisplacements(const Vector& u) const;
+  ElementStates gatherElementStates() const;
+  // Every rank passes the whole of it and takes its own part: u's owned entries, the converged
+  // (and trial) internal variables of its elements. Throws InputError when a size does not match
+  // this model.
+  void scatterDisplacements(const std::vector<double>& all, Vector& u) const;
+  void setElementStates(const ElementStates& states);
   // Empty when every material has a density; else a sentence naming the block without one.
   std::string massUnavailable() const override;
   // The inertia c M (u - reference) of a regularizing dynamics (NonlinearSystem.hpp), added

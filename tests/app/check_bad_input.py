@@ -77,6 +77,17 @@ def scene_with(old, new):
     assert old in GOOD, old
     return GOOD.replace(old, new)
 
+# Checkpoints (Initial State, --restart): an earlier run to start from, and a file in a
+# checkpoint's place that is not one.
+earlier = os.path.join(work, "earlier-run")
+open(os.path.join(work, "earlier.yaml"), "w").write(GOOD)
+subprocess.run([exe, "run", os.path.join(work, "earlier.yaml"), "--out", earlier, "--quiet"],
+               check=True, capture_output=True, timeout=120,
+               env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
+not_checkpoint = os.path.join(work, "not-a-checkpoint")
+os.makedirs(not_checkpoint)
+open(os.path.join(not_checkpoint, "checkpoint.h5"), "w").write("not HDF5\n")
+
 cases = [
     ("missing scene file", None, ["does-not-exist.yaml"], ["does-not-exist.yaml", "does not exist"]),
     ("missing mesh file",
@@ -245,6 +256,18 @@ cases = [
     ("contact: initial penetration deeper than an element",
      contact_with("Point: [0.0, 0.0]", "Point: [0.0, 0.9]"), [],
      ["initial penetration larger than an element", "'bottom'", "zone floor"]),
+    ("Initial State from a folder without a checkpoint",
+     GOOD + f"  Initial State: {{From: {work}/no-such-run}}\n", [],
+     ["Initial State/From", "no-such-run/checkpoint.h5", "no such file"]),
+    ("Initial State from a file that is not a checkpoint",
+     GOOD + f"  Initial State: {{From: {not_checkpoint}}}\n", [],
+     ["Initial State/From", "checkpoint.h5", "not an HDF5 file"]),
+    ("Initial State from another mesh",
+     scene_with("nx: 4", "nx: 8") + f"  Initial State: {{From: {earlier}}}\n", [],
+     ["Initial State/From", "the checkpoint's mesh has 15 nodes, this scene's 27",
+      "a run starts from a checkpoint of the same mesh"]),
+    ("Initial State at End Time", GOOD + f"  Initial State: {{From: {earlier}}}\n", [],
+     ["Initial State/From", "the checkpoint is at t = 1", "nothing to run"]),
 ]
 
 open(os.path.join(work, "inverted.msh"), "w").write(INVERTED_MSH)
@@ -279,6 +302,40 @@ for name, scene, extra, expected in cases:
     for p in problems:
         print("       " + p)
     failures += bool(problems)
+
+# --restart: a folder without a checkpoint, and a scene changed since the checkpoint, are bad
+# input that leaves the folder as it was.
+changed = os.path.join(work, "changed.yaml")
+open(changed, "w").write(GOOD)
+changed_run = os.path.join(work, "changed-run")
+subprocess.run([exe, "run", changed, "--out", changed_run, "--quiet"], check=True,
+               capture_output=True, timeout=120, env=env)
+open(changed, "w").write(scene_with("Value: 1.0", "Value: 2.0"))
+restart_cases = [
+    ("--restart without a checkpoint", os.path.join(work, "no-such-run"),
+     ["--restart", "no-such-run/checkpoint.h5", "no such file"]),
+    ("--restart of a changed scene", changed_run,
+     ["--restart", "changed.yaml", "is not the one the checkpoint was written with",
+      "Initial State: {From:"]),
+]
+for name, folder, expected in restart_cases:
+    before = sorted((f, os.path.getmtime(os.path.join(folder, f)))
+                    for f in (os.listdir(folder) if os.path.isdir(folder) else []))
+    run = subprocess.run([exe, "run", "--restart", folder], capture_output=True, text=True,
+                         env=env, timeout=120)
+    err = run.stderr.strip()
+    problems = [f"message lacks {e!r}" for e in expected if e not in err]
+    if run.returncode != 2:
+        problems.append(f"exit code {run.returncode}, not 2")
+    after = sorted((f, os.path.getmtime(os.path.join(folder, f)))
+                   for f in (os.listdir(folder) if os.path.isdir(folder) else []))
+    if after != before:
+        problems.append("the run folder changed")
+    print(f"{'ok  ' if not problems else 'FAIL'} {name}: {err.splitlines()[0] if err else '(no message)'}")
+    for p in problems:
+        print("       " + p)
+    failures += bool(problems)
+    cases.append(name)
 
 # The output folder is checked before anything is solved: a file in its place, a file on its
 # path, or a folder that cannot be written is bad input (exit 2, one sentence, nothing solved).
