@@ -71,7 +71,7 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   Model a;
   // Every unknown, internal variable and history value set to a distinct number.
   auto values = a.x->getDataNonConst(0);
-  for (std::size_t i = 0; i < values.size(); ++i)
+  for (std::size_t i = 0; i < static_cast<std::size_t>(values.size()); ++i)
     values[i] = pattern(i, 1e-3);
   values = Teuchos::null;
   ElementStates states = a.problem->gatherElementStates();
@@ -119,7 +119,7 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   // Bitwise: the same doubles, not close ones.
   auto expected = a.x->getData(0), got = b.x->getData(0);
   ASSERT_EQ(expected.size(), got.size());
-  for (std::size_t i = 0; i < got.size(); ++i)
+  for (std::size_t i = 0; i < static_cast<std::size_t>(got.size()); ++i)
     EXPECT_EQ(got[i], expected[i]) << "unknown " << i;
   const ElementStates restored = b.problem->gatherElementStates();
   EXPECT_EQ(restored.offsets, states.offsets);
