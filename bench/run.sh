@@ -2,7 +2,8 @@
 # Runs the benchmarks and writes their tables into doc/performance.md (between markers).
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
-#   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field) run only those tables,
+#   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion) run only
+#   those tables,
 #   all by default (ironing3d and normal-field write doc/verification.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -89,5 +90,15 @@ if want normal-field; then
   # The normal-field augmented Lagrangian against the augmented Lagrangian (~5 minutes).
   /usr/bin/python3 bench/normal_field.py "$BUILD/apps/contactlab" scenes \
     "$BUILD/bench-normal-field" --doc doc/verification.md
+fi
+if want tube-expansion; then
+  # The seed's tube-expansion table in its shape, mu x PF/NP/NG at 32 steps: hex8 node-to-segment
+  # (~3 minutes); --large adds the scene's hex27 mortar (about an hour).
+  python3 bench/tube_expansion.py "$BUILD/apps/contactlab" "$BUILD/bench-tube-expansion-hex8" \
+    --element hex8 --discretization node-to-segment --doc doc/performance.md
+  if [[ $large == 1 ]]; then
+    python3 bench/tube_expansion.py "$BUILD/apps/contactlab" "$BUILD/bench-tube-expansion-hex27" \
+      --element hex27 --discretization mortar --doc doc/performance.md
+  fi
 fi
 echo "bench: doc/performance.md and doc/verification.md updated"
