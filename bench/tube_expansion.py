@@ -3,9 +3,12 @@
 scenes/tube-expansion-3d.yaml at mu = 0, 0.1, 0.3 under the fixed point (PF), partial Newton
 (NP) and generalized Newton (NG), each with the cycling treatment the presets use. Per run: the
 outcome (or the failure's name), load steps, Newton iterations, linear solves, wall time, peak
-memory, the residual normal force over the sector, and the mid-joint residual pressure (mean
-nodal pressure over z in [7.5, 12.5] mm after the release) with its deviation from the fixed
-point's at the same mu (the seed's "NP within 0.1 % of PF, NG 4.5 % off").
+memory, the residual normal force over the sector with its deviation from the fixed point's at
+the same mu (the seed compares the joint's pressure: "NP within 0.1 % of PF, NG 4.5 % off"),
+and the mid-joint residual pressure (mean nodal pressure over z in [7.5, 12.5] mm after the
+release). That mean is not compared: the residual nodal pressure alternates between corner and
+mid-side rows along z, so a window's mean moves by tens of percent when the rows in contact
+change, while the force, its integral, stays within a few percent.
 
 usage: tube_expansion.py CONTACTLAB OUTDIR [--element hex8|hex20|hex27]
                          [--discretization node-to-segment|mortar] [--steps N] [--doc DOC]
@@ -16,7 +19,7 @@ steps keep that within ~2 %.
 The scene's own (hex27, mortar) takes ~30 s frictionless and ~6 min per frictional run on this
 machine; hex8 node-to-segment a few seconds. --doc writes the table into DOC's
 <!-- bench:tube-expansion-ELEMENT:start/end --> block."""
-import argparse, csv, os
+import argparse, csv, json, os
 
 import docblock
 import runs
@@ -40,10 +43,14 @@ def main():
     parser.add_argument("--discretization", default="mortar")
     parser.add_argument("--steps", type=int, default=32,
                         help="load steps (the scene's 8 leave the residual 11 % from converged)")
+    parser.add_argument("--reuse", action="store_true",
+                        help="take the runs already in OUTDIR (their summary.json) instead of "
+                             "running them again: a table from an earlier or interrupted bench; "
+                             "wall is then the run's own total from summary.json")
     parser.add_argument("--doc")
     args = parser.parse_args()
     lines = ["| μ | method | outcome | steps | Newton | linear solves | wall | peak memory "
-             "| residual normal force | mid-joint pressure | vs PF |",
+             "| residual normal force | force vs PF | mid-joint pressure |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     print("\n".join(lines), flush=True)
     for mu in (0.0, 0.1, 0.3):
@@ -54,22 +61,27 @@ def main():
                     f"Contact/joint/Discretization={args.discretization}",
                     f"Contact/joint/Friction={mu:g}", f"Algorithm/Method={method}",
                     f"Load Steps/Steps={args.steps}"]
-            summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True)
+            summary_file = os.path.join(folder, "summary.json")
+            if args.reuse and os.path.exists(summary_file):
+                summary = json.load(open(summary_file))
+                wall, done = summary["seconds"]["total"], None
+            else:
+                summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True)
             if summary is None:
-                line = f"| {mu:g} | {short} | no summary: {done.stderr.strip()[-200:]} |"
+                line = f"| {mu:g} | {short} | no summary: {done.stderr.strip()[-200:] if done else ''} |"
             else:
                 ok = summary.get("converged", False)
                 outcome = "converged" if ok else f"fails: {summary.get('failure', '?')}"
                 pressure = mid_joint_pressure(os.path.join(folder, "contact.csv")) if ok else None
-                if method == "fixed-point" and ok:
-                    reference = pressure
-                deviation = ("–" if pressure is None or reference is None or method == "fixed-point"
-                             else f"{100 * (pressure - reference) / reference:+.2f} %")
                 force = summary["contact"].get("normal_force") if ok else None
+                if method == "fixed-point" and ok:
+                    reference = force
+                deviation = ("–" if force is None or reference is None or method == "fixed-point"
+                             else f"{100 * (force - reference) / reference:+.2f} %")
                 line = (f"| {mu:g} | {short} | {outcome} | {summary['load_steps']['converged']} ({summary['load_steps']['cuts']} cuts) | "
                         f"{summary['iterations']['newton']} | {summary['linear_solves']} | "
                         f"{wall:.1f} s | {summary.get('peak_memory_mb', 0):.0f} MB | "
-                        + (f"{force:.2f} N | {pressure:.2f} MPa | {deviation} |" if ok
+                        + (f"{force:.2f} N | {deviation} | {pressure:.2f} MPa |" if ok
                            else "– | – | – |"))
             lines.append(line)
             print(line, flush=True)
