@@ -542,9 +542,9 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;
-    sr.runIterations = report.iterations;
-    sr.runLinearSolves = report.linearSolves;
-    sr.runCuts = report.cuts;
+    sr.run = {report.iterations,       report.linearSolves,        report.cuts,
+              report.statusIterations, report.thresholdIterations, report.geometryIterations,
+              report.cycling};
     const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);
     report.seconds.output +=

@@ -13,13 +13,20 @@ struct PhaseSeconds {
 
 using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind (0 unused)
 
+// A run's totals up to a step, failed attempts included. A checkpoint carries them, so that a
+// restarted run's summary counts the whole run.
+struct RunTotals {
+  int iterations = 0, linearSolves = 0, cuts = 0;
+  int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
+  CyclingCounts cycling{};
+};
+
 struct StepReport {
   int step = 0;  // 1-based, converged steps
   double time = 0;
-  int cuts = 0;             // bisections before this step converged
-  double nextStepSize = 0;  // the load-time increment the next step will try (a checkpoint's)
-  // The run's totals up to this step, failed attempts included (a checkpoint carries them).
-  int runIterations = 0, runLinearSolves = 0, runCuts = 0;
+  int cuts = 0;                 // bisections before this step converged
+  double nextStepSize = 0;      // the load-time increment the next step will try (a checkpoint's)
+  RunTotals run;                // the run's totals up to this step
   int iterations = 0;           // Newton iterations (linear solves), failed attempts included
   int statusIterations = 0;     // status fixed-point updates that changed a status
   int thresholdIterations = 0;  // threshold fixed-point updates that moved a threshold

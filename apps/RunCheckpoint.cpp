@@ -66,9 +66,16 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   info.stepSize = file.doubleAttribute("step_size");
   info.stepsRows = file.integerAttribute("steps_csv_rows");
   info.vtkFrames = file.integerAttribute("vtk_frames");
-  info.iterations = file.integerAttribute("newton_iterations");
-  info.linearSolves = file.integerAttribute("linear_solves");
-  info.cuts = file.integerAttribute("cuts");
+  RunTotals& run = info.totals;
+  run.iterations = static_cast<int>(file.integerAttribute("newton_iterations"));
+  run.linearSolves = static_cast<int>(file.integerAttribute("linear_solves"));
+  run.cuts = static_cast<int>(file.integerAttribute("cuts"));
+  run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
+  run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
+  run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));
+  const std::vector<std::int64_t> cycling = file.integers("cycling_events");
+  for (std::size_t k = 0; k < cycling.size() && k < run.cycling.size(); ++k)
+    run.cycling[k] = static_cast<int>(cycling[k]);
   return info;
 }
 
@@ -136,9 +143,15 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("step_size", info.stepSize);
     file.writeAttribute("steps_csv_rows", info.stepsRows);
     file.writeAttribute("vtk_frames", info.vtkFrames);
-    file.writeAttribute("newton_iterations", info.iterations);
-    file.writeAttribute("linear_solves", info.linearSolves);
-    file.writeAttribute("cuts", info.cuts);
+    const RunTotals& run = info.totals;
+    file.writeAttribute("newton_iterations", static_cast<std::int64_t>(run.iterations));
+    file.writeAttribute("linear_solves", static_cast<std::int64_t>(run.linearSolves));
+    file.writeAttribute("cuts", static_cast<std::int64_t>(run.cuts));
+    file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));
+    file.writeAttribute("threshold_iterations", static_cast<std::int64_t>(run.thresholdIterations));
+    file.writeAttribute("geometry_iterations", static_cast<std::int64_t>(run.geometryIterations));
+    file.writeIntegers("cycling_events",
+                       std::vector<std::int64_t>(run.cycling.begin(), run.cycling.end()));
     file.writeIntegers("nodes/id", nodeIds(mesh));
     file.writeDoubles("nodes/displacement", displacements, mesh.dim, "length (the mesh's unit)");
     file.writeIntegers("elements/id", elementIds(mesh));

@@ -8,6 +8,7 @@
 // (Problem::gatherElementStates), and what --restart needs to append to the output series. HDF5
 // (core/io/Hdf5Writer): a user reads it with h5dump or h5py; the layout is in doc/scenes.md
 // "Checkpoints". Gathered to rank 0, so the file does not depend on the number of ranks.
+#include "algorithms/StepReport.hpp"
 #include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -35,7 +36,7 @@ struct CheckpointInfo {
   // result.pvd.
   std::int64_t stepsRows = 0, vtkFrames = 0;
   // Run totals so far (summary.json of a continued run counts the whole run).
-  std::int64_t iterations = 0, linearSolves = 0, cuts = 0;
+  RunTotals totals;
 };
 
 // The file in a run's output folder.

@@ -32,6 +32,20 @@
 namespace contactlab {
 namespace {
 
+// A restarted run's totals: the checkpoint's and the continued part's.
+RunTotals addTotals(const RunTotals& a, const RunTotals& b) {
+  RunTotals sum{a.iterations + b.iterations,
+                a.linearSolves + b.linearSolves,
+                a.cuts + b.cuts,
+                a.statusIterations + b.statusIterations,
+                a.thresholdIterations + b.thresholdIterations,
+                a.geometryIterations + b.geometryIterations,
+                {}};
+  for (std::size_t k = 0; k < sum.cycling.size(); ++k)
+    sum.cycling[k] = a.cycling[k] + b.cycling[k];
+  return sum;
+}
+
 double peakMemoryMB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -332,10 +346,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     checkpoint.stepSize = s.nextStepSize;
     checkpoint.stepsRows = earlierRows + stepsThisRun;
     checkpoint.vtkFrames = vtk.frames();
-    const CheckpointInfo& earlier = from.info;  // zeros unless restarted
-    checkpoint.iterations = (from.restart ? earlier.iterations : 0) + s.runIterations;
-    checkpoint.linearSolves = (from.restart ? earlier.linearSolves : 0) + s.runLinearSolves;
-    checkpoint.cuts = (from.restart ? earlier.cuts : 0) + s.runCuts;
+    checkpoint.totals = from.restart ? addTotals(from.info.totals, s.run) : s.run;
     const bool last = s.time >= sm.solverOptions.endTime;
     if (sm.checkpointEvery > 0 && (s.step % sm.checkpointEvery == 0 || last))
       writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state);
@@ -349,9 +360,15 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   if (from.restart) {
     // summary.json and the last line count the whole run, its part before the restart too.
     report.steps += static_cast<int>(earlierRows);
-    report.iterations += static_cast<int>(from.info.iterations);
-    report.linearSolves += static_cast<int>(from.info.linearSolves);
-    report.cuts += static_cast<int>(from.info.cuts);
+    const RunTotals& earlier = from.info.totals;
+    report.iterations += earlier.iterations;
+    report.linearSolves += earlier.linearSolves;
+    report.cuts += earlier.cuts;
+    report.statusIterations += earlier.statusIterations;
+    report.thresholdIterations += earlier.thresholdIterations;
+    report.geometryIterations += earlier.geometryIterations;
+    for (std::size_t k = 0; k < report.cycling.size(); ++k)
+      report.cycling[k] += earlier.cycling[k];
   }
   // Said once per run: where the Dirichlet conditions fix a friction direction, its multiplier
   // was dropped (the singular tangent that would otherwise stop every algorithm there).

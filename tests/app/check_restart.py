@@ -14,7 +14,7 @@ last time is the long run's.
 
 usage: check_restart.py CONTACTLAB CASE WORKDIR [--ranks N]
        (CASE: friction | friction-penalty | plasticity)"""
-import argparse, csv, os, shutil, subprocess, sys
+import argparse, csv, json, os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from contactlab_run import contactlab_run, read_grid, result_frames  # noqa: E402
@@ -209,6 +209,13 @@ def main():
         fail(f"the continued result.pvd has frames at {times}")
     print(f"ok   restart after a kill at step {k}: steps.csv and result.pvd hold each of the "
           f"{len(times) - 1} steps once")
+    # summary.json counts the whole run: every count the uninterrupted run's.
+    counts = lambda out: {key: json.load(open(os.path.join(out, "summary.json")))[key]
+                          for key in ("iterations", "linear_solves", "load_steps", "cycling")}
+    if counts(killed) != counts(full):
+        fail(f"the continued run's summary counts {counts(killed)}, the uninterrupted run's "
+             f"{counts(full)}")
+    print("ok   the continued run's summary.json counts the whole run")
     compare(full, killed, f"restart after a kill at step {k}")
 
     # 3. Chained: A to t_K = K/8 in K steps of 1/8, then B from A's checkpoint to the end.
@@ -220,7 +227,7 @@ def main():
         fail(f"the chained run's steps are {step_times(second)}, not {k + 1}..8")
     compare(full, second, f"chained run (A to step {k}, B from A's checkpoint)")
     check_file_layout(first, k)
-    print("5 passed, 0 failed")
+    print("6 passed, 0 failed")
 
 
 if __name__ == "__main__":

@@ -97,9 +97,9 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   info.stepSize = 0.0625;
   info.stepsRows = 3;
   info.vtkFrames = 4;
-  info.iterations = 17;
-  info.linearSolves = 19;
-  info.cuts = 1;
+  info.totals = {17, 19, 1, 5, 7, 3, {}};
+  for (std::size_t k = 0; k < info.totals.cycling.size(); ++k)
+    info.totals.cycling[k] = static_cast<int>(10 + k);
   const std::string path = scratch("checkpoint.h5");
   writeCheckpoint(path, info, *a.problem, a.contact.get(), *a.x);
 
@@ -113,9 +113,13 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   EXPECT_EQ(read.stepSize, info.stepSize);
   EXPECT_EQ(read.stepsRows, info.stepsRows);
   EXPECT_EQ(read.vtkFrames, info.vtkFrames);
-  EXPECT_EQ(read.iterations, info.iterations);
-  EXPECT_EQ(read.linearSolves, info.linearSolves);
-  EXPECT_EQ(read.cuts, info.cuts);
+  EXPECT_EQ(read.totals.iterations, info.totals.iterations);
+  EXPECT_EQ(read.totals.linearSolves, info.totals.linearSolves);
+  EXPECT_EQ(read.totals.cuts, info.totals.cuts);
+  EXPECT_EQ(read.totals.statusIterations, info.totals.statusIterations);
+  EXPECT_EQ(read.totals.thresholdIterations, info.totals.thresholdIterations);
+  EXPECT_EQ(read.totals.geometryIterations, info.totals.geometryIterations);
+  EXPECT_EQ(read.totals.cycling, info.totals.cycling);
   // Bitwise: the same doubles, not close ones.
   auto expected = a.x->getData(0), got = b.x->getData(0);
   ASSERT_EQ(expected.size(), got.size());
