@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -354,142 +355,17 @@ void ContactProblem::applyDirichlet(double t, Vector& x) const {
     dst[i] = src[i];
 }
 
-bool ContactProblem::updateGeometry(const Vector& x, double t) {
-  const auto start = std::chrono::steady_clock::now();
-  state_->import(x);
-  bool moved = false, repaired = false;
-  std::vector<std::string> deep;
-  for (std::size_t z = 0; z < zones_.size(); ++z) {
-    ContactDiscretization& discretization = *discretizations_[z];
-    discretization.prepare(*state_, t);
-    for (ContactPoint& pt : points_) {
-      if (pt.zone != static_cast<int>(z)) continue;
-      const auto xs = state_->position(pt.node);
-      const ContactPoint old = pt;
-      const PointPairing pairing = discretization.pair(pt, xs, *state_, t);
-      if (!pt.paired) {
-        pt.master.clear();
-        pt.N.clear();
-      }
-      tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
-      if (!frozenOnce_ && pt.paired && pairing.gap < -pairing.size)
-        deep.push_back(
-            "node " + std::to_string(solid_.model().mesh->nodeId(pt.node)) + " of '" +
-            zones_[z].slave + "' (zone " + zones_[z].name + ") is " + std::to_string(-pairing.gap) +
-            " inside its master, more than the facet size " + std::to_string(pairing.size));
-      // Repaired: other master nodes (a new graph). Moved: a different normal or master point
-      // at this state (Newton must run again); the same point reached through another facet
-      // of a shared vertex is not a move.
-      if (old.paired != pt.paired) {
-        moved = repaired = true;
-      } else if (pt.paired) {
-        if (old.facet != pt.facet) repaired = true;
-        double change = 0;
-        for (int c = 0; c < 3; ++c)
-          change = std::max(change, std::abs(old.normal[c] - pt.normal[c]));
-        const auto before = discretization.masterPoint(old, xs, *state_);
-        const auto after = discretization.masterPoint(pt, xs, *state_);
-        for (int c = 0; c < 3; ++c)
-          change =
-              std::max(change, std::abs(before[c] - after[c]) / std::max(pairing.size, 1e-300));
-        if (change > 1e-12) moved = true;
-      }
-    }
-  }
-  if (!deep.empty())
-    throw InputError(
-        "initial penetration larger than an element: " + deep.front() +
-        (deep.size() > 1 ? " (and " + std::to_string(deep.size() - 1) + " more)" : std::string()) +
-        ". Check the geometry, the master/slave choice or the obstacle's position "
-        "and normal");
-  frozenOnce_ = true;
-  layOutPointDofs();
-  // Only a new pairing changes the couplings (and the direct solver's symbolic analysis).
-  if (repaired || assembler_->matrix().is_null() || layoutChanged_)
-    assembler_->buildGraph(*solid_.tangent(), points_);
-  layoutChanged_ = false;
-  pairingSeconds_ += secondsSince(start);
-  return moved;
-}
-
-void ContactProblem::addRemovedDirections(const std::vector<std::array<double, 3>>& normals,
-                                          std::size_t first, ContactPoint& pt) const {
-  // The planes' normals on the node's free components, orthonormalized (Gram-Schmidt), as
-  // directions over the point's displacement dofs (the node's at `first`); a normal that the
-  // Dirichlet components and the earlier normals already span adds nothing.
-  std::vector<std::array<double, 3>> basis;
-  for (std::array<double, 3> n : normals) {
-    for (int c = 0; c < dim_; ++c)
-      if (!pt.freeDofs[first + c]) n[c] = 0;
-    for (const auto& b : basis) {
-      const double d = n[0] * b[0] + n[1] * b[1] + n[2] * b[2];
-      for (int c = 0; c < 3; ++c)
-        n[c] -= d * b[c];
-    }
-    const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (norm < 1e-8) continue;
-    for (double& v : n)
-      v /= norm;
-    basis.push_back(n);
-  }
-  for (const auto& b : basis) {
-    pt.removedDirections.emplace_back();  // sized when the point's dofs are complete
-    auto& direction = pt.removedDirections.back();
-    direction.assign(first, 0.0);
-    direction.insert(direction.end(), b.begin(), b.begin() + dim_);
-  }
-}
-
-void ContactProblem::layOutPointDofs() {
-  // Element dofs of each point: slave, master nodes, multipliers; with `full` geometric terms
-  // also the nodes its normal depends on, as columns.
-  const DofMap& dofs = solid_.dofs();
-  for (ContactPoint& pt : points_) {
-    pt.dofs.clear();
-    pt.freeDofs.clear();
-    pt.surfacePos.clear();
-    pt.removedDirections.clear();
-    auto addNode = [&](std::int64_t node) {
-      const std::size_t first = pt.dofs.size();
-      for (int c = 0; c < dim_; ++c) {
-        pt.dofs.push_back(dofs.globalNode(node) * dim_ + c);
-        pt.freeDofs.push_back(constrainedSurfaceDofs_.count(pt.dofs.back()) == 0);
-        pt.surfacePos.push_back(state_->dofPosition(node, c));
-      }
-      addRemovedDirections(solid_.symmetry().planeNormals(node), first, pt);
-    };
-    addNode(pt.node);
-    pt.symmetryNormals = solid_.symmetry().allPlaneNormals(pt.node);
-    for (std::int64_t m : pt.master)
-      addNode(m);
-    for (auto& direction : pt.removedDirections)
-      direction.resize(pt.dofs.size(), 0.0);
-    for (int k = 0; k < pt.unknowns; ++k) {
-      pt.dofs.push_back(pt.multiplier + k);
-      pt.surfacePos.push_back(state_->multiplierPosition(pt.multiplier + k));
-    }
-    pt.geometryDofs.clear();
-    pt.geometrySurfacePos.clear();
-    // The nodes the normal depends on: for the full geometric terms, and for a normal field,
-    // whose kinematic rows depend on them whatever the algorithm.
-    if ((geometricTerms_ != GeometricTerms::full && !hasNormalField(pt)) || !pt.paired) continue;
-    for (std::int64_t node : discretizations_[pt.zone]->normalNodes(pt)) {
-      if (node == pt.node || std::find(pt.master.begin(), pt.master.end(), node) != pt.master.end())
-        continue;
-      for (int c = 0; c < dim_; ++c) {
-        pt.geometryDofs.push_back(dofs.globalNode(node) * dim_ + c);
-        pt.geometrySurfacePos.push_back(state_->dofPosition(node, c));
-      }
-    }
-  }
-}
-
 bool ContactProblem::takePatternChanged() {
   return assembler_->takePatternChanged();
 }
 
 void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool withTangent) {
   if (assembler_->matrix().is_null()) updateGeometry(x, t);
+  if (!geometryFailure_.empty()) {
+    // The NaN stops every Newton variant; assemblyFailure() says why.
+    if (residual) residual->putScalar(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   auto u = displacement(x);
   Teuchos::RCP<Vector> ru = residual ? solid_.createVector() : Teuchos::null;
   solid_.assemble(*u, t, ru.get(), withTangent);
@@ -517,6 +393,12 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
   if (contactForces) solid_.addToReactions(*contactForces);
   solid_.symmetry().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
   contactSeconds_ += secondsSince(start);
+}
+
+AssemblyFailure ContactProblem::assemblyFailure() const {
+  if (!geometryFailure_.empty())
+    return {"contact-geometry-failed", "the contact geometry of this iterate: " + geometryFailure_};
+  return solid_.assemblyFailure();
 }
 
 void ContactProblem::completeIncrement(Vector& dx) const {

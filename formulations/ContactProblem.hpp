@@ -55,7 +55,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void completeIncrement(Vector& dx) const override;
   void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
   const Teuchos::RCP<Matrix>& tangent() const override;
-  AssemblyFailure assemblyFailure() const override { return solid_.assemblyFailure(); }
+  AssemblyFailure assemblyFailure() const override;
   bool takePatternChanged() override;
   // Re-pairs every slave point at x, t. The first call also checks the initial penetration
   // (InputError, on every rank, when a slave point is deeper than its master facet's size).
@@ -113,6 +113,8 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   double contactSeconds() const { return contactSeconds_; }
 
  private:
+  // updateGeometry's work: pairs every point at state x and time t and freezes that geometry.
+  bool pairAndFreeze(const Vector& x, double t);
   void layOutPointDofs();
   // Appends to pt.removedDirections the directions the inclined symmetry planes `normals` remove
   // from the node whose dofs start at `first` in pt.dofs.
@@ -144,6 +146,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // The output pressure per point (SurfacePressure.hpp; NaN: the law's), at each commit.
   std::vector<double> recoveredPressure_;
   bool frozenOnce_ = false, everInContact_ = false, layoutChanged_ = false;
+  // Why the last geometry update failed on an iterate (empty: it did not): assemble() then
+  // returns NaN and assemblyFailure() names it "contact-geometry-failed".
+  std::string geometryFailure_;
   double pairingSeconds_ = 0, contactSeconds_ = 0;
   int statusChanges_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
