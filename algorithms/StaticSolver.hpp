@@ -78,7 +78,9 @@ struct RunReport {
                             // "geometry-not-converged", "statuses-not-converged",
                             // "thresholds-not-converged", "material-update-failed",
                             // "inverted-element" (the solid cannot be evaluated at an
-                            // iterate: see AssemblyFailure), "degraded-contact" (a forced
+                            // iterate: see AssemblyFailure), "contact-geometry-failed" (the
+                            // contact surfaces of an iterate cannot be paired or integrated: a
+                            // collapsed mortar facet), "degraded-contact" (a forced
                             // cycling treatment's state violates the contact law and Newton
                             // from it without the treatment failed), "step-too-small",
                             // "interrupted" (SIGINT or SIGTERM)
