@@ -471,6 +471,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                             const IterationCallback& onIteration, const RunStart& start) {
   RunReport report;
+  report.startFrom(start.totals);
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
   slowDynamics_.start(u, start.time);
@@ -542,9 +543,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;
-    sr.run = {report.iterations,       report.linearSolves,        report.cuts,
-              report.statusIterations, report.thresholdIterations, report.geometryIterations,
-              report.cycling};
+    sr.run = report.totals();
     const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);
     report.seconds.output +=

@@ -93,6 +93,17 @@ struct RunReport {
   int cuts = 0;
   CyclingCounts cycling{};
   PhaseSeconds seconds;
+
+  // The counts as a step's run totals, and the counts a continued run starts from.
+  RunTotals totals() const {
+    return {iterations,          linearSolves,       cuts,   statusIterations,
+            thresholdIterations, geometryIterations, cycling};
+  }
+  void startFrom(const RunTotals& t) {
+    iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
+    statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
+    geometryIterations = t.geometryIterations, cycling = t.cycling;
+  }
 };
 
 // Where a run starts: at rest at t = 0 (the default), or from a converged state of an earlier
@@ -104,6 +115,7 @@ struct RunStart {
   int step = 0;
   double stepSize = 0;
   bool fromState = false;
+  RunTotals totals;  // the counts so far: a killed run continued counts the whole run
 };
 
 class StaticSolver {

@@ -32,20 +32,6 @@
 namespace contactlab {
 namespace {
 
-// A restarted run's totals: the checkpoint's and the continued part's.
-RunTotals addTotals(const RunTotals& a, const RunTotals& b) {
-  RunTotals sum{a.iterations + b.iterations,
-                a.linearSolves + b.linearSolves,
-                a.cuts + b.cuts,
-                a.statusIterations + b.statusIterations,
-                a.thresholdIterations + b.thresholdIterations,
-                a.geometryIterations + b.geometryIterations,
-                {}};
-  for (std::size_t k = 0; k < sum.cycling.size(); ++k)
-    sum.cycling[k] = a.cycling[k] + b.cycling[k];
-  return sum;
-}
-
 double peakMemoryMB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -219,7 +205,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (continueTime) {
         from.start.time = from.info.time;
         from.start.step = from.info.step;
-        if (from.restart) from.start.stepSize = from.info.stepSize;
+        if (from.restart) {  // the same run: its cut step size and its counts go on
+          from.start.stepSize = from.info.stepSize;
+          from.start.totals = from.info.totals;
+        }
       }
       if (from.start.time >= sm.solverOptions.endTime * (1 - 1e-12))
         throw InputError(what + ": the checkpoint is at t = " + formatTime(from.info.time) +
@@ -346,7 +335,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     checkpoint.stepSize = s.nextStepSize;
     checkpoint.stepsRows = earlierRows + stepsThisRun;
     checkpoint.vtkFrames = vtk.frames();
-    checkpoint.totals = from.restart ? addTotals(from.info.totals, s.run) : s.run;
+    checkpoint.totals = s.run;
     const bool last = s.time >= sm.solverOptions.endTime;
     if (sm.checkpointEvery > 0 && (s.step % sm.checkpointEvery == 0 || last))
       writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state);
@@ -357,19 +346,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   };
   RunReport report = runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep,
                                onIteration, from.start);
-  if (from.restart) {
-    // summary.json and the last line count the whole run, its part before the restart too.
-    report.steps += static_cast<int>(earlierRows);
-    const RunTotals& earlier = from.info.totals;
-    report.iterations += earlier.iterations;
-    report.linearSolves += earlier.linearSolves;
-    report.cuts += earlier.cuts;
-    report.statusIterations += earlier.statusIterations;
-    report.thresholdIterations += earlier.thresholdIterations;
-    report.geometryIterations += earlier.geometryIterations;
-    for (std::size_t k = 0; k < report.cycling.size(); ++k)
-      report.cycling[k] += earlier.cycling[k];
-  }
+  // summary.json and the last line count the whole run, its part before a restart too: the
+  // solver's counts start from the checkpoint's (RunStart::totals), its steps are this run's.
+  report.steps += static_cast<int>(earlierRows);
   // Said once per run: where the Dirichlet conditions fix a friction direction, its multiplier
   // was dropped (the singular tangent that would otherwise stop every algorithm there).
   if (contact)
