@@ -1,15 +1,13 @@
 #include "algorithms/PlainNewton.hpp"
 
+#include "base/Elapsed.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 namespace contactlab {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string sci(double v) {
   char buffer[32];

@@ -1,6 +1,7 @@
 #include "algorithms/StaticSolver.hpp"
 
 #include "algorithms/AlgorithmPresets.hpp"
+#include "base/Elapsed.hpp"
 #include "core/io/Interruption.hpp"
 #include "core/io/ParameterValidation.hpp"
 
@@ -324,7 +325,7 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
     shiftedResidual->update(-1.0, *rhs, 1.0);  // R(u + h du_D) - R(u)
     rhs->update(-1.0 / h, *shiftedResidual, -1.0);
   }
-  sr.seconds.assembly += std::chrono::duration<double>(clock::now() - t0).count();
+  sr.seconds.assembly += secondsSince(t0);
   if (!failure.code.empty()) {
     p.failure = failure.code;
     p.message = failure.message + " (tangent predictor, at the last converged state)";
@@ -351,7 +352,7 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
     p.failure = "linear-solver-failed";
     p.message = std::string("tangent predictor: ") + e.what();
   }
-  sr.seconds.linearSolve += std::chrono::duration<double>(clock::now() - t0).count();
+  sr.seconds.linearSolve += secondsSince(t0);
   ++sr.iterations;
   ++report.linearSolves;
   return p;
@@ -546,8 +547,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     sr.run = report.totals();
     const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);
-    report.seconds.output +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    report.seconds.output += secondsSince(t0);
     t = sr.time;
     dt = sr.nextStepSize;
     cuts = 0;

@@ -1,5 +1,6 @@
 #include "formulations/ContactProblem.hpp"
 
+#include "base/Elapsed.hpp"
 #include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/contact/TributaryAreas.hpp"
@@ -21,13 +22,6 @@
 #include <set>
 
 namespace contactlab {
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     : solid_(solid), zones_(std::move(zones)), dim_(solid.dim()) {

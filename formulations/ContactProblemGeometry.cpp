@@ -1,6 +1,7 @@
 // ContactProblem's geometry: pairing every point at a state and freezing it (updateGeometry),
 // and laying out each point's dofs for the assembly. A failure of the geometry on an iterate is
 // a failed iterate (contact-geometry-failed), not the end of the run.
+#include "base/Elapsed.hpp"
 #include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/problem/SymmetryConstraints.hpp"
@@ -18,13 +19,6 @@
 #include <vector>
 
 namespace contactlab {
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 bool ContactProblem::updateGeometry(const Vector& x, double t) {
   geometryFailure_.clear();

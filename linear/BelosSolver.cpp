@@ -1,5 +1,6 @@
 #include "linear/BelosSolver.hpp"
 
+#include "base/Elapsed.hpp"
 #include "linear/SolverParameters.hpp"
 
 #include <BelosLinearProblem.hpp>
@@ -19,9 +20,6 @@ namespace contactlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 using Kind = PreconditionerOptions::Kind;
 
@@ -55,10 +53,9 @@ std::string firstLine(const std::string& text) {
     const std::size_t first = line.find_first_not_of(" \t");
     if (first == std::string::npos) continue;
     line = line.substr(first);
-    const bool location =
-        line.back() == ':' && (line.find(".hpp:") != std::string::npos ||
-                               line.find(".cpp:") != std::string::npos ||
-                               line.find(".h:") != std::string::npos);
+    const bool location = line.back() == ':' && (line.find(".hpp:") != std::string::npos ||
+                                                 line.find(".cpp:") != std::string::npos ||
+                                                 line.find(".h:") != std::string::npos);
     if (location || line.rfind("Throw number", 0) == 0 || line.rfind("Throw test that", 0) == 0)
       continue;
     return line;

@@ -1,5 +1,6 @@
 #include "linear/Klu2Solver.hpp"
 
+#include "base/Elapsed.hpp"
 #include "linear/SolverParameters.hpp"
 
 #include <Amesos2.hpp>
@@ -17,9 +18,6 @@ namespace contactlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // Runs `work` on rank 0 only. An exception there is rethrown on every rank, so that all ranks
 // leave the collective call together: prefix + what() for LinearSolverError, prefix + `meaning`

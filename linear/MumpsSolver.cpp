@@ -1,5 +1,6 @@
 #include "linear/MumpsSolver.hpp"
 
+#include "base/Elapsed.hpp"
 #include "linear/MumpsErrors.hpp"
 #include "linear/SolverParameters.hpp"
 
@@ -26,9 +27,6 @@ namespace contactlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // ICNTL(14) is raised this way after a workspace-too-small error, then the factorization is
 // retried once. Generous, because a second failure costs a whole factorization: matrices with

@@ -1,6 +1,7 @@
 #include "apps/output/CriticalMuSummary.hpp"
 
 #include "algorithms/PatternCriticalFriction.hpp"
+#include "base/Elapsed.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -66,8 +67,7 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
       JsonValue::object()
           .set("computed", true)
           .set("time", t)
-          .set("seconds",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+          .set("seconds", secondsSince(start))
           .set("friction_rows", c.frictionRows)
           .set("ambiguous_points", c.ambiguousPoints)
           .set("patterns_examined", c.patterns)
