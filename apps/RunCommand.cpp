@@ -385,6 +385,15 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     record.resultPvd = vtk.pvdPath();
     if (uniqueness) record.possiblyNonUnique = uniqueness->possiblyNonUnique();
     record.totalSeconds = elapsed();
+    const LinearSolverStats& work = solver->stats();
+    record.linearWork = JsonValue::object()
+                            .set("analyses", work.analyses)
+                            .set("factorizations", work.factorizations)
+                            .set("reused_factorizations", work.reusedFactorizations)
+                            .set("corrections", work.corrections)
+                            .set("factorization_seconds", work.factorizationSeconds)
+                            .set("correction_seconds", work.correctionSeconds)
+                            .set("solve_seconds", work.solveSeconds);
     summary.build(report, record, materialState, comm->getSize()).write(outDir + "/summary.json");
     if (report.converged) {
       std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps

@@ -61,9 +61,16 @@ struct LinearSolverStats {
   int solves = 0;                // solve() calls, whatever the number of right-hand sides
   int iterations = 0;            // last solve, iterative solvers only (max over right-hand sides)
   double relativeResidual = -1;  // last solve, max_j ||b_j - A x_j|| / ||b_j||; -1: not computed
-  double analysisSeconds = 0;    // cumulated
+  // setMatrix calls answered without a factorization (direct solvers that reuse their factors):
+  // the matrix equals the last factorized one, or differs from it on few rows and columns and
+  // is solved through a low-rank correction (`corrections` of them).
+  int reusedFactorizations = 0;
+  int corrections = 0;
+  int lastCorrectionRank = 0;  // rows and columns of the last correction
+  double analysisSeconds = 0;  // cumulated
   double factorizationSeconds = 0;
   double solveSeconds = 0;
+  double correctionSeconds = 0;  // setting corrections up (entries of the inverse, dense LU)
 };
 
 class LinearSolver {

@@ -2,13 +2,12 @@
 
 #include "base/Elapsed.hpp"
 #include "linear/MumpsErrors.hpp"
+#include "linear/MumpsSolverImpl.hpp"
 #include "linear/SolverParameters.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
-#include <dmumps_c.h>
-#include <mpi.h>
 
 #ifdef CONTACTLAB_MUMPS_HAS_SCOTCH
 // SCOTCH's random generator (MUMPS' SCOTCH ordering draws from it): reset before each analysis.
@@ -43,62 +42,6 @@ MPI_Comm rawCommOf(const Comm& comm) {
 
 }  // namespace
 
-struct MumpsSolver::Impl {
-  DMUMPS_STRUC_C id{};
-  MPI_Comm comm = MPI_COMM_NULL;  // a duplicate, so MUMPS' messages never meet Tpetra's
-  Teuchos::RCP<const Comm> teuchosComm;
-  bool initialized = false;
-  bool analysed = false;
-  bool factored = false;
-  Teuchos::RCP<const Matrix> A;
-  // Distributed assembled input (1-based global indices); must outlive the factorization
-  // because the error analysis of a solve reads A again.
-  std::vector<MUMPS_INT> irn, jcn;
-  std::vector<double> values;
-  // Right-hand side and solution are centralized on rank 0.
-  Teuchos::RCP<const Map> rootMap;
-  Teuchos::RCP<const Import> toRoot, fromRoot;
-  Teuchos::RCP<const Map> rangeMap, domainMap;  // those the importers were built for
-  std::optional<ErrorAnalysis> lastErrorAnalysis;
-
-  Impl() = default;
-  Impl(const Impl&) = delete;
-  Impl& operator=(const Impl&) = delete;
-  // Also runs when the constructor throws after MUMPS' initialization.
-  ~Impl() {
-    int finalized = 0;
-    MPI_Finalized(&finalized);
-    if (finalized) return;  // too late to free anything collectively
-    if (initialized) run(-2);
-    if (comm != MPI_COMM_NULL) MPI_Comm_free(&comm);
-  }
-
-  MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }
-  MUMPS_INT infog(int i) const { return id.infog[i - 1]; }
-  double rinfog(int i) const { return id.rinfog[i - 1]; }
-  bool isRoot() const { return teuchosComm->getRank() == 0; }
-
-  void run(int job) {
-    id.job = job;
-    dmumps_c(&id);
-  }
-  void check(const char* phase) const {
-    const int code = infog(1);
-    if (code >= 0) return;
-    // SYM = 1 does not pivot: a zero pivot may only mean the matrix is not positive definite.
-    const std::string hint = id.sym == 1 && code == -10
-                                 ? "; in Mode symmetric this may only mean that the matrix is "
-                                   "not positive definite: try Mode symmetric-indefinite"
-                                 : "";
-    const std::string message = std::string("MUMPS ") + phase +
-                                " failed: " + mumpsErrorMeaning(code, infog(2)) +
-                                " (INFOG(1) = " + std::to_string(code) + ")" + hint;
-    // With pivoting (SYM = 0, 2) a zero pivot is a singular matrix; without, it is ambiguous.
-    if (code == -10 && id.sym != 1) throw SingularMatrixError(message);
-    throw LinearSolverError(message);
-  }
-};
-
 Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
   using Teuchos::tuple;
   auto p = Teuchos::rcp(new Teuchos::ParameterList("mumps"));
@@ -132,6 +75,22 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
          "Percent added to the analysis' workspace estimate (ICNTL(14)); raised automatically "
          "once if the factorization runs out of workspace",
          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 10000)));
+  Teuchos::setStringToIntegralParameter<int>(
+      "Factorization Reuse", "automatic",
+      "Whether a matrix may be solved with the factors of the last factorized one",
+      tuple<std::string>("automatic", "never"),
+      tuple<std::string>(
+          "when the matrix equals the last factorized one, or differs from it on at most Max "
+          "Correction Rank rows and columns (a Newton iteration where few contact statuses "
+          "changed on a solid whose tangent is constant) and MUMPS' flop counts predict it "
+          "cheaper, solve through a low-rank (Woodbury) correction of the old factors instead "
+          "of factorizing; off when Determinant or Condition Estimate is asked",
+          "factorize every matrix"),
+      tuple<int>(1, 0), p.get());
+  p->set("Max Correction Rank", 3000,
+         "Largest number of changed rows and columns a low-rank correction takes (its dense "
+         "matrix is that size squared)",
+         Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20000)));
   p->set("Determinant", false,
          "Compute the determinant at each factorization (ICNTL(33)), as mantissa and exponent");
   p->set("Condition Estimate", false,
@@ -154,6 +113,8 @@ MumpsSolver::Options MumpsSolver::optionsFrom(const Teuchos::ParameterList& para
   o.memoryRelaxation = p.get<int>("Memory Relaxation");
   o.determinant = p.get<bool>("Determinant");
   o.conditionEstimate = p.get<bool>("Condition Estimate");
+  o.reuseFactorization = enumParameter<int>(p, *valid, "Factorization Reuse") == 1;
+  o.maxCorrectionRank = p.get<int>("Max Correction Rank");
   return o;
 }
 
@@ -222,6 +183,15 @@ void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternCha
   if (N > static_cast<Tpetra::global_size_t>(std::numeric_limits<MUMPS_INT>::max()))
     throw LinearSolverError("matrix order " + std::to_string(N) +
                             " exceeds MUMPS' 32-bit index range");
+  if (reusesFactorization() && m.factored && correctFrom(A)) return;
+  factorizeMatrix(A, patternChanged);
+}
+
+void MumpsSolver::factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) {
+  Impl& m = *impl_;
+  m.correcting = false;
+  m.current = A;
+  const auto N = A->getGlobalNumRows();
 
   // Triplets of the local rows, 1-based global indices; lower triangle in symmetric modes.
   const auto rowMap = A->getRowMap();
@@ -288,6 +258,11 @@ void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternCha
     analyse();
   }
   factorize();
+  if (reusesFactorization()) {
+    m.reference = MatrixSnapshot(*A);
+    m.correctionIndices.clear();
+    m.correction.reset();
+  }
 }
 
 void MumpsSolver::analyse() {
@@ -332,6 +307,9 @@ void MumpsSolver::factorize() {
   }
   m.check("factorization");
   m.factored = true;
+  m.referenceFlops = m.rinfog(3);
+  // INFOG(29) < 0: -INFOG(29) million entries (32-bit overflow).
+  m.referenceEntries = m.infog(29) >= 0 ? m.infog(29) : -1e6 * m.infog(29);
   ++stats_.factorizations;
   stats_.factorizationSeconds += secondsSince(t0);
   if (m.rangeMap != m.A->getRangeMap() || m.domainMap != m.A->getDomainMap()) {
@@ -352,6 +330,10 @@ void MumpsSolver::solve(const MultiVector& b, MultiVector& x) {
   if (!b.getMap()->isSameAs(*m.rangeMap) || !x.getMap()->isSameAs(*m.domainMap))
     throw LinearSolverError("MUMPS solve: b and x must live on the matrix's range / domain map");
   if (nrhs == 0) return;
+  if (m.correcting) {
+    solveWithCorrection(b, x);
+    return;
+  }
   const auto t0 = Clock::now();
 
   MultiVector root(m.rootMap, nrhs);

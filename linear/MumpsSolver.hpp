@@ -12,6 +12,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace contactlab {
 
@@ -33,6 +35,12 @@ class MumpsSolver : public LinearSolver {
     int memoryRelaxation = 20;       // ICNTL(14), percent over the analysis' estimate
     bool determinant = false;        // ICNTL(33) at each factorization
     bool conditionEstimate = false;  // ICNTL(11) = 1 at each solve (costs more than the solve)
+    // Reuse the last factorization for a matrix that equals it or differs from it on at most
+    // maxCorrectionRank rows and columns (CapacitanceCorrection), when MUMPS' flop counts
+    // predict that cheaper than a factorization. Off when determinant or conditionEstimate is
+    // asked (they describe a factorized matrix).
+    bool reuseFactorization = true;
+    int maxCorrectionRank = 3000;
   };
 
   // What MUMPS' error analysis (ICNTL(11) = 1) reported for the first right-hand side of the
@@ -78,8 +86,21 @@ class MumpsSolver : public LinearSolver {
 
  private:
   struct Impl;  // keeps dmumps_c.h and mpi.h out of this header
+  void factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged);
   void analyse();
   void factorize();
+  bool reusesFactorization() const;
+  // Answers setMatrix(A) from the reference factorization when it pays; false: factorize A.
+  bool correctFrom(const Teuchos::RCP<const Matrix>& A);
+  // Entries (column, row) of the factorized matrix's inverse, sorted by column (host's list;
+  // collective).
+  std::vector<double> inverseEntries(const std::vector<std::pair<GO, GO>>& entries);
+  // One MUMPS solve of the centralized right-hand sides `root` in place (collective).
+  void solveCentralized(MultiVector& root);
+  // x = A^-1 b through the correction: A0^-1 (b - P D y) (CapacitanceCorrection).
+  void solveCorrected(const MultiVector& b, MultiVector& x);
+  // solveCorrected, checked by A's residual and refined; factorizes A when that fails.
+  void solveWithCorrection(const MultiVector& b, MultiVector& x);
   const Options options_;
   std::unique_ptr<Impl> impl_;
 };

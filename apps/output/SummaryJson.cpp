@@ -176,6 +176,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
                              .set("threshold", report.thresholdIterations)
                              .set("geometry", report.geometryIterations))
       .set("linear_solves", report.linearSolves)
+      .set("linear_work", record.linearWork)
       .set("condition_estimate",
            record.maxCondition >= 0 ? JsonValue(record.maxCondition) : JsonValue())
       .set("cycling", cycling)

@@ -25,6 +25,7 @@ struct RunRecord {
   std::optional<std::string> resultPvd;
   std::optional<JsonValue> criticalMu;   // `contactlab critical-mu` only
   std::optional<int> possiblyNonUnique;  // Output/Critical Mu Check only
+  JsonValue linearWork;                  // the linear solver's counts (factorizations, ...)
 };
 
 class SummaryJson {

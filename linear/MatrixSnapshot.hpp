@@ -1,0 +1,47 @@
+#pragma once
+// A copy of the values of a distributed matrix's local rows, indexed by global row and column,
+// and the difference of another matrix from it: the rows and columns where any entry differs
+// (exactly: an unchanged entry is bitwise equal when it was assembled from the same inputs)
+// and the entries of the difference on them. Entries absent from one pattern count as zero, so
+// two matrices with different patterns (contact terms added) compare entry by entry.
+// Local work only: the caller gathers the indices over the ranks.
+#include "base/LinearAlgebra.hpp"
+
+#include <vector>
+
+namespace contactlab {
+
+class MatrixSnapshot {
+ public:
+  struct Entry {
+    GO row;
+    GO col;
+    double value;
+  };
+  struct Difference {
+    std::vector<GO> indices;     // sorted, unique: rows of this rank and columns that differ
+    std::vector<Entry> entries;  // (A - snapshot) on this rank's rows, nonzero entries only
+  };
+
+  MatrixSnapshot() = default;
+  explicit MatrixSnapshot(const Matrix& A);
+
+  bool empty() const { return rowStart_.empty(); }
+  // Whether A has this snapshot's global size and the same rows on this rank, in the same
+  // order (a collective answer is the caller's: reduce it over the ranks).
+  bool sameRowsAs(const Matrix& A) const;
+  // A - snapshot; A must have the same rows (sameRowsAs).
+  Difference differenceFrom(const Matrix& A) const;
+
+ private:
+  // One local row's (column, value) pairs, sorted by column.
+  static void sortedRow(const Matrix::local_matrix_host_type& local, const Map& colMap, LO row,
+                        std::vector<std::pair<GO, double>>& out);
+  Tpetra::global_size_t globalRows_ = 0;
+  std::vector<GO> rows_;          // global ids of the local rows, in local order
+  std::vector<size_t> rowStart_;  // CSR over rows_
+  std::vector<GO> cols_;
+  std::vector<double> values_;
+};
+
+}  // namespace contactlab

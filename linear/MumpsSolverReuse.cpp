@@ -1,0 +1,266 @@
+// MumpsSolver's factorization reuse: a matrix equal to the last factorized one is solved with
+// its factors; one that differs from it on few rows and columns, through a low-rank correction
+// of them (CapacitanceCorrection), when that is predicted cheaper than a factorization.
+#include "base/Elapsed.hpp"
+#include "linear/MumpsSolverImpl.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+#include <numeric>
+
+namespace contactlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Costs in factorization flops (which run dense BLAS 3 kernels) per flop of a pass over the
+// factors: a solve with one right-hand side is memory-bound (weight 24), the entries of the
+// inverse come in blocks of columns with the elimination tree pruned (1 per column). Measured
+// on hertz-3d tet10, 46 572 dofs: a factorization 2.2 s for 5.7e10 flops, a solve 0.066 s, the
+// 1 746 columns of a first correction 4.7 s, for 3.7e7 factor entries (doc/performance.md,
+// "Factorization reuse"). The decision uses flop counts, not timings, so that a run takes the
+// same path, hence has the same round-off, on a loaded machine.
+constexpr double kSolveWeight = 24.0;
+constexpr double kInverseColumnWeight = 1.0;
+// A correction's inverse entries serve every later matrix that differs from the reference on
+// the same indices (the next Newton iterations and load steps of a solid whose tangent is
+// constant): it is taken when it costs less than this many factorizations.
+constexpr double kAmortization = 2.0;
+// Below this many flops a factorization takes a few milliseconds at most: a correction would
+// save nothing worth its bookkeeping, and the small models (the 2D scenes of the regression
+// gold) keep one factorization per matrix and its round-off.
+constexpr double kMinimumFactorizationFlops = 1e8;
+
+// A correction's solve is accepted when its normwise backward error
+// ||b - A x||_inf / (||A||_inf ||x||_inf + ||b||_inf) is below this (a direct solve's is of
+// order 1e-16); else it is refined, at most kMaxRefinements times, then A is factorized.
+constexpr double kCorrectionBackwardError = 1e-13;
+constexpr int kMaxRefinements = 2;
+
+// Whether solving through a correction of `rank` indices, `fresh` of them without entries of
+// the inverse yet, is predicted to pay: the new columns of the inverse, the dense LU and the
+// second solve each iteration then needs, against kAmortization factorizations.
+bool correctionPays(size_t rank, size_t fresh, double factorFlops, double factorEntries) {
+  if (factorFlops < kMinimumFactorizationFlops) return false;
+  const double pass = 2.0 * factorEntries;  // flops of one pass over the factors
+  const double r = static_cast<double>(rank);
+  const double predicted = kInverseColumnWeight * pass * static_cast<double>(fresh) +
+                           kSolveWeight * pass + 2.0 / 3.0 * r * r * r;
+  return predicted < kAmortization * factorFlops;
+}
+
+// The sorted union of every rank's sorted `local` indices, on every rank.
+std::vector<GO> unionOverRanks(const std::vector<GO>& local, MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  int count = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
+  std::vector<GO> all(offsets.back() + counts.back());
+  MPI_Allgatherv(local.data(), count, MPI_LONG_LONG, all.data(), counts.data(), offsets.data(),
+                 MPI_LONG_LONG, comm);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+// Every rank's entries on rank 0 (as row, column, value triples of doubles: global ids are
+// below 2^31, exact in a double).
+std::vector<MatrixSnapshot::Entry> gatherOnRoot(const std::vector<MatrixSnapshot::Entry>& local,
+                                                MPI_Comm comm) {
+  int size = 1, rank = 0;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  std::vector<double> packed;
+  packed.reserve(3 * local.size());
+  for (const auto& e : local) {
+    packed.push_back(static_cast<double>(e.row));
+    packed.push_back(static_cast<double>(e.col));
+    packed.push_back(e.value);
+  }
+  int count = static_cast<int>(packed.size());
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
+  std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
+  MPI_Gatherv(packed.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, comm);
+  std::vector<MatrixSnapshot::Entry> entries(all.size() / 3);
+  for (size_t k = 0; k < entries.size(); ++k)
+    entries[k] = {static_cast<GO>(all[3 * k]), static_cast<GO>(all[3 * k + 1]), all[3 * k + 2]};
+  return entries;
+}
+
+double normInf(const Matrix& A, MPI_Comm comm) {
+  const auto local = A.getLocalMatrixHost();
+  double norm = 0;
+  for (LO r = 0; r < static_cast<LO>(local.numRows()); ++r) {
+    double sum = 0;
+    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
+      sum += std::abs(local.values(k));
+    norm = std::max(norm, sum);
+  }
+  double global = 0;
+  MPI_Allreduce(&norm, &global, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return global;
+}
+
+}  // namespace
+
+bool MumpsSolver::reusesFactorization() const {
+  return options_.reuseFactorization && !options_.determinant && !options_.conditionEstimate;
+}
+
+bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
+  Impl& m = *impl_;
+  const auto t0 = Clock::now();
+  int same = m.reference.sameRowsAs(*A) ? 1 : 0;
+  int allSame = 0;
+  MPI_Allreduce(&same, &allSame, 1, MPI_INT, MPI_MIN, m.comm);
+  if (!allSame) return false;
+  const auto difference = m.reference.differenceFrom(*A);
+  const std::vector<GO> indices = unionOverRanks(difference.indices, m.comm);
+  if (indices.empty()) {  // the factorized matrix itself
+    m.correcting = false;
+    m.current = A;
+    ++stats_.reusedFactorizations;
+    stats_.correctionSeconds += secondsSince(t0);
+    return true;
+  }
+  std::vector<GO> fresh;
+  std::set_difference(indices.begin(), indices.end(), m.correctionIndices.begin(),
+                      m.correctionIndices.end(), std::back_inserter(fresh));
+  // The rank bounds the dense LU, the known indices the inverse entries kept (G).
+  const size_t maxRank = static_cast<size_t>(options_.maxCorrectionRank);
+  if (indices.size() > maxRank || m.correctionIndices.size() + fresh.size() > 2 * maxRank)
+    return false;
+  if (!correctionPays(indices.size(), fresh.size(), m.referenceFlops, m.referenceEntries))
+    return false;
+
+  if (m.isRoot() && !m.correction)
+    m.correction = std::make_unique<CapacitanceCorrection>(options_.mode != Mode::general);
+  if (!fresh.empty()) {
+    std::vector<std::pair<GO, GO>> entries;
+    if (m.isRoot()) entries = m.correction->entriesToFetch(fresh);
+    const std::vector<double> values = inverseEntries(entries);
+    if (m.isRoot()) m.correction->addIndices(fresh, values);
+    std::vector<GO> known;
+    std::merge(m.correctionIndices.begin(), m.correctionIndices.end(), fresh.begin(), fresh.end(),
+               std::back_inserter(known));
+    m.correctionIndices = std::move(known);
+  }
+  const auto delta = gatherOnRoot(difference.entries, m.comm);
+  int factored = m.isRoot() ? (m.correction->factor(indices, delta) ? 1 : 0) : 0;
+  MPI_Bcast(&factored, 1, MPI_INT, 0, m.comm);
+  // A zero pivot: A is singular, or the correction cannot tell; the factorization will say.
+  if (!factored) return false;
+  m.currentNormInf = normInf(*A, m.comm);
+  m.correcting = true;
+  m.current = A;
+  ++stats_.reusedFactorizations;
+  ++stats_.corrections;
+  stats_.lastCorrectionRank = static_cast<int>(indices.size());
+  stats_.correctionSeconds += secondsSince(t0);
+  return true;
+}
+
+std::vector<double> MumpsSolver::inverseEntries(const std::vector<std::pair<GO, GO>>& entries) {
+  Impl& m = *impl_;
+  std::vector<MUMPS_INT> pointers, rows;
+  std::vector<double> values;
+  if (m.isRoot()) {
+    // Compressed columns, 1-based, over all N columns (MUMPS asks NRHS = N).
+    const MUMPS_INT n = m.id.n;
+    pointers.assign(n + 1, 0);
+    for (const auto& entry : entries)
+      ++pointers[entry.first + 1];
+    std::partial_sum(pointers.begin(), pointers.end(), pointers.begin());
+    for (auto& p : pointers)
+      ++p;
+    rows.reserve(entries.size());
+    for (const auto& entry : entries)
+      rows.push_back(static_cast<MUMPS_INT>(entry.second + 1));
+    values.assign(entries.size(), 0.0);
+    m.id.nrhs = n;
+    m.id.nz_rhs = static_cast<MUMPS_INT>(entries.size());
+    m.id.irhs_ptr = pointers.data();
+    m.id.irhs_sparse = rows.data();
+    m.id.rhs_sparse = values.data();
+  }
+  m.icntl(30) = 1;
+  m.run(3);
+  m.icntl(30) = 0;
+  m.id.irhs_ptr = nullptr;
+  m.id.irhs_sparse = nullptr;
+  m.id.rhs_sparse = nullptr;
+  m.check("computation of entries of the inverse");
+  return values;
+}
+
+void MumpsSolver::solveCentralized(MultiVector& root) {
+  Impl& m = *impl_;
+  Teuchos::ArrayRCP<double> data;
+  if (m.isRoot()) {
+    data = root.get1dViewNonConst();
+    m.id.rhs = data.getRawPtr();
+    m.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
+  }
+  m.id.nrhs = static_cast<MUMPS_INT>(root.getNumVectors());
+  m.run(3);
+  m.id.rhs = nullptr;
+  m.check("solve");
+}
+
+void MumpsSolver::solveCorrected(const MultiVector& b, MultiVector& x) {
+  Impl& m = *impl_;
+  const size_t nrhs = b.getNumVectors();
+  MultiVector root(m.rootMap, nrhs);
+  root.doImport(b, *m.toRoot, Tpetra::INSERT);
+  MultiVector corrected(m.rootMap, nrhs);
+  corrected.assign(root);
+  solveCentralized(root);  // A0^-1 b
+  if (m.isRoot())
+    for (size_t j = 0; j < nrhs; ++j)
+      m.correction->correct(root.getData(j).getRawPtr(), corrected.getDataNonConst(j).getRawPtr());
+  solveCentralized(corrected);  // A0^-1 (b - P D y)
+  x.doImport(corrected, *m.fromRoot, Tpetra::INSERT);
+}
+
+void MumpsSolver::solveWithCorrection(const MultiVector& b, MultiVector& x) {
+  Impl& m = *impl_;
+  const auto t0 = Clock::now();
+  const size_t nrhs = b.getNumVectors();
+  solveCorrected(b, x);
+  MultiVector residual(b.getMap(), nrhs), dx(x.getMap(), nrhs);
+  std::vector<double> rNorm(nrhs), xNorm(nrhs), bNorm(nrhs);
+  b.normInf(bNorm);
+  for (int refinement = 0;; ++refinement) {
+    m.current->apply(x, residual);
+    residual.update(1.0, b, -1.0);
+    residual.normInf(rNorm);
+    x.normInf(xNorm);
+    double error = 0;
+    for (size_t j = 0; j < nrhs; ++j) {
+      const double scale = m.currentNormInf * xNorm[j] + bNorm[j];
+      if (scale > 0) error = std::max(error, rNorm[j] / scale);
+    }
+    if (!(error > kCorrectionBackwardError)) break;
+    if (refinement == kMaxRefinements) {
+      // The correction lost accuracy (an ill-conditioned I + G D): factorize A itself.
+      stats_.solveSeconds += secondsSince(t0);
+      factorizeMatrix(m.current, false);
+      solve(b, x);
+      return;
+    }
+    solveCorrected(residual, dx);
+    x.update(1.0, dx, 1.0);
+  }
+  ++stats_.solves;
+  stats_.solveSeconds += secondsSince(t0);
+}
+
+}  // namespace contactlab
