@@ -121,4 +121,17 @@ struct PointLoad {
   LoadFunction function;
 };
 
+// The prescribed temperature of an element block, uniform over it (a thermal load: no heat
+// conduction is solved): T(t) = T_ref + (value - T_ref) f(t), T_ref the block material's
+// stress-free temperature (Material::referenceTemperature, the one place it is given), so that
+// f = 0 leaves the block stress-free and f = 1 puts it at `value`.
+struct BlockTemperature {
+  std::string block;   // element block (the scene's key)
+  double value = 0.0;  // degC, at f = 1
+  LoadFunction function;
+  double at(double referenceTemperature, double t) const {
+    return referenceTemperature + (value - referenceTemperature) * function(t);
+  }
+};
+
 }  // namespace contactlab
