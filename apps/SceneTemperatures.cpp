@@ -24,8 +24,7 @@ std::vector<BlockTemperature> blockTemperatures(const Teuchos::ParameterList& se
     }
     if (!material->second->referenceTemperature())
       throw InputError(where + ": " + path + ": the block's material '" + material->second->name() +
-                       "' takes no temperature: thermal strain and temperature tables are in "
-                       "the small-strain laws (linear-elastic, j2-small-strain) only");
+                       "' takes no temperature (it has no thermal strain)");
     const Teuchos::ParameterList& t = section.sublist(block);
     BlockTemperature temperature;
     temperature.block = block;

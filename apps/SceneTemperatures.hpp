@@ -13,7 +13,7 @@ namespace contactlab {
 
 // Reads the validated section; model.materials must be built. Throws InputError naming `where`
 // and the entry for a name that is not a block of Materials, a block whose material takes no
-// temperature (finite-strain laws), or a Value that is not finite.
+// temperature (Material::referenceTemperature), or a Value that is not finite.
 std::vector<BlockTemperature> blockTemperatures(const Teuchos::ParameterList& section,
                                                 const SolidModel& model, double endTime,
                                                 const std::string& where);

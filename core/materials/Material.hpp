@@ -68,7 +68,7 @@ class Material {
   virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }
   // The stress-free temperature of a law that takes a temperature (thermal strain, parameters
   // tabulated in T); empty for a law that ignores MaterialInput::temperature, which a scene
-  // must not heat (the finite-strain laws: no F = Fe F_theta split yet).
+  // must not heat (every registered law takes one; test doubles need not).
   virtual std::optional<double> referenceTemperature() const { return std::nullopt; }
 };
 

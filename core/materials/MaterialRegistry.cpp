@@ -17,7 +17,7 @@ namespace {
 
 using Teuchos::ParameterList;
 
-// The thermal parameters of a small-strain law: alpha and T_ref, and a `Temperature Tables`
+// The thermal parameters of a law: alpha and T_ref, and a `Temperature Tables`
 // sublist with one temperature grid and an optional column per parameter in `tabulated`
 // (keys of p) and for alpha. One grid per law, because data sheets (RCC-M, the EN 10028 and
 // ASME II-D tables) list every property at the same temperatures.
@@ -25,7 +25,9 @@ void addThermalParameters(ParameterList& p, const std::vector<std::string>& tabu
   p.set("Thermal Expansion", 0.0,
         "Secant coefficient of thermal expansion alpha, in 1/K, measured from Reference "
         "Temperature: the thermal strain is alpha (T - T_ref) in every normal direction (the "
-        "hoop one too in axisymmetry); T is the block's Temperature entry (0: no thermal strain)");
+        "hoop one too in axisymmetry; finite-strain laws: F = F_e F_theta with the stretch "
+        "F_theta = (1 + alpha (T - T_ref)) I); T is the block's Temperature entry (0: no "
+        "thermal strain)");
   p.set("Reference Temperature", 20.0,
         "Stress-free temperature T_ref, in degC: no thermal strain at it, and the block's "
         "temperature when the scene's Temperature section does not name the block (its "
@@ -110,6 +112,60 @@ Teuchos::RCP<const ParameterList> validJ2SmallStrain() {
   return p;
 }
 
+Teuchos::RCP<const ParameterList> validSaintVenantKirchhoff() {
+  auto p = Teuchos::rcp(new ParameterList("saint-venant-kirchhoff"));
+  p->set("E", 1.0, "Young's modulus (> 0), in the scene's stress unit");
+  p->set("nu", 0.3, "Poisson's ratio, in (-1, 0.5)");
+  p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+  addThermalParameters(*p, {});
+  return p;
+}
+
+Teuchos::RCP<const ParameterList> validNeoHookean() {
+  auto p = Teuchos::rcp(new ParameterList("neo-hookean"));
+  p->set("E", 0.0,
+         "Young's modulus (> 0), in the scene's stress unit; with nu it sets C10 = mu / 2 "
+         "and D1 = 2 / K. 0 means not given: then give C10 and D1");
+  p->set("nu", NeoHookean::kDefaultPoissonRatio, "Poisson's ratio, in (-1, 0.5); used only with E");
+  p->set("C10", 0.0,
+         "Coefficient C10 = mu / 2 (> 0), in the scene's stress unit. 0 means not given: "
+         "then give E (and nu)");
+  p->set("D1", 0.0,
+         "Coefficient D1 = 2 / K (> 0), in 1 / (the scene's stress unit); given with C10");
+  p->set("Volumetric Energy", "quadratic",
+         "U(J): 'quadratic' (J - 1)^2 / D1 (Abaqus, code_aster) or 'simo-miehe' "
+         "K/4 (J^2 - 1 - 2 ln J) (Simo & Miehe 1991, deal.II); the same at small strain");
+  p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+  addThermalParameters(*p, {});
+  return p;
+}
+
+Teuchos::RCP<const ParameterList> validSimoMiehe() {
+  auto p = Teuchos::rcp(new ParameterList("simo-miehe"));
+  p->set("E", 1.0,
+         "Young's modulus (> 0), in the scene's stress unit; with nu the Hencky bulk and "
+         "shear moduli K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu))");
+  p->set("nu", 0.3, "Poisson's ratio, in (0, 0.5)");
+  p->set("Yield Stress", 0.0,
+         "Initial uniaxial yield stress sigma_y0 (> 0, must be given), in the scene's "
+         "stress unit: the von Mises Kirchhoff stress at first yield");
+  p->set("Isotropic Hardening Modulus", 0.0,
+         "Linear isotropic hardening H (>= 0), in the scene's stress unit: the yield "
+         "stress is sigma_y0 + H alpha, alpha the equivalent plastic strain; 0 is "
+         "perfectly plastic. Leave at 0 when a hardening curve is given");
+  p->set("Hardening Strains", Teuchos::Array<double>(),
+         "Optional tabulated hardening: equivalent plastic strains alpha_i of the curve's "
+         "points, starting at 0 and strictly increasing, e.g. [0, 0.02, 0.1]; with "
+         "Hardening Stresses. The yield stress is piecewise linear in alpha and continues "
+         "beyond the last point with the last segment's slope. Empty: linear hardening");
+  p->set("Hardening Stresses", Teuchos::Array<double>(),
+         "Yield stresses sigma_i at Hardening Strains (as many entries), starting at the "
+         "Yield Stress and never decreasing, e.g. [250, 300, 340]");
+  p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
+  addThermalParameters(*p, {});
+  return p;
+}
+
 }  // namespace
 
 MaterialRegistry& materialRegistry() {
@@ -134,46 +190,25 @@ void registerMaterials() {
   materialRegistry().add(
       {"saint-venant-kirchhoff",
        "Saint Venant-Kirchhoff hyperelasticity, finite strain: S = lambda tr(E) I + 2 mu E with "
-       "the Green-Lagrange strain E (large rotations, small strains).",
-       [] {
-         auto p = Teuchos::rcp(new Teuchos::ParameterList("saint-venant-kirchhoff"));
-         p->set("E", 1.0, "Young's modulus (> 0), in the scene's stress unit");
-         p->set("nu", 0.3, "Poisson's ratio, in (-1, 0.5)");
-         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
-         return Teuchos::RCP<const Teuchos::ParameterList>(p);
-       },
-       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
-         return std::make_unique<SaintVenantKirchhoff>(p.get<double>("E"), p.get<double>("nu"),
-                                                       p.get<double>("density"));
+       "the Green-Lagrange strain E (large rotations, small strains); thermal stretch F = Fe "
+       "F_theta.",
+       validSaintVenantKirchhoff, [](const ParameterList& p) -> std::unique_ptr<Material> {
+         return std::make_unique<SaintVenantKirchhoff>(
+             p.get<double>("E"), p.get<double>("nu"), p.get<double>("density"),
+             thermalExpansion(p, *validSaintVenantKirchhoff()));
        }});
   materialRegistry().add(
       {"neo-hookean",
        "Compressible neo-Hookean hyperelasticity, finite strain: W = C10 (I1bar - 3) + U(J), "
        "U = (J - 1)^2 / D1 (Abaqus / code_aster form) or K/4 (J^2 - 1 - 2 ln J). Give either E "
-       "and nu or C10 and D1.",
-       [] {
-         auto p = Teuchos::rcp(new Teuchos::ParameterList("neo-hookean"));
-         p->set("E", 0.0,
-                "Young's modulus (> 0), in the scene's stress unit; with nu it sets C10 = mu / 2 "
-                "and D1 = 2 / K. 0 means not given: then give C10 and D1");
-         p->set("nu", NeoHookean::kDefaultPoissonRatio,
-                "Poisson's ratio, in (-1, 0.5); used only with E");
-         p->set("C10", 0.0,
-                "Coefficient C10 = mu / 2 (> 0), in the scene's stress unit. 0 means not given: "
-                "then give E (and nu)");
-         p->set("D1", 0.0,
-                "Coefficient D1 = 2 / K (> 0), in 1 / (the scene's stress unit); given with C10");
-         p->set("Volumetric Energy", "quadratic",
-                "U(J): 'quadratic' (J - 1)^2 / D1 (Abaqus, code_aster) or 'simo-miehe' "
-                "K/4 (J^2 - 1 - 2 ln J) (Simo & Miehe 1991, deal.II); the same at small strain");
-         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
-         return Teuchos::RCP<const Teuchos::ParameterList>(p);
-       },
-       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
-         return std::make_unique<NeoHookean>(NeoHookean::fromParameters(
-             p.get<double>("E"), p.get<double>("nu"), p.get<double>("C10"), p.get<double>("D1"),
-             p.get<double>("density"),
-             NeoHookean::volumetricFromName(p.get<std::string>("Volumetric Energy"))));
+       "and nu or C10 and D1. Thermal stretch F = Fe F_theta.",
+       validNeoHookean, [](const ParameterList& p) -> std::unique_ptr<Material> {
+         return std::make_unique<NeoHookean>(
+             NeoHookean::fromParameters(
+                 p.get<double>("E"), p.get<double>("nu"), p.get<double>("C10"), p.get<double>("D1"),
+                 p.get<double>("density"),
+                 NeoHookean::volumetricFromName(p.get<std::string>("Volumetric Energy")))
+                 .withThermalExpansion(thermalExpansion(p, *validNeoHookean())));
        }});
   materialRegistry().add(
       {"j2-small-strain",
@@ -196,32 +231,9 @@ void registerMaterials() {
       {"simo-miehe",
        "Von Mises plasticity, finite strain (plane strain in 2D): F = Fe Fp, Hencky elasticity "
        "in logarithmic strains, exponential-map radial return (Simo 1992; de Souza Neto et al. "
-       "ch. 14), isotropic hardening linear or tabulated, consistent tangent.",
-       [] {
-         auto p = Teuchos::rcp(new Teuchos::ParameterList("simo-miehe"));
-         p->set("E", 1.0,
-                "Young's modulus (> 0), in the scene's stress unit; with nu the Hencky bulk and "
-                "shear moduli K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu))");
-         p->set("nu", 0.3, "Poisson's ratio, in (0, 0.5)");
-         p->set("Yield Stress", 0.0,
-                "Initial uniaxial yield stress sigma_y0 (> 0, must be given), in the scene's "
-                "stress unit: the von Mises Kirchhoff stress at first yield");
-         p->set("Isotropic Hardening Modulus", 0.0,
-                "Linear isotropic hardening H (>= 0), in the scene's stress unit: the yield "
-                "stress is sigma_y0 + H alpha, alpha the equivalent plastic strain; 0 is "
-                "perfectly plastic. Leave at 0 when a hardening curve is given");
-         p->set("Hardening Strains", Teuchos::Array<double>(),
-                "Optional tabulated hardening: equivalent plastic strains alpha_i of the curve's "
-                "points, starting at 0 and strictly increasing, e.g. [0, 0.02, 0.1]; with "
-                "Hardening Stresses. The yield stress is piecewise linear in alpha and continues "
-                "beyond the last point with the last segment's slope. Empty: linear hardening");
-         p->set("Hardening Stresses", Teuchos::Array<double>(),
-                "Yield stresses sigma_i at Hardening Strains (as many entries), starting at the "
-                "Yield Stress and never decreasing, e.g. [250, 300, 340]");
-         p->set("density", 0.0, "Mass density (>= 0), used by body forces given per mass");
-         return Teuchos::RCP<const Teuchos::ParameterList>(p);
-       },
-       [](const Teuchos::ParameterList& p) -> std::unique_ptr<Material> {
+       "ch. 14), isotropic hardening linear or tabulated, consistent tangent; thermal stretch "
+       "F = Fe F_theta Fp.",
+       validSimoMiehe, [](const ParameterList& p) -> std::unique_ptr<Material> {
          SimoMiehe::Parameters sm;
          sm.youngModulus = p.get<double>("E");
          sm.poissonRatio = p.get<double>("nu");
@@ -230,6 +242,7 @@ void registerMaterials() {
          sm.hardeningStrains = p.get<Teuchos::Array<double>>("Hardening Strains").toVector();
          sm.hardeningStresses = p.get<Teuchos::Array<double>>("Hardening Stresses").toVector();
          sm.density = p.get<double>("density");
+         sm.expansion = thermalExpansion(p, *validSimoMiehe());
          return std::make_unique<SimoMiehe>(sm);
        }});
 }

@@ -220,8 +220,7 @@ void Problem::checkModel() const {
     if (!material->second->referenceTemperature())
       throw InputError("temperature given for block '" + temperature.block + "', whose material " +
                        material->second->name() +
-                       " takes no temperature (no thermal strain: the finite-strain laws have "
-                       "none yet; linear-elastic and j2-small-strain do)");
+                       " takes no temperature (it has no thermal strain)");
     if (!heated.insert(temperature.block).second)
       throw InputError("two temperatures given for block '" + temperature.block + "'");
   }

@@ -271,10 +271,11 @@ cases = [
     # Temperature: a block of Materials, a law that takes one, tables that are functions of T.
     ("temperature of an unknown block", GOOD + "  Temperature:\n    tube: {Value: 304.0}\n", [],
      ["scene.yaml", "Temperature/tube", "'tube' is not a block of Materials", "blocks: body"]),
-    ("temperature of a finite-strain block",
-     scene_with("Type: linear-elastic\n      linear-elastic:", "Type: neo-hookean\n      neo-hookean:")
-     + "  Temperature:\n    body: {Value: 304.0}\n", [],
-     ["Temperature/body", "'neo-hookean' takes no temperature", "linear-elastic, j2-small-strain"]),
+    ("temperature table without a column",
+     scene_with("Type: linear-elastic\n      linear-elastic: {E: 100.0, nu: 0.3}",
+                "Type: neo-hookean\n      neo-hookean: {E: 100.0, Temperature Tables: "
+                "{Temperatures: [20, 304]}}"), [],
+     ["Materials/body", "Temperature Tables has Temperatures but no parameter column"]),
     ("temperature table with Times but a ramp",
      GOOD + "  Temperature:\n    body: {Value: 304.0, Times: [0, 1], Factors: [0, 1]}\n", [],
      ["Temperature/body/Times and Factors belong to Function: table"]),

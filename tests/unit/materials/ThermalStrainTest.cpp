@@ -11,6 +11,7 @@
 #include "core/materials/J2SmallStrain.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/materials/MaterialRegistry.hpp"
+#include "core/materials/SimoMiehe.hpp"
 #include "core/materials/TemperatureDependent.hpp"
 
 #include <Teuchos_Array.hpp>
@@ -286,12 +287,16 @@ TEST(ThermalStrain, RegistryReadsTablesAndRefusesTwoValuesForOneParameter) {
   negative.sublist("Temperature Tables").set("Yield Stress", column({250.0, -1.0}));
   EXPECT_NE(buildError("j2-small-strain", negative).find("Yield Stress must be > 0 (got -1)"),
             std::string::npos);
-  // Only the small-strain laws take a temperature.
-  for (const std::string name : {"saint-venant-kirchhoff", "neo-hookean"}) {
-    Teuchos::ParameterList finite = registryParameters(name);
-    if (name == "neo-hookean") finite.set("E", 2.0);
-    EXPECT_FALSE(materialRegistry().get(name).build(finite)->referenceTemperature()) << name;
-  }
+  // The finite-strain laws read alpha and T_ref too (FiniteStrainThermalTest.cpp tests them).
+  Teuchos::ParameterList finite = registryParameters("simo-miehe");
+  finite.set("Yield Stress", 250.0);
+  finite.set("Reference Temperature", 10.0);
+  finite.sublist("Temperature Tables").set("Temperatures", column({20.0, 304.0}));
+  finite.sublist("Temperature Tables").set("Thermal Expansion", column({13e-6, 14e-6}));
+  const auto simoMiehe = materialRegistry().get("simo-miehe").build(finite);
+  EXPECT_EQ(simoMiehe->referenceTemperature(), std::optional<double>(10.0));
+  EXPECT_NEAR(dynamic_cast<const SimoMiehe&>(*simoMiehe).parameters().expansion.strain(162.0),
+              13.5e-6 * 152.0, 1e-15);
 }
 
 }  // namespace
