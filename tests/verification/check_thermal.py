@@ -19,7 +19,13 @@ CASE:
               (20 -> 304 degC at t = 0.5, back to 162 at t = 1): sigma_zz = -E(162) alpha(162)
               (162 - 20) = -1.9e5 * 1.35e-5 * 142.
 Each value within 1e-9 relative of the closed form (linear displacement fields: the element
-reproduces them exactly). Prints "RESULT ..." lines for doc/verification.md."""
+reproduces them exactly).
+  tube-stages SCENE is scenes/tube-expansion-thermal-axisymmetric.yaml: its expansion and release
+              (t <= 2, temperature factor 0: the blocks at T_ref, their tables read there) must
+              give the residual contact force of scenes/tube-expansion-axisymmetric.yaml bit for
+              bit, and its heating to 304 degC (t = 3) must raise it (the tube expands more than
+              the tubesheet).
+Prints "RESULT ..." lines for doc/verification.md."""
 import os, sys
 
 import yaml
@@ -28,6 +34,26 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from contactlab_run import converged_run  # noqa: E402
 
 exe, scene_path, out, case = sys.argv[1:5]
+if case == "tube-stages":
+    import csv
+    thermal = converged_run(exe, scene_path, os.path.join(out, "thermal"))
+    plain_scene = os.path.join(os.path.dirname(scene_path),
+                               os.path.basename(scene_path).replace("-thermal", ""))
+    plain = converged_run(exe, plain_scene, os.path.join(out, "plain"))
+    rows = {float(r["time"]): float(r["normal_force"])
+            for r in csv.DictReader(open(os.path.join(out, "thermal", "steps.csv")))}
+    released, heated = rows[2.0], thermal["contact"]["normal_force"]
+    reference = plain["contact"]["normal_force"]
+    print(f"RESULT tube-stages residual contact force after release {released!r} (isothermal "
+          f"scene {reference!r}); after heating to 304 degC {heated:.6g} ({heated / released - 1:+.1%}), "
+          f"max pressure {thermal['contact']['max_pressure']:.4g}")
+    if released != reference:
+        sys.exit(f"FAIL: the release state differs from the isothermal scene's: {released!r} != "
+                 f"{reference!r}")
+    if not heated > released:
+        sys.exit(f"FAIL: the heating did not tighten the joint: {heated} <= {released}")
+    print("ok")
+    sys.exit(0)
 scene = yaml.safe_load(open(scene_path))["contactlab"]
 law = scene["Materials"]["body"]["linear-elastic"]
 E, nu, alpha, T_ref = (float(law[k]) for k in ["E", "nu", "Thermal Expansion", "Reference Temperature"])
