@@ -1,5 +1,7 @@
 #include "core/materials/TemperatureDependent.hpp"
 
+#include "base/PiecewiseLinear.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -26,13 +28,7 @@ TemperatureDependent::TemperatureDependent(std::vector<double> temperatures,
 
 double TemperatureDependent::at(double temperature) const {
   if (temperatures_.empty()) return values_.front();
-  if (temperature <= temperatures_.front()) return values_.front();
-  if (temperature >= temperatures_.back()) return values_.back();
-  std::size_t i = 1;
-  while (temperatures_[i] < temperature)
-    ++i;
-  const double w = (temperature - temperatures_[i - 1]) / (temperatures_[i] - temperatures_[i - 1]);
-  return (1 - w) * values_[i - 1] + w * values_[i];
+  return piecewiseLinear(temperatures_, values_, temperature);
 }
 
 }  // namespace contactlab
