@@ -49,14 +49,14 @@ LinearElastic::LinearElastic(const Parameters& parameters) : parameters_(paramet
     C_ = isotropicStiffness(parameters_.youngModulus.at(0.0), parameters_.poissonRatio.at(0.0));
 }
 
-std::array<double, 36> LinearElastic::stiffness(double T) const {
-  if (parameters_.youngModulus.isConstant() && parameters_.poissonRatio.isConstant()) return C_;
-  return isotropicStiffness(parameters_.youngModulus.at(T), parameters_.poissonRatio.at(T));
-}
-
 void LinearElastic::evaluate(const MaterialInput& in, MaterialOutput& out) const {
   const double T = temperature(in.temperature);
-  const std::array<double, 36> C = stiffness(T);
+  std::array<double, 36> tabulated;
+  const bool constant =
+      parameters_.youngModulus.isConstant() && parameters_.poissonRatio.isConstant();
+  if (!constant)
+    tabulated = isotropicStiffness(parameters_.youngModulus.at(T), parameters_.poissonRatio.at(T));
+  const std::array<double, 36>& C = constant ? C_ : tabulated;
   std::array<double, 6> elastic = in.strain;
   // Without a temperature there is nothing to subtract: the strain is used as given, bit for
   // bit (a model without temperatures gives the results it gave before they existed).

@@ -40,9 +40,6 @@ class LinearElastic : public Material {
   double temperature(const std::optional<double>& given) const {
     return given.value_or(parameters_.expansion.referenceTemperature);
   }
-  // The stiffness (6x6, engineering shears) at temperature T.
-  std::array<double, 36> stiffness(double T) const;
-
   const Parameters parameters_;
   std::array<double, 36> C_{};  // the stiffness when E and nu are constant
 };

@@ -131,7 +131,8 @@ class Problem : public NonlinearSystem {
 
   // This rank's elements and nodes with displacement, stress (cell average, Cauchy), von_mises,
   // material (block index) and rank, and with plasticity equivalent_plastic_strain (cell
-  // average) and plastic (1 where the last converged step increased it), for the writers.
+  // average) and plastic (1 where the last converged step increased it), and with prescribed
+  // temperatures a cell field temperature, for the writers.
   // Stresses at the block temperatures of time t (the time u converged at).
   MeshPiece outputPiece(const Vector& u, double t) const;
   MaterialStateSummary materialState() const;

@@ -108,6 +108,16 @@ MeshPiece Problem::outputPiece(const Vector& u, double t) const {
     piece.cellData.push_back({"equivalent_plastic_strain", 1, std::move(plasticStrain)});
     piece.cellData.push_back({"plastic", 1, std::move(plastic)});
   }
+  // With prescribed temperatures, each cell's (its block's at t; a block without one is at its
+  // material's reference temperature). Only then: a model without them writes what it wrote.
+  if (!model_.temperatures.empty()) {
+    FieldData temperature{"temperature", 1, {}};
+    for (const auto& e : elements_)
+      temperature.values.push_back(
+          blockTemperature(e.block, t)
+              .value_or(blockMaterial_[e.block]->referenceTemperature().value_or(0.0)));
+    piece.cellData.push_back(std::move(temperature));
+  }
   return piece;
 }
 

@@ -24,7 +24,7 @@ reproduces them exactly).
               (t <= 2, temperature factor 0: the blocks at T_ref, their tables read there) must
               give the residual contact force of scenes/tube-expansion-axisymmetric.yaml bit for
               bit, and its heating to 304 degC (t = 3) must raise it (the tube expands more than
-              the tubesheet).
+              the tubesheet); the frames' temperature field is 20 degC at t = 2, 304 at t = 3.
 Prints "RESULT ..." lines for doc/verification.md."""
 import os, sys
 
@@ -52,6 +52,16 @@ if case == "tube-stages":
                  f"{reference!r}")
     if not heated > released:
         sys.exit(f"FAIL: the heating did not tighten the joint: {heated} <= {released}")
+    # The frames' cell field temperature: T_ref until the heating, 304 degC at its end.
+    from contactlab_run import read_grid, result_frames
+    for time, path in result_frames(os.path.join(out, "thermal")):
+        if time in (2.0, 3.0):
+            low, high = read_grid(path).GetCellData().GetArray("temperature").GetRange()
+            expected = 20.0 if time == 2.0 else 304.0
+            print(f"RESULT tube-stages temperature field at t = {time:g}: {low:g} to {high:g}")
+            if not low == high == expected:
+                sys.exit(f"FAIL: the temperature field at t = {time:g} is {low} to {high}, not "
+                         f"{expected}")
     print("ok")
     sys.exit(0)
 scene = yaml.safe_load(open(scene_path))["contactlab"]
