@@ -326,7 +326,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (uniqueness) criticalMu = uniqueness->check(s, state);
     stepsCsv.addStep(s, cr, condition, pairingSeconds, contactSeconds, criticalMu);
     if (root) stepsCsv.write();
-    probes.record(*solution);
+    probes.record(*solution, s.time);
     progress.step(s, steps, elapsed());
     // The checkpoint last: when it names a step, that step's outputs are all written.
     ++stepsThisRun;

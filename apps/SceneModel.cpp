@@ -1,6 +1,8 @@
 #include "apps/SceneModel.hpp"
 
+#include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneSchema.hpp"
+#include "apps/SceneTemperatures.hpp"
 #include "base/InputError.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
@@ -32,43 +34,6 @@ std::shared_ptr<Mesh> buildMeshOnRoot(const std::function<std::unique_ptr<Mesh>(
   });
   broadcastMesh(*mesh, rawMpiComm(comm), 0);
   return mesh;
-}
-
-LoadFunction loadFunction(const ParameterList& p, double endTime, const std::string& where,
-                          const std::string& path) {
-  LoadFunction f;
-  const std::string kind = p.get<std::string>("Function");
-  f.kind = kind == "constant" ? LoadFunction::Kind::Constant
-           : kind == "table"  ? LoadFunction::Kind::Table
-                              : LoadFunction::Kind::Ramp;
-  const double stop = p.get<double>("Stop Time");
-  f.endTime = stop > 0 ? stop : endTime;
-  f.startTime = p.get<double>("Start Time");
-  if (!(stop >= 0 && stop <= endTime))
-    throw InputError(where + ": " + path + "/Stop Time must be in [0, End Time] (0: End Time)");
-  if (!(f.startTime >= 0 && f.startTime < f.endTime))
-    throw InputError(where + ": " + path + "/Start Time must be in [0, Stop Time)");
-  const auto& times = p.get<Teuchos::Array<double>>("Times");
-  const auto& factors = p.get<Teuchos::Array<double>>("Factors");
-  if (f.kind != LoadFunction::Kind::Table) {
-    if (!times.empty() || !factors.empty())
-      throw InputError(where + ": " + path + "/Times and Factors belong to Function: table; " +
-                       "remove them or set Function: table");
-    return f;
-  }
-  if (times.size() < 2 || times.size() != factors.size())
-    throw InputError(where + ": " + path + "/Function table needs Times and Factors of the " +
-                     "same length, at least 2 (got " + std::to_string(times.size()) + " and " +
-                     std::to_string(factors.size()) + ")");
-  for (Teuchos::Array<double>::size_type i = 0; i < times.size(); ++i) {
-    if (!std::isfinite(times[i]) || !std::isfinite(factors[i]) ||
-        (i > 0 && !(times[i] > times[i - 1])))
-      throw InputError(where + ": " + path + "/Times must be finite and strictly increasing, " +
-                       "and Factors finite (entry " + std::to_string(i + 1) + ")");
-  }
-  f.times.assign(times.begin(), times.end());
-  f.factors.assign(factors.begin(), factors.end());
-  return f;
 }
 
 std::array<double, 3> vector3(const ParameterList& p, const std::string& key,
@@ -358,6 +323,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   }
 
   const double endTime = sm.solverOptions.endTime;
+  sm.model.temperatures = blockTemperatures(p.sublist("Temperature"), sm.model, endTime, where);
   const ParameterList& dirichlet = p.sublist("Dirichlet");
   for (auto it = dirichlet.begin(); it != dirichlet.end(); ++it) {
     const ParameterList& d = dirichlet.sublist(dirichlet.name(it));

@@ -187,6 +187,19 @@ ParameterList loadItem() {
   return p;
 }
 
+ParameterList temperatureItem() {
+  ParameterList p;
+  p.set("Value", 20.0,
+        "Temperature of the whole block, in degC, when Function is 1; the block is at its "
+        "material's Reference Temperature T_ref (stress-free) when Function is 0: "
+        "T(t) = T_ref + (Value - T_ref) f(t)");
+  setTimeFunction(p,
+                  "Time scaling of Value - T_ref: 'ramp' (heating from T_ref over the ramp), "
+                  "'constant' (at Value from the first step) or 'table' (e.g. Times [0, 1, 2], "
+                  "Factors [0, 0, 1]: T_ref during a first stage, heated during the second)");
+  return p;
+}
+
 ParameterList probeItem() {
   ParameterList p;
   p.set("Point", Teuchos::Array<double>(3, 0.0),
@@ -361,6 +374,10 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Loads",
             namedSection(userSublist(&scene, "Loads"), "Loads", where,
                          [](const ParameterList&, const std::string&) { return loadItem(); }));
+  valid.set("Temperature", namedSection(userSublist(&scene, "Temperature"), "Temperature", where,
+                                        [](const ParameterList&, const std::string&) {
+                                          return temperatureItem();
+                                        }));
   valid.set("Contact", namedSection(userSublist(&scene, "Contact"), "Contact", where,
                                     [&](const ParameterList& user, const std::string& path) {
                                       return contactItem(&user, where, path);
@@ -440,7 +457,14 @@ void describeRegistry(std::ostream& out, const RegistryT& registry, const std::s
   for (const auto& name : registry.names()) {
     const auto& entry = registry.get(name);
     out << "#### `" << name << "`\n\n" << entry.doc << "\n\n";
-    describeList(out, *entry.validParameters(), "");
+    const auto valid = entry.validParameters();
+    describeList(out, *valid, "");
+    // A law's nested sublists (Temperature Tables) are described under it, with their doc.
+    for (auto it = valid->begin(); it != valid->end(); ++it)
+      if (valid->entry(it).isList() && !isPassThrough(valid->sublist(valid->name(it)))) {
+        out << "\n`" << valid->name(it) << "`: " << valid->entry(it).docString() << "\n\n";
+        describeList(out, valid->sublist(valid->name(it)), "");
+      }
     out << "\n";
   }
 }
@@ -463,6 +487,8 @@ std::string sceneReference() {
   describeList(out, springItem(), "");
   out << "\n### Loads/<name>\n\n";
   describeList(out, load, "");
+  out << "\n### Temperature/<block>\n\n";
+  describeList(out, temperatureItem(), "");
   out << "\n### Contact/<zone>\n\n";
   describeList(out, contactItem(nullptr, "", "Contact/<zone>"), "");
   out << "\n### Contact/<zone>/Obstacle\n\n";

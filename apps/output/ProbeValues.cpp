@@ -7,7 +7,7 @@ namespace contactlab {
 ProbeValues::ProbeValues(const SceneModel& sm, const Problem& problem)
     : sm_(sm), problem_(problem) {}
 
-void ProbeValues::record(const Vector& u) {
+void ProbeValues::record(const Vector& u, double t) {
   for (const auto& p : sm_.probes) {
     JsonValue value = JsonValue::array();
     if (p.field == "displacement") {
@@ -15,7 +15,7 @@ void ProbeValues::record(const Vector& u) {
       for (int c = 0; c < problem_.dim(); ++c)
         value.push(d[c]);
     } else {
-      for (double s : problem_.nodeStress(u, p.node))
+      for (double s : problem_.nodeStress(u, p.node, t))
         value.push(s);
     }
     const double* x = &sm_.model.mesh->coords[3 * p.node];

@@ -12,8 +12,9 @@ class ProbeValues {
  public:
   ProbeValues(const SceneModel& sm, const Problem& problem);
 
-  // The values at displacement u. Collective (a node's values come from the rank owning it).
-  void record(const Vector& u);
+  // The values at displacement u, converged at time t (the stresses take the block
+  // temperatures of t). Collective (a node's values come from the rank owning it).
+  void record(const Vector& u, double t);
 
   // {name: {field, point, node, distance, value}}, in the scene's order.
   const JsonValue& json() const { return probes_; }

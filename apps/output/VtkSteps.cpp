@@ -10,7 +10,7 @@ VtkSteps::VtkSteps(std::string folder, MPI_Comm comm) : folder_(std::move(folder
 void VtkSteps::writeRest(const Problem& problem, const ContactProblem* contact) {
   const auto u = problem.createVector();
   u->putScalar(0.0);
-  MeshPiece piece = problem.outputPiece(*u);
+  MeshPiece piece = problem.outputPiece(*u, 0.0);  // the rest frame is the state at t = 0
   if (contact) {
     // The contact fields a step writes, by the contact problem's own list, zeroed: the state
     // left by the initial pairing is not a converged one.
@@ -24,7 +24,7 @@ void VtkSteps::writeRest(const Problem& problem, const ContactProblem* contact) 
 
 void VtkSteps::write(double time, const Problem& problem, const ContactProblem* contact,
                      const Vector& u) {
-  MeshPiece piece = problem.outputPiece(u);
+  MeshPiece piece = problem.outputPiece(u, time);
   if (contact) contact->addPointData(piece);
   writeFrame(time, std::move(piece), problem);
 }

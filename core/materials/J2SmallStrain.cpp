@@ -15,6 +15,18 @@ void require(bool ok, const std::string& what, double got) {
 }
 
 // Voigt tensor components: the shear rows count twice in a double contraction.
+// A table's range check is a check at every temperature (TemperatureDependent::values).
+template <class Predicate>
+void requireEach(const TemperatureDependent& f, Predicate ok, const std::string& what) {
+  for (double v : f.values())
+    require(ok(v), what, v);
+}
+
+void lameConstants(double E, double nu, double& lambda, double& mu) {
+  lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  mu = E / (2.0 * (1.0 + nu));
+}
+
 double norm(const double (&t)[6]) {
   return std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] +
                    2.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
@@ -24,18 +36,24 @@ double norm(const double (&t)[6]) {
 
 J2SmallStrain::J2SmallStrain(const Parameters& parameters) : parameters_(parameters) {
   const Parameters& p = parameters_;
-  require(p.youngModulus > 0.0, "Young's modulus E must be > 0", p.youngModulus);
-  require(p.poissonRatio > -1.0 && p.poissonRatio < 0.5, "Poisson's ratio nu must lie in (-1, 0.5)",
-          p.poissonRatio);
-  require(p.yieldStress > 0.0, "Yield Stress must be > 0", p.yieldStress);
-  require(p.isotropicHardening >= 0.0, "Isotropic Hardening Modulus must be >= 0",
-          p.isotropicHardening);
-  require(p.kinematicHardening >= 0.0, "Kinematic Hardening Modulus must be >= 0",
-          p.kinematicHardening);
+  requireEach(
+      p.youngModulus, [](double E) { return E > 0.0; }, "Young's modulus E must be > 0");
+  requireEach(
+      p.poissonRatio, [](double nu) { return nu > -1.0 && nu < 0.5; },
+      "Poisson's ratio nu must lie in (-1, 0.5)");
+  requireEach(
+      p.yieldStress, [](double s) { return s > 0.0; }, "Yield Stress must be > 0");
+  requireEach(
+      p.isotropicHardening, [](double H) { return H >= 0.0; },
+      "Isotropic Hardening Modulus must be >= 0");
+  requireEach(
+      p.kinematicHardening, [](double H) { return H >= 0.0; },
+      "Kinematic Hardening Modulus must be >= 0");
+  require(std::isfinite(p.expansion.referenceTemperature), "Reference Temperature must be finite",
+          p.expansion.referenceTemperature);
   require(p.density >= 0.0, "density must be >= 0", p.density);
-  const double E = p.youngModulus, nu = p.poissonRatio;
-  lambda_ = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  mu_ = E / (2.0 * (1.0 + nu));
+  const double T = p.expansion.referenceTemperature;
+  lameConstants(p.youngModulus.at(T), p.poissonRatio.at(T), lambda_, mu_);
 }
 
 void J2SmallStrain::initializeState(double* state) const {
@@ -43,8 +61,15 @@ void J2SmallStrain::initializeState(double* state) const {
 }
 
 void J2SmallStrain::evaluate(const MaterialInput& in, MaterialOutput& out) const {
-  const double lambda = lambda_, mu = mu_;
-  const double Hiso = parameters_.isotropicHardening, Hkin = parameters_.kinematicHardening;
+  const Parameters& parameters = parameters_;
+  const double T = in.temperature.value_or(parameters.expansion.referenceTemperature);
+  double lambda = lambda_, mu = mu_;
+  if (!parameters.youngModulus.isConstant() || !parameters.poissonRatio.isConstant())
+    lameConstants(parameters.youngModulus.at(T), parameters.poissonRatio.at(T), lambda, mu);
+  const double Hiso = parameters.isotropicHardening.at(T);
+  const double Hkin = parameters.kinematicHardening.at(T);
+  // Without a temperature nothing is subtracted: the strain is used bit for bit as before.
+  const double thermal = in.temperature ? parameters.expansion.strain(T) : 0.0;
   double state[kStateSize];
   std::copy(in.stateOld, in.stateOld + kStateSize, state);
   double* plasticStrain = state + kPlasticStrain;
@@ -54,7 +79,7 @@ void J2SmallStrain::evaluate(const MaterialInput& in, MaterialOutput& out) const
   // Elastic trial stress and its relative stress xi = dev(sigma_trial) - alpha.
   double eps[6];
   for (int a = 0; a < 6; ++a)
-    eps[a] = in.strain[a] - plasticStrain[a];
+    eps[a] = in.strain[a] - plasticStrain[a] - (a < 3 ? thermal : 0.0);
   const double trace = eps[0] + eps[1] + eps[2];
   for (int a = 0; a < 3; ++a)
     out.stress[a] = lambda * trace + 2.0 * mu * eps[a];
@@ -66,7 +91,7 @@ void J2SmallStrain::evaluate(const MaterialInput& in, MaterialOutput& out) const
     xi[a] = out.stress[a] - (a < 3 ? meanStress : 0.0) - backStress[a];
   const double xiNorm = norm(xi);
   const double qTrial = std::sqrt(1.5) * xiNorm;
-  const double yield = parameters_.yieldStress + Hiso * p;
+  const double yield = parameters.yieldStress.at(T) + Hiso * p;
   const double f = qTrial - yield;
 
   out.tangent.fill(0.0);

@@ -13,11 +13,20 @@
 // after first yield; with H_iso = 0 a reversal yields at sigma_max - 2 sigma_y0 (Bauschinger).
 // Plane strain is this law with eps_zz = eps_yz = eps_xz = 0 (see Material.hpp).
 //
+// Temperature (Material.hpp): eps is replaced by eps - alpha (T - T_ref) I
+// (ThermalExpansion.hpp), and E, nu, sigma_y0, H_iso, H_kin may be tabulated in T. Each step
+// is isothermal: the moduli, yield stress and hardening are those at the step's temperature,
+// applied to the whole state (sigma = C(T) : (eps - eps_p - eps_th(T)), the yield surface
+// sigma_y0(T) + H_iso(T) p), without the temperature-rate terms of a thermoplastic law (Simo &
+// Miehe 1992): exact for a constant T, and the usual approximation when T changes slowly.
+//
 // State per quadrature point (kStateSize = 13 doubles):
 //   [0, 6)   plastic strain eps_p, Voigt xx yy zz xy yz xz, engineering shears (like the strain)
 //   [6, 12)  back stress alpha, Voigt xx yy zz xy yz xz, stress components (deviatoric)
 //   [12]     equivalent plastic strain p
 #include "core/materials/Material.hpp"
+#include "core/materials/TemperatureDependent.hpp"
+#include "core/materials/ThermalExpansion.hpp"
 
 namespace contactlab {
 
@@ -32,12 +41,14 @@ class J2SmallStrain : public Material {
   static constexpr double kYieldTolerance = 1e-12;
 
   struct Parameters {
-    double youngModulus = 1.0;        // E > 0
-    double poissonRatio = 0.3;        // nu in (-1, 0.5)
-    double yieldStress = 0.0;         // sigma_y0 > 0
-    double isotropicHardening = 0.0;  // H_iso >= 0
-    double kinematicHardening = 0.0;  // H_kin >= 0
-    double density = 0.0;             // >= 0
+    // Each a constant or a table in T; the ranges hold at every temperature.
+    TemperatureDependent youngModulus{1.0};        // E > 0
+    TemperatureDependent poissonRatio{0.3};        // nu in (-1, 0.5)
+    TemperatureDependent yieldStress{0.0};         // sigma_y0 > 0
+    TemperatureDependent isotropicHardening{0.0};  // H_iso >= 0
+    TemperatureDependent kinematicHardening{0.0};  // H_kin >= 0
+    ThermalExpansion expansion;                    // alpha = 0 by default: no thermal strain
+    double density = 0.0;                          // >= 0
   };
 
   // Throws std::invalid_argument naming the parameter when a value is outside its range.
@@ -55,14 +66,18 @@ class J2SmallStrain : public Material {
   double equivalentPlasticStrain(const double* state) const override {
     return state[kEquivalentPlasticStrain];
   }
+  std::optional<double> referenceTemperature() const override {
+    return parameters_.expansion.referenceTemperature;
+  }
 
   const Parameters& parameters() const { return parameters_; }
+  // Lame's constants at the reference temperature.
   double lambda() const { return lambda_; }
   double mu() const { return mu_; }
 
  private:
   const Parameters parameters_;
-  double lambda_ = 0.0, mu_ = 0.0;
+  double lambda_ = 0.0, mu_ = 0.0;  // at the reference temperature (every T when E, nu constant)
 };
 
 }  // namespace contactlab

@@ -18,7 +18,12 @@
 //  - A law that cannot evaluate (a local return map that does not converge, J <= 0) sets
 //    `failed` and a one-line `failure` instead of throwing: the kernel turns it into a named
 //    step failure that step cutting can take over.
+//  - Temperature: a law with a referenceTemperature() takes the prescribed temperature of its
+//    block (MaterialInput::temperature, uniform over the block, a function of time), for its
+//    thermal strain and its temperature-dependent parameters; without one it is at its
+//    reference temperature. The temperature is data, not an unknown: tangents are at fixed T.
 #include <array>
+#include <optional>
 #include <string>
 
 namespace contactlab {
@@ -29,6 +34,9 @@ struct MaterialInput {
   std::array<double, 6> strain{};  // small strain (Voigt, engineering shears)
   std::array<double, 9> F{};       // deformation gradient, row major (finite strain only)
   const double* stateOld = nullptr;
+  // Prescribed temperature (degC); empty: the law's reference temperature, so that a model
+  // without temperatures evaluates exactly as before they existed.
+  std::optional<double> temperature;
 };
 
 struct MaterialOutput {
@@ -58,6 +66,10 @@ class Material {
   // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
   // kernels output it and flag a point plastic when a step increased it.
   virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }
+  // The stress-free temperature of a law that takes a temperature (thermal strain, parameters
+  // tabulated in T); empty for a law that ignores MaterialInput::temperature, which a scene
+  // must not heat (every registered law takes one; test doubles need not).
+  virtual std::optional<double> referenceTemperature() const { return std::nullopt; }
 };
 
 }  // namespace contactlab

@@ -26,8 +26,9 @@ NeoHookean::Volumetric NeoHookean::volumetricFromName(const std::string& name) {
       name + "')");
 }
 
-NeoHookean::NeoHookean(double C10, double D1, double density, Volumetric volumetric)
-    : C10_(C10), D1_(D1), density_(density), volumetric_(volumetric) {
+NeoHookean::NeoHookean(double C10, double D1, double density, Volumetric volumetric,
+                       const ThermalExpansion& expansion)
+    : C10_(C10), D1_(D1), density_(density), volumetric_(volumetric), expansion_(expansion) {
   require(C10_ > 0.0, "C10 must be > 0", C10_);
   require(D1_ > 0.0, "D1 must be > 0", D1_);
   require(density_ >= 0.0, "density must be >= 0", density_);
@@ -65,6 +66,12 @@ NeoHookean NeoHookean::fromParameters(double E, double nu, double C10, double D1
 }
 
 void NeoHookean::evaluate(const MaterialInput& in, MaterialOutput& out) const {
+  evaluateWithThermalStretch(
+      expansion_, "neo-hookean", in, out,
+      [this](const MaterialInput& i, MaterialOutput& o) { evaluateIsothermal(i, o); });
+}
+
+void NeoHookean::evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const {
   using namespace tensor3;
   const Mat3& F = in.F;
   const double detF = determinant(F);  // J

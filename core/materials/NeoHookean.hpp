@@ -10,7 +10,9 @@
 // At small strain it is linear elasticity with lambda = K - 2 mu / 3 and mu.
 // Plane strain is this law with F_zz = 1 and F_xz = F_zx = F_yz = F_zy = 0 (see Material.hpp).
 // J <= 0 (an inverted or degenerate point) is not evaluated: `evaluate` sets `failed`.
+// Temperature: F = F_e F_theta (ThermalExpansion.hpp, evaluateWithThermalStretch).
 #include "core/materials/Material.hpp"
+#include "core/materials/ThermalExpansion.hpp"
 
 namespace contactlab {
 
@@ -22,7 +24,11 @@ class NeoHookean : public Material {
 
   // Throws std::invalid_argument when C10 <= 0, D1 <= 0 or density < 0.
   NeoHookean(double C10, double D1, double density = 0.0,
-             Volumetric volumetric = Volumetric::Quadratic);
+             Volumetric volumetric = Volumetric::Quadratic, const ThermalExpansion& expansion = {});
+  // The same law with a thermal expansion.
+  NeoHookean withThermalExpansion(const ThermalExpansion& expansion) const {
+    return NeoHookean(C10_, D1_, density_, volumetric_, expansion);
+  }
   // From Young's modulus and Poisson's ratio: mu = E / (2 (1 + nu)), K = E / (3 (1 - 2 nu)),
   // C10 = mu / 2, D1 = 2 / K. Throws when E <= 0 or nu is outside (-1, 0.5).
   static NeoHookean fromYoungPoisson(double E, double nu, double density = 0.0,
@@ -43,6 +49,9 @@ class NeoHookean : public Material {
   // <= 0"), zeroes P and dP/dF and returns.
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override;
   double density() const override { return density_; }
+  std::optional<double> referenceTemperature() const override {
+    return expansion_.referenceTemperature;
+  }
 
   double C10() const { return C10_; }
   double D1() const { return D1_; }
@@ -50,8 +59,12 @@ class NeoHookean : public Material {
   double bulkModulus() const { return K_; }
 
  private:
+  // The law at F without thermal stretch.
+  void evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const;
+
   const double C10_, D1_, density_;
   const Volumetric volumetric_;
+  const ThermalExpansion expansion_;
   double mu_ = 0.0, K_ = 0.0;
 };
 

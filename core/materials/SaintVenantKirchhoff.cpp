@@ -15,8 +15,9 @@ void require(bool ok, const std::string& what, double got) {
 
 }  // namespace
 
-SaintVenantKirchhoff::SaintVenantKirchhoff(double youngModulus, double poissonRatio, double density)
-    : E_(youngModulus), nu_(poissonRatio), density_(density) {
+SaintVenantKirchhoff::SaintVenantKirchhoff(double youngModulus, double poissonRatio, double density,
+                                           const ThermalExpansion& expansion)
+    : E_(youngModulus), nu_(poissonRatio), density_(density), expansion_(expansion) {
   require(E_ > 0.0, "Young's modulus E must be > 0", E_);
   require(nu_ > -1.0 && nu_ < 0.5, "Poisson's ratio nu must lie in (-1, 0.5)", nu_);
   require(density_ >= 0.0, "density must be >= 0", density_);
@@ -25,6 +26,12 @@ SaintVenantKirchhoff::SaintVenantKirchhoff(double youngModulus, double poissonRa
 }
 
 void SaintVenantKirchhoff::evaluate(const MaterialInput& in, MaterialOutput& out) const {
+  evaluateWithThermalStretch(
+      expansion_, "saint-venant-kirchhoff", in, out,
+      [this](const MaterialInput& i, MaterialOutput& o) { evaluateIsothermal(i, o); });
+}
+
+void SaintVenantKirchhoff::evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const {
   using namespace tensor3;
   const Mat3& F = in.F;
   const Mat3 C = transposeMultiply(F, F);

@@ -7,14 +7,17 @@
 // compressive P_11 = E s (s^2 - 1) / 2 peaks at the stretch s = 1/sqrt(3) and vanishes as s -> 0),
 // so it is meant for large rotations with small strains.
 // Plane strain is this law with F_zz = 1 and F_xz = F_zx = F_yz = F_zy = 0 (see Material.hpp).
+// Temperature: F = F_e F_theta (ThermalExpansion.hpp, evaluateWithThermalStretch).
 #include "core/materials/Material.hpp"
+#include "core/materials/ThermalExpansion.hpp"
 
 namespace contactlab {
 
 class SaintVenantKirchhoff : public Material {
  public:
   // Throws std::invalid_argument when E <= 0, nu is outside (-1, 0.5) or density < 0.
-  SaintVenantKirchhoff(double youngModulus, double poissonRatio, double density = 0.0);
+  SaintVenantKirchhoff(double youngModulus, double poissonRatio, double density = 0.0,
+                       const ThermalExpansion& expansion = {});
 
   std::string name() const override { return "saint-venant-kirchhoff"; }
   Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
@@ -22,12 +25,19 @@ class SaintVenantKirchhoff : public Material {
   //   dP_iJ/dF_kL = delta_ik S_JL + lambda F_iJ F_kL + mu (F_iL F_kJ + (F F^T)_ik delta_JL).
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override;
   double density() const override { return density_; }
+  std::optional<double> referenceTemperature() const override {
+    return expansion_.referenceTemperature;
+  }
 
   double lambda() const { return lambda_; }
   double mu() const { return mu_; }
 
  private:
+  // The law at F without thermal stretch.
+  void evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const;
+
   const double E_, nu_, density_;
+  const ThermalExpansion expansion_;
   double lambda_ = 0.0, mu_ = 0.0;
 };
 

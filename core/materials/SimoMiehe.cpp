@@ -125,6 +125,12 @@ void SimoMiehe::initializeState(double* state) const {
 }
 
 void SimoMiehe::evaluate(const MaterialInput& in, MaterialOutput& out) const {
+  evaluateWithThermalStretch(
+      parameters_.expansion, "simo-miehe", in, out,
+      [this](const MaterialInput& i, MaterialOutput& o) { evaluateIsothermal(i, o); });
+}
+
+void SimoMiehe::evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const {
   using namespace tensor3;
   const double K = K_, G = G_;
   double state[kStateSize];

@@ -42,6 +42,7 @@
 //           (tensor components); I in the virgin state
 //   [6]     equivalent plastic strain alpha (sum of dgamma)
 #include "core/materials/Material.hpp"
+#include "core/materials/ThermalExpansion.hpp"
 
 #include <vector>
 
@@ -65,6 +66,8 @@ class SimoMiehe : public Material {
     std::vector<double> hardeningStrains;
     std::vector<double> hardeningStresses;
     double density = 0.0;  // >= 0
+    // F = F_e F_theta F_p (ThermalExpansion.hpp); alpha = 0 by default: no thermal stretch.
+    ThermalExpansion expansion;
   };
 
   // Throws std::invalid_argument, "simo-miehe: <rule> (got <value>)" naming the parameter, when
@@ -81,6 +84,9 @@ class SimoMiehe : public Material {
   // out.failure ("simo-miehe: J = -0.1 <= 0"), zeroes P and dP/dF, copies stateOld.
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override;
   double density() const override { return parameters_.density; }
+  std::optional<double> referenceTemperature() const override {
+    return parameters_.expansion.referenceTemperature;
+  }
   double equivalentPlasticStrain(const double* state) const override {
     return state[kEquivalentPlasticStrain];
   }
@@ -94,6 +100,8 @@ class SimoMiehe : public Material {
   double hardeningSlope(double alpha) const;
 
  private:
+  // The law at F without thermal stretch.
+  void evaluateIsothermal(const MaterialInput& in, MaterialOutput& out) const;
   // Index of the segment holding alpha: the last knot <= alpha.
   int segment(double alpha) const;
 

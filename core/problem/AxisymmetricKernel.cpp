@@ -10,14 +10,15 @@ constexpr int kRows[4] = {0, 1, 2, 3};
 
 void AxisymmetricKernel::evaluate(const double* x, const double* u, const Material& material,
                                   const double* stateOld, double* stateNew, double* residual,
-                                  double* tangent, double* pointStress,
-                                  double* averageStress) const {
+                                  double* tangent, double* pointStress, double* averageStress,
+                                  const std::optional<double>& temperature) const {
   const int n = numNodes_, nd = 2 * n;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
   double dNdx[kMaxNodes * 2];
   double B[4][kMaxNodes * 2];  // strain = B u, rows rr, zz, tt, rz
   MaterialInput in;
+  in.temperature = temperature;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
     const double w = gradients(q, x, dNdx);  // 2 pi r dA

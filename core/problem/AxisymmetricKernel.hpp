@@ -34,7 +34,7 @@ class AxisymmetricKernel : public ElementKernel {
  private:
   void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
                 double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress) const override;
+                double* averageStress, const std::optional<double>& temperature) const override;
 };
 
 }  // namespace contactlab

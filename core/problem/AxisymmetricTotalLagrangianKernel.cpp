@@ -12,13 +12,15 @@ void AxisymmetricTotalLagrangianKernel::evaluate(const double* x, const double* 
                                                  const Material& material, const double* stateOld,
                                                  double* stateNew, double* residual,
                                                  double* tangent, double* pointStress,
-                                                 double* averageStress) const {
+                                                 double* averageStress,
+                                                 const std::optional<double>& temperature) const {
   const int n = numNodes_, nd = 2 * n;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
   double dNdX[kMaxNodes * 2];
   double G[5][kMaxNodes * 2];  // dF_slot / du_k
   MaterialInput in;
+  in.temperature = temperature;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
     const double w = gradients(q, x, dNdX);  // 2 pi R dA

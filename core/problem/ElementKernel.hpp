@@ -22,6 +22,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace contactlab {
@@ -42,18 +43,23 @@ class ElementKernel {
   void initializeState(const Material& material, double* state) const;
 
   // Internal force (the residual's element contribution) and, unless tangent is nullptr, its
-  // derivative with respect to u. The tangent is symmetric when the material's is.
+  // derivative with respect to u. The tangent is symmetric when the material's is. The
+  // temperature is the element's prescribed one, handed to the material
+  // (MaterialInput::temperature; empty: the material's reference temperature).
   void compute(const double* x, const double* u, const Material& material, const double* stateOld,
-               double* stateNew, double* residual, double* tangent) const {
-    evaluate(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr);
+               double* stateNew, double* residual, double* tangent,
+               const std::optional<double>& temperature = std::nullopt) const {
+    evaluate(x, u, material, stateOld, stateNew, residual, tangent, nullptr, nullptr, temperature);
   }
 
   // Cauchy stress (6 Voigt components, sigma_zz included in 2D) at each quadrature point
   // (6 * numQuadraturePoints(), may be nullptr) and/or its volume average over the reference
-  // cell (6, may be nullptr).
+  // cell (6, may be nullptr), at the temperature as in compute().
   void stresses(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* pointStress, double* averageStress) const {
-    evaluate(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress, averageStress);
+                double* stateNew, double* pointStress, double* averageStress,
+                const std::optional<double>& temperature = std::nullopt) const {
+    evaluate(x, u, material, stateOld, stateNew, nullptr, nullptr, pointStress, averageStress,
+             temperature);
   }
 
   // Physical coordinates of the quadrature points, 3 per point.
@@ -81,7 +87,8 @@ class ElementKernel {
   // filled (residual, tangent, pointStress, averageStress as in compute() and stresses()).
   virtual void evaluate(const double* x, const double* u, const Material& material,
                         const double* stateOld, double* stateNew, double* residual, double* tangent,
-                        double* pointStress, double* averageStress) const = 0;
+                        double* pointStress, double* averageStress,
+                        const std::optional<double>& temperature) const = 0;
   // Reference gradients at quadrature point q; returns det J times the weight (times 2 pi r_q
   // in axisymmetry).
   double gradients(int q, const double* x, double* dNdx) const;
@@ -125,7 +132,6 @@ class ElementKernel {
           for (int k = 0; k < D; ++k)
             tangent[(b * D + k) * nd + a * D + i] += tangent[(a * D + i) * nd + b * D + k];
   }
-
 
   ElementType type_;
   int dim_;

@@ -2,6 +2,8 @@
 // Boundary conditions and loads of a solid model. Values scale with a load function of time;
 // the optional `field` callbacks (used by manufactured-solution tests and future scene
 // expressions) replace the constant value when set.
+#include "base/PiecewiseLinear.hpp"
+
 #include <array>
 #include <functional>
 #include <string>
@@ -22,15 +24,7 @@ struct LoadFunction {
   std::vector<double> times, factors;  // table: strictly increasing times, same sizes
   double operator()(double t) const {
     if (kind == Kind::Constant) return 1.0;
-    if (kind == Kind::Table) {
-      if (t <= times.front()) return factors.front();
-      if (t >= times.back()) return factors.back();
-      std::size_t i = 1;
-      while (times[i] < t)
-        ++i;
-      const double w = (t - times[i - 1]) / (times[i] - times[i - 1]);
-      return (1 - w) * factors[i - 1] + w * factors[i];
-    }
+    if (kind == Kind::Table) return piecewiseLinear(times, factors, t);
     if (t <= startTime) return 0.0;
     return t >= endTime ? 1.0 : (t - startTime) / (endTime - startTime);
   }
@@ -119,6 +113,19 @@ struct PointLoad {
   std::array<double, 3> force{{0, 0, 0}};
   Distribution distribution = Distribution::Total;
   LoadFunction function;
+};
+
+// The prescribed temperature of an element block, uniform over it (a thermal load: no heat
+// conduction is solved): T(t) = T_ref + (value - T_ref) f(t), T_ref the block material's
+// stress-free temperature (Material::referenceTemperature, the one place it is given), so that
+// f = 0 leaves the block stress-free and f = 1 puts it at `value`.
+struct BlockTemperature {
+  std::string block;   // element block (the scene's key)
+  double value = 0.0;  // degC, at f = 1
+  LoadFunction function;
+  double at(double referenceTemperature, double t) const {
+    return referenceTemperature + (value - referenceTemperature) * function(t);
+  }
 };
 
 }  // namespace contactlab

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace contactlab {
 
@@ -51,6 +52,10 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   blockMaterial_.resize(mesh.blocks.size());
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
     blockMaterial_[b] = model_.materials.at(mesh.blocks[b].name).get();
+  blockTemperature_.assign(mesh.blocks.size(), nullptr);
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
+    for (const auto& temperature : model_.temperatures)
+      if (temperature.block == mesh.blocks[b].name) blockTemperature_[b] = &temperature;
 
   std::map<std::pair<ElementType, Kinematics>, int> kernelOf;
   const int dim = mesh.dim;
@@ -206,7 +211,26 @@ void Problem::checkModel() const {
     if (!load.block.empty() && mesh.findBlocks(load.block).empty())
       throw InputError("centrifugal load '" + load.name + "' names block '" + load.block +
                        "', which is not in " + where);
+  std::set<std::string> heated;
+  for (const auto& temperature : model_.temperatures) {
+    const auto material = model_.materials.find(temperature.block);
+    if (material == model_.materials.end())
+      throw InputError("temperature given for block '" + temperature.block +
+                       "', which has no material");
+    if (!material->second->referenceTemperature())
+      throw InputError("temperature given for block '" + temperature.block + "', whose material " +
+                       material->second->name() +
+                       " takes no temperature (it has no thermal strain)");
+    if (!heated.insert(temperature.block).second)
+      throw InputError("two temperatures given for block '" + temperature.block + "'");
+  }
   checkAxisymmetricModel(model_);
+}
+
+std::optional<double> Problem::blockTemperature(int block, double t) const {
+  const BlockTemperature* temperature = blockTemperature_[block];
+  if (!temperature) return std::nullopt;
+  return temperature->at(*blockMaterial_[block]->referenceTemperature(), t);
 }
 
 void Problem::buildGraph() {
@@ -339,7 +363,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
       kernels_[e.kernel]->compute(x.data(), ue.data(), *blockMaterial_[e.block],
                                   e.stateOld.empty() ? nullptr : e.stateOld.data(),
                                   e.stateNew.empty() ? nullptr : e.stateNew.data(), fe.data(),
-                                  withTangent ? ke.data() : nullptr);
+                                  withTangent ? ke.data() : nullptr, blockTemperature(e.block, t));
     } catch (const ElementUpdateError& err) {
       // Not thrown on: the other ranks are on their way to the collective calls below. The
       // NaN stops every Newton variant; assemblyFailure() says why.

@@ -23,6 +23,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -130,8 +131,10 @@ class Problem : public NonlinearSystem {
 
   // This rank's elements and nodes with displacement, stress (cell average, Cauchy), von_mises,
   // material (block index) and rank, and with plasticity equivalent_plastic_strain (cell
-  // average) and plastic (1 where the last converged step increased it), for the writers.
-  MeshPiece outputPiece(const Vector& u) const;
+  // average) and plastic (1 where the last converged step increased it), and with prescribed
+  // temperatures a cell field temperature, for the writers.
+  // Stresses at the block temperatures of time t (the time u converged at).
+  MeshPiece outputPiece(const Vector& u, double t) const;
   MaterialStateSummary materialState() const;
   // Errors against an exact displacement u(x) and gradient du_i/dx_j (grad[i * 3 + j]),
   // integrated with a rule two degrees above the element's order (collective).
@@ -140,8 +143,12 @@ class Problem : public NonlinearSystem {
       const std::function<void(const double* x, double* grad)>& exactGradient) const;
   // Displacement of a mesh node (collective; every rank gets the value).
   std::array<double, 3> nodeDisplacement(const Vector& u, std::int64_t meshNode) const;
-  // Nodal average of the element-average Cauchy stress at a mesh node (collective).
-  std::array<double, 6> nodeStress(const Vector& u, std::int64_t meshNode) const;
+  // Nodal average of the element-average Cauchy stress at a mesh node, at the block
+  // temperatures of time t (collective).
+  std::array<double, 6> nodeStress(const Vector& u, std::int64_t meshNode, double t) const;
+  // The prescribed temperature of mesh block `block` at time t; empty when the scene gives
+  // none (the material is then at its reference temperature).
+  std::optional<double> blockTemperature(int block, double t) const;
 
  private:
   // One element of this rank: its overlap nodes and dofs, and its internal variables.
@@ -163,7 +170,7 @@ class Problem : public NonlinearSystem {
   // The centrifugal loads on element e at the overlap displacement u: f += forces (when not
   // nullptr), k += the follower loads' stiffness (when not nullptr).
   void addCentrifugal(const LocalElement& e, double t, const double* u, double* f, double* k) const;
-  std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap) const;
+  std::array<double, 6> elementStress(std::size_t e, const Vector& uOverlap, double t) const;
   Teuchos::RCP<Vector> overlapCopy(const Vector& u) const;
 
   SolidModel model_;
@@ -180,6 +187,7 @@ class Problem : public NonlinearSystem {
     Teuchos::RCP<Vector> reference;
   } inertia_;
   std::vector<const Material*> blockMaterial_;
+  std::vector<const BlockTemperature*> blockTemperature_;  // per mesh block, nullptr: none
   // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
   std::vector<char> constrained_;
   struct Constraint {

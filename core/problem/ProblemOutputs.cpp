@@ -41,7 +41,8 @@ MaterialStateSummary Problem::materialState() const {
   return summary;
 }
 
-std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap) const {
+std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uOverlap,
+                                             double t) const {
   const auto& e = elements_[index];
   auto uo = uOverlap.getData(0);
   std::vector<double> x, ue(e.rows.size());
@@ -53,11 +54,12 @@ std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uO
   std::array<double, 6> average{};
   kernels_[e.kernel]->stresses(x.data(), ue.data(), *blockMaterial_[e.block],
                                e.stateOld.empty() ? nullptr : e.stateOld.data(),
-                               scratch.empty() ? nullptr : scratch.data(), nullptr, average.data());
+                               scratch.empty() ? nullptr : scratch.data(), nullptr, average.data(),
+                               blockTemperature(e.block, t));
   return average;
 }
 
-MeshPiece Problem::outputPiece(const Vector& u) const {
+MeshPiece Problem::outputPiece(const Vector& u, double t) const {
   const Mesh& mesh = *model_.mesh;
   const int dim = this->dim();
   auto uOverlap = overlapCopy(u);
@@ -82,7 +84,7 @@ MeshPiece Problem::outputPiece(const Vector& u) const {
     piece.cellTypes.push_back(mesh.blocks[e.block].type);
     piece.connectivity.insert(piece.connectivity.end(), e.nodes.begin(), e.nodes.end());
     piece.offsets.push_back(static_cast<std::int64_t>(piece.connectivity.size()));
-    const auto s = elementStress(i, *uOverlap);
+    const auto s = elementStress(i, *uOverlap, t);
     stress.values.insert(stress.values.end(), s.begin(), s.end());
     const double j2 = 0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
                              (s[2] - s[0]) * (s[2] - s[0])) +
@@ -105,6 +107,16 @@ MeshPiece Problem::outputPiece(const Vector& u) const {
   if (model_.hasInternalVariables()) {
     piece.cellData.push_back({"equivalent_plastic_strain", 1, std::move(plasticStrain)});
     piece.cellData.push_back({"plastic", 1, std::move(plastic)});
+  }
+  // With prescribed temperatures, each cell's (its block's at t; a block without one is at its
+  // material's reference temperature). Only then: a model without them writes what it wrote.
+  if (!model_.temperatures.empty()) {
+    FieldData temperature{"temperature", 1, {}};
+    for (const auto& e : elements_)
+      temperature.values.push_back(
+          blockTemperature(e.block, t)
+              .value_or(blockMaterial_[e.block]->referenceTemperature().value_or(0.0)));
+    piece.cellData.push_back(std::move(temperature));
   }
   return piece;
 }
@@ -170,7 +182,7 @@ std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t me
   return global;
 }
 
-std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode) const {
+std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode, double t) const {
   // Average over the elements around the node, whichever rank assembles them.
   auto uOverlap = overlapCopy(u);
   std::array<double, 7> local{}, global{};
@@ -179,7 +191,7 @@ std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode
     for (std::size_t i = 0; i < elements_.size(); ++i) {
       const auto& e = elements_[i];
       if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
-      const auto s = elementStress(i, *uOverlap);
+      const auto s = elementStress(i, *uOverlap, t);
       for (int k = 0; k < 6; ++k)
         local[k] += s[k];
       local[6] += 1.0;

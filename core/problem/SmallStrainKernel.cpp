@@ -18,8 +18,8 @@ constexpr int voigt(int i, int j) {
 template <int D>
 void SmallStrainKernel::evaluateIn(const double* x, const double* u, const Material& material,
                                    const double* stateOld, double* stateNew, double* residual,
-                                   double* tangent, double* pointStress,
-                                   double* averageStress) const {
+                                   double* tangent, double* pointStress, double* averageStress,
+                                   const std::optional<double>& temperature) const {
   constexpr int V = D == 2 ? 3 : 6;  // Voigt components carried by the element
   const int n = numNodes_;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
@@ -31,6 +31,7 @@ void SmallStrainKernel::evaluateIn(const double* x, const double* u, const Mater
   double CB[V * kMaxNodes * D];
   double SB[V * kMaxNodes * D];
   MaterialInput in;
+  in.temperature = temperature;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
     const double w = gradients(q, x, dNdx);

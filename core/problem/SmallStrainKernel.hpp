@@ -18,7 +18,8 @@ class SmallStrainKernel : public DimensionTemplatedKernel<SmallStrainKernel> {
   template <int D>
   void evaluateIn(const double* x, const double* u, const Material& material,
                   const double* stateOld, double* stateNew, double* residual, double* tangent,
-                  double* pointStress, double* averageStress) const;
+                  double* pointStress, double* averageStress,
+                  const std::optional<double>& temperature) const;
   template <int D>
   void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
                          double* tangent) const;

@@ -26,6 +26,9 @@ struct SolidModel {
   std::vector<CentrifugalLoad> centrifugalLoads;
   std::vector<PointLoad> pointLoads;
   std::vector<NodalSpring> springs;
+  // Prescribed block temperatures (at most one per block; a block without one stays at its
+  // material's reference temperature). Only materials with a referenceTemperature() take one.
+  std::vector<BlockTemperature> temperatures;
   // A 2D model of the solid of revolution about the y axis (x = r >= 0, y = z):
   // AxisymmetricKernel.hpp, AxisymmetricTotalLagrangianKernel.hpp. Every integral, load, reaction
   // and spring is then per full ring (a point load is a ring load: its force on the whole circle);

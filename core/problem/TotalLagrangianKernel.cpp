@@ -5,8 +5,8 @@ namespace contactlab {
 template <int D>
 void TotalLagrangianKernel::evaluateIn(const double* x, const double* u, const Material& material,
                                        const double* stateOld, double* stateNew, double* residual,
-                                       double* tangent, double* pointStress,
-                                       double* averageStress) const {
+                                       double* tangent, double* pointStress, double* averageStress,
+                                       const std::optional<double>& temperature) const {
   const int n = numNodes_, nd = D * n;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
@@ -21,6 +21,7 @@ void TotalLagrangianKernel::evaluateIn(const double* x, const double* u, const M
   // round-off only, so the material's word decides, not a comparison.
   const bool symmetric = material.symmetricTangent();
   MaterialInput in;
+  in.temperature = temperature;
   MaterialOutput out;
   for (int q = 0; q < numPoints_; ++q) {
     const double w = gradients(q, x, dNdX);

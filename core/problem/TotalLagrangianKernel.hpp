@@ -24,7 +24,8 @@ class TotalLagrangianKernel : public DimensionTemplatedKernel<TotalLagrangianKer
   template <int D>
   void evaluateIn(const double* x, const double* u, const Material& material,
                   const double* stateOld, double* stateNew, double* residual, double* tangent,
-                  double* pointStress, double* averageStress) const;
+                  double* pointStress, double* averageStress,
+                  const std::optional<double>& temperature) const;
 };
 
 }  // namespace contactlab

@@ -268,6 +268,25 @@ cases = [
       "a run starts from a checkpoint of the same mesh"]),
     ("Initial State at End Time", GOOD + f"  Initial State: {{From: {earlier}}}\n", [],
      ["Initial State/From", "the checkpoint is at t = 1", "nothing to run"]),
+    # Temperature: a block of Materials, a law that takes one, tables that are functions of T.
+    ("temperature of an unknown block", GOOD + "  Temperature:\n    tube: {Value: 304.0}\n", [],
+     ["scene.yaml", "Temperature/tube", "'tube' is not a block of Materials", "blocks: body"]),
+    ("temperature table without a column",
+     scene_with("Type: linear-elastic\n      linear-elastic: {E: 100.0, nu: 0.3}",
+                "Type: neo-hookean\n      neo-hookean: {E: 100.0, Temperature Tables: "
+                "{Temperatures: [20, 304]}}"), [],
+     ["Materials/body", "Temperature Tables has Temperatures but no parameter column"]),
+    ("temperature table with Times but a ramp",
+     GOOD + "  Temperature:\n    body: {Value: 304.0, Times: [0, 1], Factors: [0, 1]}\n", [],
+     ["Temperature/body/Times and Factors belong to Function: table"]),
+    ("E and its temperature table",
+     scene_with("{E: 100.0, nu: 0.3}", "{E: 100.0, nu: 0.3, Temperature Tables: "
+                "{Temperatures: [20, 304], E: [100, 90]}}"), [],
+     ["Materials/body", "give E or Temperature Tables/E, not both"]),
+    ("temperature table out of order",
+     scene_with("{E: 100.0, nu: 0.3}", "{nu: 0.3, Temperature Tables: "
+                "{Temperatures: [304, 20], E: [90, 100]}}"), [],
+     ["Materials/body", "Temperature Tables/E", "strictly increasing"]),
 ]
 
 open(os.path.join(work, "inverted.msh"), "w").write(INVERTED_MSH)

@@ -33,6 +33,19 @@ CASE:
               --force-tol (a full ring's force), the outer ring's cells along its bore against
               Lame's hoop stress (p (c^2 + b^2)/(c^2 - b^2) at r = b) averaged over each cell
               within --tol p, and the axial reactions zero (open ends) within 1e-6 of the force.
+  thermal-fit the same rings meshed touching (the inner one a <= r <= b, Gap 0) and fitted by
+              differential thermal expansion instead: both heated uniformly from 20 to 304 degC
+              (the seed's steam-generator operation), the inner ring (Alloy 690 tube, alpha_in =
+              14e-6/K) expanding more than the outer one (ferritic tubesheet, alpha_out =
+              12.5e-6/K). A uniform temperature expands each free ring without stress, so the
+              rings meet the interference delta = (alpha_in - alpha_out) dT b of the shrink fit,
+              and the same checks apply with that delta (for equal materials the small-strain
+              solution is exactly the classical p: both rings have radius b). With
+              --tabulated-e both rings' E is a table in T, 200000 at 20 degC and 180000 at 304:
+              the pressure is then the one of E(304) = 180000. With --finite-strain both rings
+              are Saint Venant-Kirchhoff (the same E, nu; F = F_e F_theta): the classical
+              pressure holds to first order in alpha dT (4e-3 here: the rings' radii and length
+              grow by it), so its force tolerance is of that order.
 Prints "RESULT ..." lines for doc/verification.md."""
 import argparse, csv, json, math, os, sys
 
@@ -43,7 +56,7 @@ from contactlab_run import converged_run, read_grid, result_frames  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
-ap.add_argument("case", choices=["lame", "spin", "shrink-fit"])
+ap.add_argument("case", choices=["lame", "spin", "shrink-fit", "thermal-fit"])
 ap.add_argument("--tol", type=float, default=1e-3)
 ap.add_argument("--force-tol", type=float, default=2e-3,
                 help="shrink-fit: the interface's normal force, relative")
@@ -53,6 +66,8 @@ ap.add_argument("--finite-strain", action="store_true",
                 help="lame: the tube in Saint Venant-Kirchhoff with a dead pressure (the "
                      "finite-strain axisymmetric kernel), Lame's solution to its strains")
 ap.add_argument("--divisions", default="2,4,8,16")
+ap.add_argument("--tabulated-e", action="store_true",
+                help="thermal-fit: E tabulated in T (200000 at 20 degC, 180000 at 304)")
 ap.add_argument("--min-rate", type=float, default=1.5)
 ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
@@ -177,7 +192,7 @@ def spin():
             if not e < args.tol]
 
 
-def shrink_fit():
+def shrink_fit(thermal=False):
     mesh = scene["Mesh"]["stacked-blocks-2d"]
     material = scene["Materials"]["lower"]["linear-elastic"]
     assert scene["Materials"]["upper"]["linear-elastic"] == material, "equal materials"
@@ -185,11 +200,33 @@ def shrink_fit():
     a = float(mesh["Origin"][0]); L = float(mesh["Width"])
     delta = -float(mesh["Gap"]); b = a + float(mesh["Lower Height"]) - delta
     c = b + float(mesh["Upper Height"])
+    if thermal:
+        # The seed's materials and operating temperature (EDF R&D 2012): Alloy 690 tube inside a
+        # ferritic tubesheet, from 20 to 304 degC.
+        alpha_in, alpha_out, T_ref, T = 14e-6, 12.5e-6, 20.0, 304.0
+        delta = (alpha_in - alpha_out) * (T - T_ref) * b
+        args.set += ["Mesh/stacked-blocks-2d/Gap=0", f"Mesh/stacked-blocks-2d/Lower Height={b - a!r}"]
+        for block, alpha in [("lower", alpha_in), ("upper", alpha_out)]:
+            law = f"Materials/{block}/linear-elastic"
+            args.set += [f"{law}/Thermal Expansion={alpha!r}", f"{law}/Reference Temperature={T_ref!r}",
+                         f"Temperature/{block}/Value={T!r}"]
+            if args.finite_strain:
+                finite = f"Materials/{block}/saint-venant-kirchhoff"
+                args.set += [f"Materials/{block}/Type=saint-venant-kirchhoff",
+                             f"{finite}/E={E!r}", f"{finite}/nu={float(material['nu'])!r}",
+                             f"{finite}/Thermal Expansion={alpha!r}",
+                             f"{finite}/Reference Temperature={T_ref!r}"]
+            if args.tabulated_e:
+                args.set += [f"{law}/E=1", f"{law}/Temperature Tables/Temperatures=[{T_ref}, {T}]",
+                             f"{law}/Temperature Tables/E=[200000, 180000]"]
+        if args.tabulated_e:
+            E = 180000.0
+        print(f"RESULT thermal-fit delta = (alpha_in - alpha_out) dT b = {delta:.6g}, E(T) = {E:g}")
     p = E * delta / b * (c * c - b * b) * (b * b - a * a) / (2 * b * b * (c * c - a * a))
     force = 2 * math.pi * b * L * p
     # The same small-strain theory on the rings as meshed (the inner one's outer radius b + delta,
     # nu no longer cancelling): how much of the error is the formula's first order in delta / b.
-    nu = float(material["nu"]); d = b + delta
+    nu = float(material["nu"]); d = b if thermal else b + delta
     exact = delta * E / (b * ((c * c + b * b) / (c * c - b * b) + nu) +
                          d * ((d * d + a * a) / (d * d - a * a) - nu))
     print(f"RESULT shrink-fit classical p = {p:.6g}; the meshed rings' small-strain p = {exact:.6g} "
@@ -234,7 +271,8 @@ def shrink_fit():
     return failures
 
 
-failures = {"lame": lame, "spin": spin, "shrink-fit": shrink_fit}[args.case]()
+failures = {"lame": lame, "spin": spin, "shrink-fit": shrink_fit,
+            "thermal-fit": lambda: shrink_fit(thermal=True)}[args.case]()
 if failures:
     sys.exit("FAIL:\n  " + "\n  ".join(failures))
 print("ok")

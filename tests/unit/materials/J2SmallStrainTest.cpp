@@ -110,7 +110,7 @@ J2Result uniaxialStep(const J2SmallStrain& m, double eps11, const J2State& state
     double residual = 0;
     for (int a = 1; a < 6; ++a)
       residual = std::max(residual, std::abs(r.stress[a]));
-    if (residual < 1e-10 * m.parameters().yieldStress) return r;
+    if (residual < 1e-10 * m.parameters().yieldStress.at(20.0)) return r;
     // Solve K x = -sigma on the 5x5 block (rows/columns 1..5), Gauss with partial pivoting.
     double A[5][6];
     for (int a = 0; a < 5; ++a) {
@@ -175,7 +175,8 @@ struct Yielded {
 };
 
 Yielded yieldOnce(const J2SmallStrain& m, std::mt19937& gen, bool planeStrain) {
-  const double yieldStrain = m.parameters().yieldStress / m.parameters().youngModulus;
+  const double yieldStrain =
+      m.parameters().yieldStress.at(20.0) / m.parameters().youngModulus.at(20.0);
   Yielded y;
   y.strain = randomStrain(gen, 4 * yieldStrain, planeStrain);
   y.state = evaluateJ2(m, y.strain, zeroState(m)).state;

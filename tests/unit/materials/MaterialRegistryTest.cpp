@@ -63,9 +63,9 @@ TEST(MaterialRegistry, NewLawsAreRegisteredWithDocumentedParameters) {
   EXPECT_EQ(j2->kinematics(), Kinematics::SmallStrain);
   EXPECT_EQ(j2->stateSize(), 13);
   const auto& params = dynamic_cast<const J2SmallStrain&>(*j2).parameters();
-  EXPECT_EQ(params.yieldStress, 0.01);
-  EXPECT_EQ(params.isotropicHardening, 0.1);
-  EXPECT_EQ(params.kinematicHardening, 0.2);
+  EXPECT_EQ(params.yieldStress.at(20.0), 0.01);
+  EXPECT_EQ(params.isotropicHardening.at(20.0), 0.1);
+  EXPECT_EQ(params.kinematicHardening.at(20.0), 0.2);
 }
 
 struct Refusal {

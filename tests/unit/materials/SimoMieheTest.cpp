@@ -180,17 +180,17 @@ struct SmallStrainComparison {
 // (no rotation). The small-strain law is homogeneous of degree one in (path, yield stress), so
 // what differs between two scales is the finite-strain part alone.
 SmallStrainComparison compareWithSmallStrain(double scale) {
-  J2SmallStrain::Parameters j2p;
-  j2p.youngModulus = 200e3;
-  j2p.poissonRatio = 0.3;
-  j2p.yieldStress = 20.0 * scale;
-  j2p.isotropicHardening = 5e3;
-  const J2SmallStrain j2(j2p);
   SimoMiehe::Parameters smp;
-  smp.youngModulus = j2p.youngModulus;
-  smp.poissonRatio = j2p.poissonRatio;
-  smp.yieldStress = j2p.yieldStress;
-  smp.isotropicHardening = j2p.isotropicHardening;
+  smp.youngModulus = 200e3;
+  smp.poissonRatio = 0.3;
+  smp.yieldStress = 20.0 * scale;
+  smp.isotropicHardening = 5e3;
+  J2SmallStrain::Parameters j2p;
+  j2p.youngModulus = smp.youngModulus;
+  j2p.poissonRatio = smp.poissonRatio;
+  j2p.yieldStress = smp.yieldStress;
+  j2p.isotropicHardening = smp.isotropicHardening;
+  const J2SmallStrain j2(j2p);
   const SimoMiehe sm(smp);
 
   std::mt19937 gen(36);

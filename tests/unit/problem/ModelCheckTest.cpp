@@ -3,7 +3,10 @@
 
 #include "base/InputError.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
+#include <memory>
+#include <optional>
 
 namespace contactlab::test {
 namespace {
@@ -69,6 +72,65 @@ TEST(ModelCheck, LinearElasticRejectsBadConstants) {
   EXPECT_THROW(LinearElastic(1.0, 0.5), std::invalid_argument);
   EXPECT_THROW(LinearElastic(1.0, -1.0), std::invalid_argument);
   EXPECT_NO_THROW(LinearElastic(1.0, 0.4999));
+}
+
+// A law that takes no temperature (every registered one does; a plug-in law need not).
+class Isothermal : public LinearElastic {
+ public:
+  using LinearElastic::LinearElastic;
+  std::optional<double> referenceTemperature() const override { return std::nullopt; }
+};
+
+TEST(ModelCheck, BlockTemperaturesNameAHeatableBlockOnce) {
+  auto model = elasticModel(unitMesh("quad4", 2), 1.0, 0.3, zero, {});
+  BlockTemperature heating;
+  heating.block = "steel";
+  heating.value = 304.0;
+  model.temperatures = {heating};
+  std::string m = messageOf(model);
+  EXPECT_NE(m.find("temperature given for block 'steel', which has no material"), std::string::npos)
+      << m;
+  model.temperatures[0].block = "body";
+  model.temperatures.push_back(model.temperatures[0]);
+  m = messageOf(model);
+  EXPECT_NE(m.find("two temperatures given for block 'body'"), std::string::npos) << m;
+  model.temperatures.pop_back();
+  model.materials["body"] = std::make_shared<Isothermal>(1.0, 0.3);
+  m = messageOf(model);
+  EXPECT_NE(m.find("material linear-elastic takes no temperature"), std::string::npos) << m;
+}
+
+// A clamped plane-strain square at u = 0, heated on a ramp from T_ref = 20 to 304 degC over
+// [0, 1]: the stress the outputs report at time t is the fully held one at T(t),
+// -E alpha (T(t) - T_ref) / (1 - 2 nu) in xx, yy and zz; the same square without the entry is
+// stress-free at any t.
+TEST(ModelCheck, BlockTemperatureIsEvaluatedAtTheOutputTime) {
+  const double E = 200e3, nu = 0.3, alpha = 1.4e-5;
+  auto model = elasticModel(unitMesh("quad4", 2), E, nu, zero, {});
+  LinearElastic::Parameters steel;
+  steel.youngModulus = E;
+  steel.poissonRatio = nu;
+  steel.expansion.coefficient = alpha;
+  model.materials["body"] = std::make_shared<LinearElastic>(steel);
+  const SolidModel cold = model;
+  BlockTemperature heating;
+  heating.block = "body";
+  heating.value = 304.0;
+  model.temperatures = {heating};
+  const Problem problem(model, Tpetra::getDefaultComm()), reference(cold, Tpetra::getDefaultComm());
+  auto u = problem.createVector();
+  u->putScalar(0.0);
+  const std::int64_t centre = model.mesh->numNodes() / 2;
+  for (double t : {0.0, 0.5, 1.0, 2.0}) {
+    const double dT = 284.0 * std::min(t, 1.0);
+    const auto s = problem.nodeStress(*u, centre, t);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(s[k], -E * alpha * dT / (1 - 2 * nu), 1e-9) << "t = " << t << " " << k;
+    EXPECT_EQ(problem.blockTemperature(0, t), std::optional<double>(20.0 + dT));
+    for (double c : reference.nodeStress(*u, centre, t))
+      EXPECT_EQ(c, 0.0);
+  }
+  EXPECT_EQ(reference.blockTemperature(0, 1.0), std::nullopt);
 }
 
 }  // namespace
