@@ -25,7 +25,13 @@ reproduces them exactly).
               give the residual contact force of scenes/tube-expansion-axisymmetric.yaml bit for
               bit, and its heating to 304 degC (t = 3) must raise it (the tube expands more than
               the tubesheet); the frames' temperature field is 20 degC at t = 2, 304 at t = 3.
+              Then operation (t in [3, 4], 15.5 MPa on the bore at 304 degC): the increase of
+              the ring's contact force must be the elastic compound cylinder's within 1 %
+              (Lame, open ends: sigma_z = 0; Timoshenko & Goodier, Theory of Elasticity, 3rd
+              ed., section 33; the tube a..b on the sleeve's bore b + gap, small strain, so the
+              reference radii): the joint stays closed and elastic under the pressure.
 Prints "RESULT ..." lines for doc/verification.md."""
+import math
 import os, sys
 
 import yaml
@@ -42,16 +48,46 @@ if case == "tube-stages":
     plain = converged_run(exe, plain_scene, os.path.join(out, "plain"))
     rows = {float(r["time"]): float(r["normal_force"])
             for r in csv.DictReader(open(os.path.join(out, "thermal", "steps.csv")))}
-    released, heated = rows[2.0], thermal["contact"]["normal_force"]
+    released, heated, operating = rows[2.0], rows[3.0], thermal["contact"]["normal_force"]
     reference = plain["contact"]["normal_force"]
     print(f"RESULT tube-stages residual contact force after release {released!r} (isothermal "
-          f"scene {reference!r}); after heating to 304 degC {heated:.6g} ({heated / released - 1:+.1%}), "
-          f"max pressure {thermal['contact']['max_pressure']:.4g}")
+          f"scene {reference!r}); after heating to 304 degC {heated:.6g} ({heated / released - 1:+.1%})")
     if released != reference:
         sys.exit(f"FAIL: the release state differs from the isothermal scene's: {released!r} != "
                  f"{reference!r}")
     if not heated > released:
         sys.exit(f"FAIL: the heating did not tighten the joint: {heated} <= {released}")
+    # Operation: the contact pressure increment p_c of the compound cylinder under the bore
+    # pressure p, from u_tube(b; p, p_c) = u_sleeve(b + gap; p_c, 0), at the moduli of 304 degC.
+    doc = yaml.safe_load(open(scene_path))["contactlab"]
+    mesh = doc["Mesh"]["stacked-blocks-2d"]
+    a = float(mesh["Origin"][0])
+    b = a + float(mesh["Lower Height"])
+    bore = b + float(mesh["Gap"])
+    c = bore + float(mesh["Upper Height"])
+    length = float(mesh["Width"])
+    p = float(doc["Loads"]["operation"]["Value"])
+    def modulus(block):
+        law = doc["Materials"][block]["j2-small-strain"]
+        table = law["Temperature Tables"]
+        return float(table["E"][table["Temperatures"].index(304.0)]), float(law["nu"])
+    (E1, nu1), (E2, nu2) = modulus("lower"), modulus("upper")
+    def radial(r, ri, ro, pin, pout, E, nu):  # Lame, sigma_z = 0
+        A = (pin * ri**2 - pout * ro**2) / (ro**2 - ri**2)
+        B = (pin - pout) * ri**2 * ro**2 / (ro**2 - ri**2)
+        return ((1 - nu) * A * r + (1 + nu) * B / r) / E
+    # radial() is linear in p_c: solve u_tube(b) - u_sleeve(bore) = 0 from two evaluations.
+    gap0 = radial(b, a, b, p, 0.0, E1, nu1) - radial(bore, bore, c, 0.0, 0.0, E2, nu2)
+    gap1 = radial(b, a, b, p, 1.0, E1, nu1) - radial(bore, bore, c, 1.0, 0.0, E2, nu2)
+    pc = -gap0 / (gap1 - gap0)
+    expected = pc * 2 * math.pi * b * length  # on the slave (tube) side, reference radius b
+    increase = operating - heated
+    print(f"RESULT tube-stages operation at {p:g} MPa: contact force {operating:.6g} "
+          f"(+{increase:.6g} N per ring, compound cylinder {expected:.6g}: "
+          f"{increase / expected - 1:+.2%}), max pressure {thermal['contact']['max_pressure']:.4g}")
+    if abs(increase / expected - 1) > 0.01:
+        sys.exit(f"FAIL: the operating pressure adds {increase} N to the contact force, "
+                 f"the compound cylinder {expected} N")
     # The frames' cell field temperature: T_ref until the heating, 304 degC at its end.
     from contactlab_run import read_grid, result_frames
     for time, path in result_frames(os.path.join(out, "thermal")):
