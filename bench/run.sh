@@ -2,7 +2,8 @@
 # Runs the benchmarks and writes their tables into doc/performance.md (between markers).
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
-#   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion) run only
+#   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
+#   factorization-reuse) run only
 #   those tables,
 #   all by default (ironing3d and normal-field write doc/verification.md).
 set -euo pipefail
@@ -100,5 +101,11 @@ if want tube-expansion; then
     python3 bench/tube_expansion.py "$BUILD/apps/contactlab" "$BUILD/bench-tube-expansion-hex27" \
       --element hex27 --discretization mortar --doc doc/performance.md
   fi
+fi
+if want factorization-reuse; then
+  # MUMPS' factorization reuse against a factorization per iteration, tet10 Hertz at 129 780
+  # dofs on 1 and 2 ranks (~6 minutes).
+  python3 bench/factorization_reuse.py "$BUILD/apps/contactlab" scenes \
+    "$BUILD/bench-factorization-reuse" --doc doc/performance.md
 fi
 echo "bench: doc/performance.md and doc/verification.md updated"

@@ -6,12 +6,14 @@ usage: import runs; summary, wall, done = runs.run(exe, "run", scene_yaml, out, 
 import json, os, shutil, subprocess, time
 
 
-def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600):
+def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600, ranks=1):
     """`exe command scene --out out` into a cleared folder, without VTK output, with a `--set`
-    for each of sets. Returns the summary.json (None when the run wrote none or an unreadable
-    one), the wall seconds and the finished process."""
+    for each of sets, on `ranks` MPI processes (mpirun beyond one). Returns the summary.json
+    (None when the run wrote none or an unreadable one), the wall seconds and the finished
+    process."""
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [exe, command, scene, "--out", out] + (["--quiet"] if quiet else [])
+    launcher = ["mpirun", "--oversubscribe", "-np", str(ranks)] if ranks > 1 else []
+    cmd = launcher + [exe, command, scene, "--out", out] + (["--quiet"] if quiet else [])
     for s in ["Output/VTK=false", *sets]:
         cmd += ["--set", s]
     start = time.time()

@@ -29,6 +29,7 @@ constexpr double kInverseColumnWeight = 1.0;
 // the same indices (the next Newton iterations and load steps of a solid whose tangent is
 // constant): it is taken when it costs less than this many factorizations.
 constexpr double kAmortization = 2.0;
+constexpr MUMPS_INT kInverseColumnBlock = 256;
 // Below this many flops a factorization takes a few milliseconds at most: a correction would
 // save nothing worth its bookkeeping, and the small models (the 2D scenes of the regression
 // gold) keep one factorization per matrix and its round-off.
@@ -192,7 +193,13 @@ std::vector<double> MumpsSolver::inverseEntries(const std::vector<std::pair<GO, 
     m.id.rhs_sparse = values.data();
   }
   m.icntl(30) = 1;
+  // Columns of the inverse in blocks of 256 (ICNTL(27)) rather than MUMPS' default of about
+  // 32: the 1 712 columns of the first correction of hertz-3d tet10 at 130 000 unknowns in
+  // 0.79 times the time (23.5 s against 29.8 s for the run's corrections), memory unchanged.
+  const MUMPS_INT blocking = m.icntl(27);
+  m.icntl(27) = kInverseColumnBlock;
   m.run(3);
+  m.icntl(27) = blocking;
   m.icntl(30) = 0;
   m.id.irhs_ptr = nullptr;
   m.id.irhs_sparse = nullptr;
