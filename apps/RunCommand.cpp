@@ -6,6 +6,7 @@
 #include "apps/RunCheckpoint.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
+#include "apps/TimeText.hpp"
 #include "apps/output/ContactCsv.hpp"
 #include "apps/output/CriticalMuSummary.hpp"
 #include "apps/output/ProbeValues.hpp"
@@ -19,7 +20,9 @@
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -84,13 +87,6 @@ void resolveSolverMode(Teuchos::ParameterList& scene, bool symmetric) {
   Teuchos::ParameterList& mumps = section.sublist("mumps");
   if (mumps.get<std::string>("Mode", "automatic") != "automatic") return;
   mumps.set("Mode", symmetric ? "symmetric-indefinite" : "general");
-}
-
-// A load time in a message: 0.625, not 0.625000.
-std::string formatTime(double t) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", t);
-  return buffer;
 }
 
 // The run's state before its first step: at rest, or a checkpoint's (--restart, Initial State).
@@ -211,9 +207,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         }
       }
       if (from.start.time >= sm.solverOptions.endTime * (1 - 1e-12))
-        throw InputError(what + ": the checkpoint is at t = " + formatTime(from.info.time) +
+        throw InputError(what + ": the checkpoint is at t = " + timeText(from.info.time) +
                          ", not before Load Steps/End Time = " +
-                         formatTime(sm.solverOptions.endTime) + ": nothing to run");
+                         timeText(sm.solverOptions.endTime) + ": nothing to run");
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);
@@ -306,6 +302,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   checkpoint.sceneHash = hash;
   const std::int64_t earlierRows = from.restart ? from.info.stepsRows : 0;
   int stepsThisRun = 0;
+  std::vector<double> contactTimesWritten;
   auto onStep = [&](const StepReport& s, const Vector& state) {
     lastTime = s.time;
     // The displacement part of the system's unknowns (the whole vector without contact).
@@ -316,6 +313,15 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (contact) {
       cr = contact->resultants();
       if (root) contactCsv.write(*contact, sm.contact, *sm.model.mesh);
+      // Output/Contact Times: this step's contact points kept under the time's name too.
+      const double tolerance = 1e-9 * sm.solverOptions.endTime;
+      for (double t : sm.contactTimes)
+        if (std::abs(s.time - t) <= tolerance) {
+          if (root)
+            ContactCsv(outDir + "/contact_t" + timeText(t) + ".csv")
+                .write(*contact, sm.contact, *sm.model.mesh);
+          contactTimesWritten.push_back(t);
+        }
       convergedContact = summary.contactBlock(cr).set("time", s.time);
     }
     // Read before the uniqueness check, whose assemblies count in the next step's timings.
@@ -360,6 +366,16 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                   << ") the Dirichlet conditions fix a friction direction: its friction "
                      "multiplier is dropped (the support carries that force)\n";
     }
+  // Output/Contact Times this run reached no converged step at (a continued run's earlier
+  // part wrote its own).
+  if (contact && root && report.converged)
+    for (double t : sm.contactTimes)
+      if (t > from.start.time && std::find(contactTimesWritten.begin(), contactTimesWritten.end(),
+                                           t) == contactTimesWritten.end())
+        std::cerr << "contactlab: warning: Output/Contact Times: no converged step at t = "
+                  << timeText(t) << " (the steps fall at multiples of End Time / Steps, and "
+                  << "where step cuts put them): contact_t" << timeText(t)
+                  << ".csv was not written\n";
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "

@@ -3,6 +3,7 @@
 #include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneSchema.hpp"
 #include "apps/SceneTemperatures.hpp"
+#include "apps/TimeText.hpp"
 #include "base/InputError.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
@@ -461,6 +462,15 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   sm.initialStateContinuesTime = initial.get<std::string>("Time") == "continue";
   sm.checkpointEvery = output.get<int>("Checkpoint Every");
   if (sm.checkpointEvery < 0) throw InputError(where + ": Output/Checkpoint Every must be >= 0");
+  for (double t : output.get<Teuchos::Array<double>>("Contact Times")) {
+    if (!(t > 0) || !(t <= sm.solverOptions.endTime * (1 + 1e-12)))
+      throw InputError(where + ": Output/Contact Times: " + timeText(t) +
+                       " is not in (0, End Time = " + timeText(sm.solverOptions.endTime) + "]");
+    if (!sm.contactTimes.empty() && !(t > sm.contactTimes.back()))
+      throw InputError(where + ": Output/Contact Times must increase (" + timeText(t) + " after " +
+                       timeText(sm.contactTimes.back()) + ")");
+    sm.contactTimes.push_back(t);
+  }
   sm.criticalMuCheck = output.get<bool>("Critical Mu Check");
   sm.criticalMuTolerance = output.get<double>("Critical Mu Tolerance");
   sm.criticalMuMaxPatterns = output.get<int>("Critical Mu Max Patterns");

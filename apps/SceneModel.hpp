@@ -35,7 +35,8 @@ struct SceneModel {
   // whether the load time continues from the checkpoint's (Time: continue) or restarts at 0.
   std::string initialStateFrom;
   bool initialStateContinuesTime = true;
-  int checkpointEvery = 1;  // Output/Checkpoint Every (0: no checkpoint)
+  int checkpointEvery = 1;           // Output/Checkpoint Every (0: no checkpoint)
+  std::vector<double> contactTimes;  // Output/Contact Times: contact_t<time>.csv at each
   bool writeVtk = true;
   bool criticalMuCheck = false;  // Output/Critical Mu Check
   // Output/Critical Mu Tolerance and Max Patterns (checkUniqueness).

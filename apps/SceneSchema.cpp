@@ -318,6 +318,11 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
         "Write checkpoint.h5 (the state a run continues from: Initial State/From, "
         "`contactlab run --restart`) after every this many converged steps and after the "
         "last (>= 0; 0: never)");
+  p.set("Contact Times", Teuchos::Array<double>(),
+        "Load times (increasing, in (0, End Time]) after whose converged step the contact "
+        "points are also written to contact_t<time>.csv (contact.csv's columns), e.g. the end "
+        "of each stage of a load history; a time no converged step reaches is reported at the "
+        "end of the run");
   p.set("Critical Mu Check", false,
         "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
         "patterns around the state, determinant signs, critical mu): a warning when mu >= "

@@ -29,8 +29,8 @@ bool isTemporary(const std::string& name) {
 // What a run writes (RunCommand, VtkSeriesWriter, AtomicFile's temporaries).
 bool isRunOutput(const std::string& name) {
   static const std::regex pattern(
-      R"(result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact\.csv|summary\.json)"
-      R"(|checkpoint\.h5)");
+      R"(result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact(_t[^/]+)?\.csv)"
+      R"(|summary\.json|checkpoint\.h5)");
   return std::regex_match(name, pattern) || isTemporary(name);
 }
 

@@ -30,6 +30,9 @@ reproduces them exactly).
               (Lame, open ends: sigma_z = 0; Timoshenko & Goodier, Theory of Elasticity, 3rd
               ed., section 33; the tube a..b on the sleeve's bore b + gap, small strain, so the
               reference radii): the joint stays closed and elastic under the pressure.
+              The scene's Output/Contact Times keep the joint after each stage: the mean
+              contact pressure must rise from contact_t2.csv to contact_t3.csv to
+              contact_t4.csv, and contact_t4.csv must be contact.csv (the last step).
 Prints "RESULT ..." lines for doc/verification.md."""
 import math
 import os, sys
@@ -98,6 +101,18 @@ if case == "tube-stages":
             if not low == high == expected:
                 sys.exit(f"FAIL: the temperature field at t = {time:g} is {low} to {high}, not "
                          f"{expected}")
+    # The joint after each stage (Output/Contact Times).
+    def mean_pressure(name):
+        points = list(csv.DictReader(open(os.path.join(out, "thermal", name))))
+        return sum(float(r["pressure"]) for r in points) / len(points)
+    means = [mean_pressure(f"contact_t{t}.csv") for t in (2, 3, 4)]
+    print("RESULT tube-stages mean contact pressure after release, heating, in operation: "
+          + ", ".join(f"{m:.4g}" for m in means) + " MPa")
+    if not means[0] < means[1] < means[2]:
+        sys.exit(f"FAIL: the stages' mean contact pressures do not rise: {means}")
+    last = open(os.path.join(out, "thermal", "contact_t4.csv")).read()
+    if last != open(os.path.join(out, "thermal", "contact.csv")).read():
+        sys.exit("FAIL: contact_t4.csv is not contact.csv (the last converged step)")
     print("ok")
     sys.exit(0)
 scene = yaml.safe_load(open(scene_path))["contactlab"]
