@@ -1,8 +1,11 @@
 #include "linear/CapacitanceCorrection.hpp"
 
+#include "linear/LinearSolver.hpp"
+
 #include <Teuchos_LAPACK.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace contactlab {
@@ -94,9 +97,25 @@ bool CapacitanceCorrection::factor(const std::vector<GO>& indices,
   }
   pivots_.assign(n, 0);
   if (n == 0) return true;
+  const Teuchos::LAPACK<int, double> lapack;
+  std::vector<double> work(4 * static_cast<size_t>(n));
+  std::vector<int> iwork(n);
+  double norm = 0;  // the 1-norm, GECON's input
+  for (int j = 0; j < n; ++j) {
+    double column = 0;
+    for (int i = 0; i < n; ++i)
+      column += std::abs(lu_[static_cast<size_t>(j) * n + i]);
+    norm = std::max(norm, column);
+  }
   int info = 0;
-  Teuchos::LAPACK<int, double>().GETRF(n, n, lu_.data(), n, pivots_.data(), &info);
-  return info == 0;
+  lapack.GETRF(n, n, lu_.data(), n, pivots_.data(), &info);
+  if (info != 0) return false;
+  // A singular A makes I + G D singular, but its LU rarely meets an exact zero pivot, and the
+  // residual check cannot tell: a zero row of A leaves a residual independent of x. The
+  // condition estimate can: beyond the bound that proves a matrix singular, refuse.
+  double rcond = 0;
+  lapack.GECON('1', n, lu_.data(), n, norm, &rcond, work.data(), iwork.data(), &info);
+  return info == 0 && rcond * kSingularConditionBound > 1.0;
 }
 
 void CapacitanceCorrection::correct(const double* x0, double* b) const {

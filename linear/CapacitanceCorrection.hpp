@@ -38,7 +38,9 @@ class CapacitanceCorrection {
   size_t knownIndices() const { return known_.size(); }
 
   // Factors I + G D for J = `indices` (sorted, unique, all known) and D's entries (global row
-  // and column in J). Returns false when a pivot is exactly zero (A is then singular).
+  // and column in J). Returns false when I + G D is singular to working precision (a zero
+  // pivot, or a condition estimate beyond kSingularConditionBound): A may then be singular,
+  // and only its own factorization can say.
   bool factor(const std::vector<GO>& indices, const std::vector<MatrixSnapshot::Entry>& delta);
   size_t rank() const { return indices_.size(); }
   // b := b - P D y, y solving (I + G D) y = P^T x0, for x0 = A0^-1 b (both of full length).

@@ -169,6 +169,38 @@ TEST(FactorizationReuse, NeverFactorizesEveryMatrix) {
   EXPECT_EQ(solver.stats().reusedFactorizations, 0);
 }
 
+// A change that makes A singular (row and column p zeroed) cannot be solved through the
+// correction: its solve fails the residual check, A is factorized, and MUMPS' zero pivot is
+// reported as a singular matrix, as without reuse.
+TEST(FactorizationReuse, ASingularChangeIsReportedAsWithoutReuse) {
+  const auto A0 = modelMatrix({}, Layout::scattered);
+  const auto b = test::rightHandSide(*A0, 1);
+  MumpsSolver solver(withMode(Mode::general), world());
+  solved(solver, A0, *b);
+  const GO p = 100;
+  const auto singular =
+      test::makeMatrix(kSize, Layout::scattered, world(),
+                       [&](GO row, std::vector<GO>& cols, std::vector<double>& vals) {
+                         const auto local = A0->getRowMap()->getLocalElement(row);
+                         Matrix::local_inds_host_view_type indices;
+                         Matrix::values_host_view_type values;
+                         A0->getLocalRowView(local, indices, values);
+                         for (size_t k = 0; k < indices.extent(0); ++k) {
+                           const GO col = A0->getColMap()->getGlobalElement(indices(k));
+                           cols.push_back(col);
+                           vals.push_back(row == p || col == p ? 0.0 : values(k));
+                         }
+                       });
+  MultiVector x(singular->getDomainMap(), 1);
+  EXPECT_THROW(
+      {
+        solver.setMatrix(singular, false);
+        solver.solve(*b, x);
+        throwIfNumericallySingular(*singular, *b, x);
+      },
+      SingularMatrixError);
+}
+
 // A determinant describes a factorized matrix: asking for it turns reuse off.
 TEST(FactorizationReuse, IsOffWhenTheDeterminantIsAsked) {
   MumpsSolver::Options o = withMode(Mode::symmetricIndefinite);
