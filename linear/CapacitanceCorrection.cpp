@@ -20,13 +20,6 @@ void CapacitanceCorrection::reset() {
   pivots_.clear();
 }
 
-std::vector<GO> CapacitanceCorrection::unknownIndices(const std::vector<GO>& indices) const {
-  std::vector<GO> out;
-  for (GO i : indices)
-    if (!position_.count(i)) out.push_back(i);
-  return out;
-}
-
 std::vector<std::pair<GO, GO>> CapacitanceCorrection::entriesToFetch(
     const std::vector<GO>& newIndices) const {
   std::vector<GO> rows = known_;

@@ -27,22 +27,18 @@ class CapacitanceCorrection {
 
   // Forgets every index and entry: for a new reference matrix.
   void reset();
-  // Indices of `indices` (sorted, unique) whose entries of G are not known yet.
-  std::vector<GO> unknownIndices(const std::vector<GO>& indices) const;
   // The entries of A0^-1 that adding `newIndices` needs, as (column, row) sorted by column then
   // row: every known or new row of the new columns and, unless symmetric, the new rows of the
   // known columns.
   std::vector<std::pair<GO, GO>> entriesToFetch(const std::vector<GO>& newIndices) const;
   // Adds `newIndices` with the values of entriesToFetch(newIndices), in its order.
   void addIndices(const std::vector<GO>& newIndices, const std::vector<double>& values);
-  size_t knownIndices() const { return known_.size(); }
 
   // Factors I + G D for J = `indices` (sorted, unique, all known) and D's entries (global row
   // and column in J). Returns false when I + G D is singular to working precision (a zero
   // pivot, or a condition estimate beyond kSingularConditionBound): A may then be singular,
   // and only its own factorization can say.
   bool factor(const std::vector<GO>& indices, const std::vector<MatrixSnapshot::Entry>& delta);
-  size_t rank() const { return indices_.size(); }
   // b := b - P D y, y solving (I + G D) y = P^T x0, for x0 = A0^-1 b (both of full length).
   void correct(const double* x0, double* b) const;
 

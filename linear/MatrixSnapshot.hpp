@@ -21,6 +21,7 @@ class MatrixSnapshot {
   struct Difference {
     std::vector<GO> indices;     // sorted, unique: rows of this rank and columns that differ
     std::vector<Entry> entries;  // (A - snapshot) on this rank's rows, nonzero entries only
+    bool exceeded = false;       // more rows changed than asked for: the scan stopped there
   };
 
   MatrixSnapshot() = default;
@@ -30,16 +31,18 @@ class MatrixSnapshot {
   // Whether A has this snapshot's global size and the same rows on this rank, in the same
   // order (a collective answer is the caller's: reduce it over the ranks).
   bool sameRowsAs(const Matrix& A) const;
-  // A - snapshot; A must have the same rows (sameRowsAs).
-  Difference differenceFrom(const Matrix& A) const;
+  // A - snapshot; A must have the same rows (sameRowsAs). Stops (exceeded) as soon as more than
+  // maxChangedRows rows differ: a matrix that changed everywhere (a plastic or finite-strain
+  // solid) costs a few rows' comparison, not a pass over A.
+  Difference differenceFrom(const Matrix& A, size_t maxChangedRows) const;
 
  private:
-  // One local row's (column, value) pairs, sorted by column.
-  static void sortedRow(const Matrix::local_matrix_host_type& local, const Map& colMap, LO row,
-                        std::vector<std::pair<GO, double>>& out);
+  // One local row's (column, value) pairs, in the local matrix's order.
+  static void rowOf(const Matrix::local_matrix_host_type& local, const Map& colMap, LO row,
+                    std::vector<std::pair<GO, double>>& out);
   Tpetra::global_size_t globalRows_ = 0;
   std::vector<GO> rows_;          // global ids of the local rows, in local order
-  std::vector<size_t> rowStart_;  // CSR over rows_
+  std::vector<size_t> rowStart_;  // CSR over rows_, each row in A's local order (unsorted)
   std::vector<GO> cols_;
   std::vector<double> values_;
 };

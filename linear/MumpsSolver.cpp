@@ -258,11 +258,7 @@ void MumpsSolver::factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patt
     analyse();
   }
   factorize();
-  if (reusesFactorization()) {
-    m.reference = MatrixSnapshot(*A);
-    m.correctionIndices.clear();
-    m.correction.reset();
-  }
+  keepReference(*A);
 }
 
 void MumpsSolver::analyse() {

@@ -90,6 +90,9 @@ class MumpsSolver : public LinearSolver {
   void analyse();
   void factorize();
   bool reusesFactorization() const;
+  // After a factorization of A: A becomes the reference later matrices are compared with, when
+  // a correction could ever pay (none is kept for a cheap factorization).
+  void keepReference(const Matrix& A);
   // Answers setMatrix(A) from the reference factorization when it pays; false: factorize A.
   bool correctFrom(const Teuchos::RCP<const Matrix>& A);
   // Entries (column, row) of the factorized matrix's inverse, sorted by column (host's list;

@@ -45,7 +45,6 @@ constexpr int kMaxRefinements = 2;
 // the inverse yet, is predicted to pay: the new columns of the inverse, the dense LU and the
 // second solve each iteration then needs, against kAmortization factorizations.
 bool correctionPays(size_t rank, size_t fresh, double factorFlops, double factorEntries) {
-  if (factorFlops < kMinimumFactorizationFlops) return false;
   const double pass = 2.0 * factorEntries;  // flops of one pass over the factors
   const double r = static_cast<double>(rank);
   const double predicted = kInverseColumnWeight * pass * static_cast<double>(fresh) +
@@ -116,6 +115,17 @@ bool MumpsSolver::reusesFactorization() const {
   return options_.reuseFactorization && !options_.determinant && !options_.conditionEstimate;
 }
 
+void MumpsSolver::keepReference(const Matrix& A) {
+  Impl& m = *impl_;
+  m.correctionIndices.clear();
+  m.correction.reset();
+  // Below the flop floor no matrix is compared: neither the snapshot nor the comparison is
+  // paid for on the small models (the same decision on every rank: the flops are global).
+  m.reference = reusesFactorization() && m.referenceFlops >= kMinimumFactorizationFlops
+                    ? MatrixSnapshot(A)
+                    : MatrixSnapshot();
+}
+
 bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   Impl& m = *impl_;
   const auto t0 = Clock::now();
@@ -123,7 +133,14 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   int allSame = 0;
   MPI_Allreduce(&same, &allSame, 1, MPI_INT, MPI_MIN, m.comm);
   if (!allSame) return false;
-  const auto difference = m.reference.differenceFrom(*A);
+  // The changed rows alone bound the rank from below: past Max Correction Rank of them on a
+  // rank, the scan stops, and A is factorized.
+  const size_t maxRank = static_cast<size_t>(options_.maxCorrectionRank);
+  const auto difference = m.reference.differenceFrom(*A, maxRank);
+  int exceeded = difference.exceeded ? 1 : 0;
+  int anyExceeded = 0;
+  MPI_Allreduce(&exceeded, &anyExceeded, 1, MPI_INT, MPI_MAX, m.comm);
+  if (anyExceeded) return false;
   const std::vector<GO> indices = unionOverRanks(difference.indices, m.comm);
   if (indices.empty()) {  // the factorized matrix itself
     m.correcting = false;
@@ -136,7 +153,6 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   std::set_difference(indices.begin(), indices.end(), m.correctionIndices.begin(),
                       m.correctionIndices.end(), std::back_inserter(fresh));
   // The rank bounds the dense LU, the known indices the inverse entries kept (G).
-  const size_t maxRank = static_cast<size_t>(options_.maxCorrectionRank);
   if (indices.size() > maxRank || m.correctionIndices.size() + fresh.size() > 2 * maxRank)
     return false;
   if (!correctionPays(indices.size(), fresh.size(), m.referenceFlops, m.referenceEntries))

@@ -97,7 +97,8 @@ TEST(MatrixSnapshot, DifferenceListsTheChangedEntriesAcrossPatterns) {
   const auto A = modelMatrix({{5, 40, 2.0}}, Layout::scattered, 0.0, true);
   const MatrixSnapshot snapshot(*A0);
   ASSERT_TRUE(snapshot.sameRowsAs(*A));
-  const auto d = snapshot.differenceFrom(*A);
+  const auto d = snapshot.differenceFrom(*A, kSize);
+  EXPECT_FALSE(d.exceeded);
   // Rows 5 and 40 each gain 2 on the diagonal and -2 off it; row 5 also gets (5, 41) = 1.
   double sum = 0;
   for (const auto& e : d.entries) {
@@ -111,7 +112,11 @@ TEST(MatrixSnapshot, DifferenceListsTheChangedEntriesAcrossPatterns) {
   if (owns5) {
     EXPECT_NE(std::find(d.indices.begin(), d.indices.end(), 41), d.indices.end());
   }
-  EXPECT_TRUE(snapshot.differenceFrom(*A0).entries.empty());
+  EXPECT_TRUE(snapshot.differenceFrom(*A0, kSize).entries.empty());
+  // A matrix changed everywhere: the scan stops past the limit on every rank.
+  const auto scaled = snapshot.differenceFrom(*modelMatrix({}, Layout::scattered, 0, false, 2), 10);
+  EXPECT_TRUE(scaled.exceeded);
+  EXPECT_LE(scaled.entries.size(), 11u * 7u);
 }
 
 class FactorizationReuse : public ::testing::TestWithParam<Mode> {};
