@@ -3,9 +3,10 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   factorization-reuse) run only
+#   factorization-reuse, peers) run only
 #   those tables,
-#   all by default (ironing3d and normal-field write doc/verification.md).
+#   all by default (ironing3d and normal-field write doc/verification.md; peers installs GetFEM
+#   and CalculiX with apt-get when they are missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
@@ -107,5 +108,11 @@ if want factorization-reuse; then
   # dofs on 1 and 2 ranks (~6 minutes).
   python3 bench/factorization_reuse.py "$BUILD/apps/contactlab" scenes \
     "$BUILD/bench-factorization-reuse" --doc doc/performance.md
+fi
+if want peers; then
+  # contactlab, GetFEM and CalculiX on the same tet10 quarter hemisphere, one program at a
+  # time (issue 19): 125 730 dofs, several minutes per program; --size 0.02 for seconds.
+  /usr/bin/python3 bench/peers/peers.py "$BUILD/apps/contactlab" "$BUILD/bench-peers" \
+    --size 0.00713 --doc doc/performance.md
 fi
 echo "bench: doc/performance.md and doc/verification.md updated"

@@ -6,14 +6,15 @@ usage: import runs; summary, wall, done = runs.run(exe, "run", scene_yaml, out, 
 import json, os, shutil, subprocess, time
 
 
-def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600, ranks=1):
+def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600, ranks=1, prefix=()):
     """`exe command scene --out out` into a cleared folder, without VTK output, with a `--set`
-    for each of sets, on `ranks` MPI processes (mpirun beyond one). Returns the summary.json
-    (None when the run wrote none or an unreadable one), the wall seconds and the finished
-    process."""
+    for each of sets, on `ranks` MPI processes (mpirun beyond one), the whole command after
+    prefix (e.g. ["/usr/bin/time", "-v"], whose report ends the stderr). Returns the
+    summary.json (None when the run wrote none or an unreadable one), the wall seconds and the
+    finished process."""
     shutil.rmtree(out, ignore_errors=True)
     launcher = ["mpirun", "--oversubscribe", "-np", str(ranks)] if ranks > 1 else []
-    cmd = launcher + [exe, command, scene, "--out", out] + (["--quiet"] if quiet else [])
+    cmd = [*prefix, *launcher, exe, command, scene, "--out", out] + (["--quiet"] if quiet else [])
     for s in ["Output/VTK=false", *sets]:
         cmd += ["--set", s]
     start = time.time()
