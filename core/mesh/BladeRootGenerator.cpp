@@ -144,7 +144,7 @@ Mesh generateBladeRoot(const BladeRootParams& p) {
   requireGrading("blade-root", {p.sizeFlank, p.sizeFar, p.fineDistance, p.transitionLength});
   const BladeRootProfile profile(p);
   const std::string source = "generated blade root (" + std::to_string(p.lobes) + " lobes, " +
-                             p.elementType + ", flank size " + formatNumber(p.sizeFlank) + ")";
+                             p.elementType + ", flank size " + numberText(p.sizeFlank) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();

@@ -74,9 +74,8 @@ void requireValidOutline(const std::string& body, const std::vector<Point>& v,
   for (std::size_t i = 0; i < edges; ++i) {
     const std::size_t j = (i + 1) % n;
     if (!(reach[i] + reach[j] < length(minus(v[j], v[i]))))
-      refuse("the " + body + "'s edge from (" + formatNumber(v[i][0]) + ", " +
-             formatNumber(v[i][1]) + ") to (" + formatNumber(v[j][0]) + ", " +
-             formatNumber(v[j][1]) +
+      refuse("the " + body + "'s edge from (" + numberText(v[i][0]) + ", " + numberText(v[i][1]) +
+             ") to (" + numberText(v[j][0]) + ", " + numberText(v[j][1]) +
              ") is too short for its fillets: reduce Fillet Radius or Clearance, or lengthen "
              "the lobes (Lobe Pitch, Lobe Depth, Tip Land, Neck Length)");
   }
@@ -105,10 +104,10 @@ BladeRootProfile::BladeRootProfile(const BladeRootParams& p) {
   requirePositive(g, "Inner Radius", p.innerRadius);
   requirePositive(g, "Outer Radius", p.outerRadius);
   if (!(p.outerRadius > p.innerRadius))
-    refuse("Outer Radius = " + formatNumber(p.outerRadius) +
-           " must exceed Inner Radius = " + formatNumber(p.innerRadius));
+    refuse("Outer Radius = " + numberText(p.outerRadius) +
+           " must exceed Inner Radius = " + numberText(p.innerRadius));
   if (!(p.sectorAngle > 0 && p.sectorAngle < 180))
-    refuse("Sector Angle = " + formatNumber(p.sectorAngle) + " must lie in (0, 180) degrees");
+    refuse("Sector Angle = " + numberText(p.sectorAngle) + " must lie in (0, 180) degrees");
   for (const auto& [name, value] : {std::pair<const char*, double>{"Neck Width", p.neckWidth},
                                     {"Neck Length", p.neckLength},
                                     {"Lobe Depth", p.lobeDepth},
@@ -118,23 +117,23 @@ BladeRootProfile::BladeRootProfile(const BladeRootParams& p) {
                                     {"Blade Height", p.bladeHeight}})
     requirePositive(g, name, value);
   if (!(p.taper >= 0) || !std::isfinite(p.taper))
-    refuse("Taper = " + formatNumber(p.taper) + " must not be negative");
+    refuse("Taper = " + numberText(p.taper) + " must not be negative");
   if (!(p.filletRadius >= 0) || !std::isfinite(p.filletRadius))
-    refuse("Fillet Radius = " + formatNumber(p.filletRadius) + " must not be negative");
+    refuse("Fillet Radius = " + numberText(p.filletRadius) + " must not be negative");
   if (!(p.flankAngle > 0 && p.flankAngle < 75))
-    refuse("Flank Angle = " + formatNumber(p.flankAngle) + " must lie in (0, 75) degrees");
+    refuse("Flank Angle = " + numberText(p.flankAngle) + " must lie in (0, 75) degrees");
 
   const int n = p.lobes;
   const double tanFlank = std::tan(p.flankAngle * M_PI / 180);
   const double drop = p.lobePitch - p.lobeDepth * tanFlank - p.tipLand;
   if (!(drop > 0))
-    refuse("Lobe Pitch = " + formatNumber(p.lobePitch) +
+    refuse("Lobe Pitch = " + numberText(p.lobePitch) +
            " leaves no lower flank: it must exceed Lobe Depth * tan(Flank Angle) + Tip Land = " +
-           formatNumber(p.lobeDepth * tanFlank + p.tipLand));
+           numberText(p.lobeDepth * tanFlank + p.tipLand));
   const double a0 = 0.5 * p.neckWidth;
   if (!(a0 - n * p.taper > 0))
-    refuse("Taper = " + formatNumber(p.taper) + " leaves the lowest neck no width: Lobes * Taper " +
-           "must stay below Neck Width / 2 = " + formatNumber(a0));
+    refuse("Taper = " + numberText(p.taper) + " leaves the lowest neck no width: Lobes * Taper " +
+           "must stay below Neck Width / 2 = " + numberText(a0));
 
   // The right half, bottom to top: (point, kind of the edge to the next point).
   const double yFirst = p.outerRadius - p.neckLength;
@@ -200,7 +199,7 @@ BladeRootProfile::BladeRootProfile(const BladeRootParams& p) {
   slotFillets_.assign(slot_.size(), p.filletRadius);
   slotFillets_.front() = slotFillets_.back() = 0;  // the mouth meets the outer arc sharply
   if (!(slot_[1][1] < mouthY))
-    refuse("Neck Length = " + formatNumber(p.neckLength) +
+    refuse("Neck Length = " + numberText(p.neckLength) +
            " puts the first lobe above the slot's mouth: increase it");
 
   // The slot must stay inside the sector: above the inner radius, off the radial cuts.

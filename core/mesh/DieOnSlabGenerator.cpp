@@ -28,24 +28,24 @@ void requireDieOnSlab(const DieOnSlabParams& p) {
   requirePositive(kName, "Die Width", p.dieWidth);
   const std::string gen = std::string(kName) + " generator: ";
   if (!(p.dieThickness < p.dieRadius))
-    throw std::invalid_argument(gen + "Die Thickness = " + formatNumber(p.dieThickness) +
-                                " must be smaller than Die Radius = " + formatNumber(p.dieRadius));
+    throw std::invalid_argument(gen + "Die Thickness = " + numberText(p.dieThickness) +
+                                " must be smaller than Die Radius = " + numberText(p.dieRadius));
   if (!(p.dieAngle > 0 && p.dieAngle <= 180))
-    throw std::invalid_argument(gen + "Die Angle = " + formatNumber(p.dieAngle) +
+    throw std::invalid_argument(gen + "Die Angle = " + numberText(p.dieAngle) +
                                 " must lie in (0, 180] degrees (the arc below the die's axis)");
   if (!(p.dieStart >= 0 && p.dieStart <= p.slabLengths[0]))
     throw std::invalid_argument(
-        gen + "Die Start = " + formatNumber(p.dieStart) +
-        " must lie on the slab, in [0, Slab Length = " + formatNumber(p.slabLengths[0]) + "]");
+        gen + "Die Start = " + numberText(p.dieStart) +
+        " must lie on the slab, in [0, Slab Length = " + numberText(p.slabLengths[0]) + "]");
   if (!std::isfinite(p.gap) || p.gap <= -p.dieThickness)
-    throw std::invalid_argument(gen + "Gap = " + formatNumber(p.gap) +
+    throw std::invalid_argument(gen + "Gap = " + numberText(p.gap) +
                                 " must be a number larger than minus the Die Thickness");
   // An arc element spanning more than ~30 degrees would cut well inside the circle.
   const int fewest = static_cast<int>(std::ceil(p.dieAngle / 30.0 - 1e-12));
   if (p.dieDivisions[2] < fewest)
     throw std::invalid_argument(gen + "Die Divisions[2] = " + std::to_string(p.dieDivisions[2]) +
                                 " must be at least " + std::to_string(fewest) +
-                                " for Die Angle = " + formatNumber(p.dieAngle) +
+                                " for Die Angle = " + numberText(p.dieAngle) +
                                 ": an element spans at most 30 degrees");
 }
 

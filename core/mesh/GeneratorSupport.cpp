@@ -7,16 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace contactlab {
-
-std::string formatNumber(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
-}
 
 std::string typeList(std::initializer_list<ElementType> types) {
   std::string s;
@@ -40,7 +33,7 @@ ElementSpec elementSpec(const std::string& generator, const std::string& name,
 
 void requirePositive(const std::string& generator, const std::string& param, double value) {
   if (!(value > 0) || !std::isfinite(value))
-    throw std::invalid_argument(generator + " generator: " + param + " = " + formatNumber(value) +
+    throw std::invalid_argument(generator + " generator: " + param + " = " + numberText(value) +
                                 " must be a positive number");
 }
 
@@ -78,11 +71,11 @@ void requireGrading(const std::string& generator, const ContactGrading& g) {
   requirePositive(generator, "Transition Length", g.transitionLength);
   if (!(g.fineRadius >= 0))
     throw std::invalid_argument(generator + " generator: Fine Radius = " +
-                                formatNumber(g.fineRadius) + " must not be negative");
+                                numberText(g.fineRadius) + " must not be negative");
   if (g.sizeFar < g.sizeContact)
     throw std::invalid_argument(
-        generator + " generator: Size Far = " + formatNumber(g.sizeFar) +
-        " must not be smaller than Size Contact = " + formatNumber(g.sizeContact));
+        generator + " generator: Size Far = " + numberText(g.sizeFar) +
+        " must not be smaller than Size Contact = " + numberText(g.sizeContact));
 }
 
 void resetMeshOptions() {

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to core/mesh: pieces shared by the built-in generators. All functions act on gmsh's
 // current model and must run inside inGmshModel.
+#include "base/NumberText.hpp"
 #include "core/mesh/ElementType.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/mesh/MeshGenerators.hpp"
@@ -103,9 +104,6 @@ void requireAllQuads(const std::string& source);
 
 // Rotates the nodes of block `name` about the vertical axis through (cx, cy), in degrees.
 void rotateBlockAboutZ(Mesh& mesh, const std::string& name, double cx, double cy, double degrees);
-
-// Shortest faithful text of a number for messages ("0.05", not "0.050000").
-std::string formatNumber(double value);
 
 // "tri3, tri6, ..." for messages.
 std::string typeList(std::initializer_list<ElementType> types);

@@ -12,8 +12,8 @@ Mesh generateHalfDisc(const HalfDiscParams& p) {
       roundBodySpec("half-disc", p.elementType,
                     {ET::Tri3, ET::Tri6, ET::Quad4, ET::Quad8, ET::Quad9}, p.radius, p.grading);
   const std::string source =
-      "generated half-disc (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
-      formatNumber(p.grading.sizeContact) + " to " + formatNumber(p.grading.sizeFar) + ")";
+      "generated half-disc (" + p.elementType + ", R = " + numberText(p.radius) + ", sizes " +
+      numberText(p.grading.sizeContact) + " to " + numberText(p.grading.sizeFar) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();
@@ -54,7 +54,7 @@ Mesh generateRollerOnBase(const RollerOnBaseParams& p) {
   const bool disc =
       !requireBase("roller-on-base", p.base, {"block", "disc"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated roller on a " + p.base + " (" + p.elementType +
-                             ", R = " + formatNumber(p.radius) + ")";
+                             ", R = " + numberText(p.radius) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();

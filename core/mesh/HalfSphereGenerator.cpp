@@ -18,9 +18,9 @@ Mesh generateHalfSphere(const HalfSphereParams& p) {
   const bool block =
       requireBase("half-sphere", p.base, {"none", "block"}, p.baseWidth, p.baseHeight);
   const std::string source = "generated half-sphere" + std::string(block ? " on a block" : "") +
-                             " (" + p.elementType + ", R = " + formatNumber(p.radius) + ", sizes " +
-                             formatNumber(p.grading.sizeContact) + " to " +
-                             formatNumber(p.grading.sizeFar) + ")";
+                             " (" + p.elementType + ", R = " + numberText(p.radius) + ", sizes " +
+                             numberText(p.grading.sizeContact) + " to " +
+                             numberText(p.grading.sizeFar) + ")";
   return inGmshModel("gmsh could not generate the " + source, [&] {
     namespace occ = gmsh::model::occ;
     resetMeshOptions();

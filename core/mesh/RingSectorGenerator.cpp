@@ -15,11 +15,11 @@ void requireRingSector(const RingSectorParams& p) {
   requirePositive("ring-sector", "Inner Radius", p.innerRadius);
   requirePositive("ring-sector", "Outer Radius", p.outerRadius);
   if (!(p.outerRadius > p.innerRadius))
-    throw std::invalid_argument(
-        std::string(kGenerator) + ": Outer Radius = " + formatNumber(p.outerRadius) +
-        " must be larger than Inner Radius = " + formatNumber(p.innerRadius));
+    throw std::invalid_argument(std::string(kGenerator) +
+                                ": Outer Radius = " + numberText(p.outerRadius) +
+                                " must be larger than Inner Radius = " + numberText(p.innerRadius));
   if (!(p.angle > 0 && p.angle <= 360))
-    throw std::invalid_argument(std::string(kGenerator) + ": Angle = " + formatNumber(p.angle) +
+    throw std::invalid_argument(std::string(kGenerator) + ": Angle = " + numberText(p.angle) +
                                 " must lie in (0, 360] degrees");
   requireDivisions("ring-sector", "Radial Divisions", p.radialDivisions);
   requireDivisions("ring-sector", "Circumferential Divisions", p.circumferentialDivisions);
@@ -27,7 +27,7 @@ void requireRingSector(const RingSectorParams& p) {
   if (p.circumferentialDivisions < fewest)
     throw std::invalid_argument(std::string(kGenerator) + ": Circumferential Divisions = " +
                                 std::to_string(p.circumferentialDivisions) + " must be at least " +
-                                std::to_string(fewest) + " for Angle = " + formatNumber(p.angle) +
+                                std::to_string(fewest) + " for Angle = " + numberText(p.angle) +
                                 ": an element spans at most 90 degrees");
   requirePositive("ring-sector", "Radial Grading", p.radialGrading);
 }

@@ -37,11 +37,11 @@ void requireStacking(const std::string& generator, double lowerHeight, double up
   requirePositive(generator, "Lower Height", lowerHeight);
   requirePositive(generator, "Upper Height", upperHeight);
   if (!std::isfinite(gap) || gap <= -std::min(lowerHeight, upperHeight))
-    throw std::invalid_argument(generator + " generator: gap = " + formatNumber(gap) +
+    throw std::invalid_argument(generator + " generator: gap = " + numberText(gap) +
                                 " must be a number larger than minus the smaller block height");
   if (!std::isfinite(rotation) || std::abs(rotation) > 45)
     throw std::invalid_argument(generator + " generator: upperRotationDeg = " +
-                                formatNumber(rotation) + " must lie in [-45, 45] degrees");
+                                numberText(rotation) + " must lie in [-45, 45] degrees");
 }
 
 }  // namespace

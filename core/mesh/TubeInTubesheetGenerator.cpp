@@ -24,20 +24,20 @@ void requireTube(const TubeInTubesheetParams& p) {
   requirePositive(kName, "Thickness", p.thickness);
   requirePositive(kName, "Sheet Radial Grading", p.sheetRadialGrading);
   if (!(p.tubeWall < p.tubeOuterDiameter / 2))
-    fail("Tube Wall = " + formatNumber(p.tubeWall) + " must be less than the outer radius " +
-         formatNumber(p.tubeOuterDiameter / 2));
-  if (!(p.clearance >= 0)) fail("Clearance = " + formatNumber(p.clearance) + " must be >= 0");
+    fail("Tube Wall = " + numberText(p.tubeWall) + " must be less than the outer radius " +
+         numberText(p.tubeOuterDiameter / 2));
+  if (!(p.clearance >= 0)) fail("Clearance = " + numberText(p.clearance) + " must be >= 0");
   const double hole = p.tubeOuterDiameter / 2 + p.clearance;
   if (!(p.sheetOuterRadius > hole))
-    fail("Sheet Outer Radius = " + formatNumber(p.sheetOuterRadius) +
-         " must be larger than the hole's radius " + formatNumber(hole));
+    fail("Sheet Outer Radius = " + numberText(p.sheetOuterRadius) +
+         " must be larger than the hole's radius " + numberText(hole));
   if (!(p.expansionStart >= 0 && p.expansionStart < p.expansionEnd &&
         p.expansionEnd <= p.thickness))
-    fail("the expansion zone [Expansion Start, Expansion End] = [" +
-         formatNumber(p.expansionStart) + ", " + formatNumber(p.expansionEnd) +
-         "] must be a non-empty part of [0, Thickness = " + formatNumber(p.thickness) + "]");
+    fail("the expansion zone [Expansion Start, Expansion End] = [" + numberText(p.expansionStart) +
+         ", " + numberText(p.expansionEnd) +
+         "] must be a non-empty part of [0, Thickness = " + numberText(p.thickness) + "]");
   if (!(p.angle > 0 && p.angle <= 90))
-    fail("Angle = " + formatNumber(p.angle) + " must lie in (0, 90] degrees");
+    fail("Angle = " + numberText(p.angle) + " must lie in (0, 90] degrees");
   requireDivisions(kName, "Tube Radial Divisions", p.tubeRadialDivisions);
   requireDivisions(kName, "Sheet Radial Divisions", p.sheetRadialDivisions);
   requireDivisions(kName, "Circumferential Divisions", p.circumferentialDivisions);
@@ -53,7 +53,7 @@ void requireTube(const TubeInTubesheetParams& p) {
     if ((lengths[i] > 0) != (p.axialDivisions[i] > 0))
       fail(std::string("Axial Divisions ") + parts[i] + " the expansion zone = " +
            std::to_string(p.axialDivisions[i]) + (lengths[i] > 0 ? " must be >= 1" : " must be 0") +
-           " for a length of " + formatNumber(lengths[i]));
+           " for a length of " + numberText(lengths[i]));
 }
 
 // Grid z (integers at grid planes, halves at mid-side nodes) to z: linear in each zone.

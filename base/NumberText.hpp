@@ -1,0 +1,17 @@
+#pragma once
+// A number in a message or a file name: printf's %g (6 significant digits: 0.625, not
+// 0.625000), or fewer when asked. One definition for every module: the mesh generators and the
+// linear solvers each had their own `formatNumber` with the same signature and different
+// formats, so one silently replaced the other at link time.
+#include <cstdio>
+#include <string>
+
+namespace contactlab {
+
+inline std::string numberText(double value, int significantDigits = 6) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.*g", significantDigits, value);
+  return buffer;
+}
+
+}  // namespace contactlab
