@@ -158,9 +158,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         throw InputError(sm.scene.path + ": Initial State/From: " + e.what());
       }
     }
-    if (root)
+    if (root) {
+      for (const std::string& sentence : sm.notes)
+        std::cout << "contactlab: " << sentence << "\n";
       for (const std::string& sentence : sm.advice)
         std::cerr << "contactlab: " << sentence << "\n";
+    }
     try {
       problem = std::make_unique<Problem>(sm.model, comm);
     } catch (const InputError& e) {

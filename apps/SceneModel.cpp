@@ -1,10 +1,12 @@
 #include "apps/SceneModel.hpp"
 
+#include "apps/AutomaticAugmentation.hpp"
 #include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneSchema.hpp"
 #include "apps/SceneTemperatures.hpp"
 #include "apps/TimeText.hpp"
 #include "base/InputError.hpp"
+#include "base/NumberText.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
@@ -158,7 +160,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 // Contact/<zone>: checked against the mesh (the same on every rank, so every rank agrees).
 ContactZone contactZone(const ParameterList& z, const std::string& name, const Mesh& mesh,
-                        double endTime, const std::string& where) {
+                        const SolidModel& model, double endTime, const std::string& where,
+                        std::vector<std::string>& notes) {
   const std::string path = where + ": Contact/" + name;
   ContactZone zone;
   zone.name = name;
@@ -249,7 +252,25 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   }
   const ParameterList& f = z.sublist("Formulation");
   zone.formulation = f.get<std::string>("Type");
-  const ParameterList& params = f.sublist(zone.formulation);
+  ParameterList params = f.sublist(zone.formulation);
+  // Normal Augmentation 0 (its default): E / h from the model (AutomaticAugmentation.hpp).
+  if (params.isParameter("Normal Augmentation") &&
+      params.get<double>("Normal Augmentation") == 0.0) {
+    try {
+      const AugmentationScale scale =
+          automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
+      params.set("Normal Augmentation", scale.normalAugmentation());
+      notes.push_back("Contact/" + name + ": Normal Augmentation r_n = E / h = " +
+                      numberText(scale.normalAugmentation()) +
+                      " (automatic: E = " + numberText(scale.youngModulus) +
+                      ", the softer body's; h = " + numberText(scale.facetSize) +
+                      ", the slave facets' median edge)");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path + "/Formulation/" + zone.formulation +
+                       "/Normal Augmentation: automatic (0) cannot be computed: " + e.what() +
+                       "; give a value (start near E/h)");
+    }
+  }
   try {
     zone.law = formulationRegistry().get(zone.formulation).build(params);
   } catch (const std::invalid_argument& e) {
@@ -426,8 +447,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   // Contact zones.
   const ParameterList& contact = p.sublist("Contact");
   for (auto it = contact.begin(); it != contact.end(); ++it)
-    sm.contact.push_back(
-        contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh, endTime, where));
+    sm.contact.push_back(contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh,
+                                     sm.model, endTime, where, sm.notes));
   // Node-to-segment collocates at the slave nodes, and tri6/quad8 corners carry no (or a
   // negative) share of a smooth pressure: it runs, its forces are not consistent loads.
   for (const ContactZone& zone : sm.contact)

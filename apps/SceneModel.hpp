@@ -44,6 +44,8 @@ struct SceneModel {
   int criticalMuMaxPatterns = 64;
   // Sentences for the log about choices that run but are known to be poor (not errors).
   std::vector<std::string> advice;
+  // Sentences for the log about values the scene left to contactlab (automatic coefficients).
+  std::vector<std::string> notes;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

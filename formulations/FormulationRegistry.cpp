@@ -28,7 +28,10 @@ Teuchos::RCP<const ParameterList> coefficients(const std::string& normal, double
 // The augmented Lagrangian's coefficients, shared by its normal-field variant.
 Teuchos::RCP<ParameterList> augmentation() {
   return Teuchos::rcp(new ParameterList(*coefficients(
-      "Normal Augmentation", 0.0, "r_n > 0 (pressure per length; required). Start near E/h",
+      "Normal Augmentation", 0.0,
+      "r_n > 0 (pressure per length); 0 = automatic: E/h, E the softer body's Young's modulus "
+      "at rest, h the median edge of the slave facets (printed in the log). It changes the "
+      "Newton path, not the converged state",
       "Tangential Augmentation", 0.0,
       "r_t > 0 (inverse length; required with friction, unused without). Start near 1/h")));
 }
