@@ -161,7 +161,8 @@ std::string joined(const std::vector<std::string>& names) {
 // Contact/<zone>: checked against the mesh (the same on every rank, so every rank agrees).
 ContactZone contactZone(const ParameterList& z, const std::string& name, const Mesh& mesh,
                         const SolidModel& model, double endTime, const std::string& where,
-                        std::vector<std::string>& notes) {
+                        std::vector<std::string>& notes,
+                        std::map<std::string, double>& automaticNormalAugmentation) {
   const std::string path = where + ": Contact/" + name;
   ContactZone zone;
   zone.name = name;
@@ -260,6 +261,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
       const AugmentationScale scale =
           automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
       params.set("Normal Augmentation", scale.normalAugmentation());
+      automaticNormalAugmentation[name] = scale.normalAugmentation();
       notes.push_back("Contact/" + name + ": Normal Augmentation r_n = E / h = " +
                       numberText(scale.normalAugmentation()) +
                       " (automatic: E = " + numberText(scale.youngModulus) +
@@ -448,7 +450,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   const ParameterList& contact = p.sublist("Contact");
   for (auto it = contact.begin(); it != contact.end(); ++it)
     sm.contact.push_back(contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh,
-                                     sm.model, endTime, where, sm.notes));
+                                     sm.model, endTime, where, sm.notes,
+                                     sm.automaticNormalAugmentation));
   // Node-to-segment collocates at the slave nodes, and tri6/quad8 corners carry no (or a
   // negative) share of a smooth pressure: it runs, its forces are not consistent loads.
   for (const ContactZone& zone : sm.contact)

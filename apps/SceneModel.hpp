@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,9 @@ struct SceneModel {
   std::vector<std::string> advice;
   // Sentences for the log about values the scene left to contactlab (automatic coefficients).
   std::vector<std::string> notes;
+  // Per contact zone whose Normal Augmentation the scene left at 0: the r_n computed for it
+  // (AutomaticAugmentation.hpp), reported in summary.json.
+  std::map<std::string, double> automaticNormalAugmentation;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

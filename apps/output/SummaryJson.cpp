@@ -73,10 +73,16 @@ JsonValue SummaryJson::formulations() const {
   if (!contact_) return JsonValue();
   JsonValue zones = JsonValue::object();
   const auto& section = sm_.scene.params->sublist("Contact");
-  for (const auto& zone : sm_.contact)
-    zones.set(zone.name, typedSection(section.sublist(zone.name).sublist("Formulation"))
-                             .set("friction", zone.friction)
-                             .set("master", zone.obstacle ? "obstacle" : "surface"));
+  for (const auto& zone : sm_.contact) {
+    JsonValue formulation = typedSection(section.sublist(zone.name).sublist("Formulation"))
+                                .set("friction", zone.friction)
+                                .set("master", zone.obstacle ? "obstacle" : "surface");
+    // The r_n a scene left at 0 (its parameters above say 0).
+    const auto automatic = sm_.automaticNormalAugmentation.find(zone.name);
+    if (automatic != sm_.automaticNormalAugmentation.end())
+      formulation.set("automatic_normal_augmentation", automatic->second);
+    zones.set(zone.name, formulation);
+  }
   return zones;
 }
 

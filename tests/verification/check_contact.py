@@ -32,6 +32,8 @@ ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
 ap.add_argument("ranks", type=int); ap.add_argument("case"); ap.add_argument("tol", type=float)
 ap.add_argument("--set", action="append", default=[])
+ap.add_argument("--automatic-rn", action="store_true",
+                help="expect summary.json to report the automatic r_n of every zone")
 ap.add_argument("--E", type=float, default=1.0); ap.add_argument("--nu", type=float, default=0.3)
 ap.add_argument("--radius", type=float, default=1.0)
 ap.add_argument("--estar", type=float, default=0.0,
@@ -60,6 +62,12 @@ for s in args.set:
     if len(parts) == 4 and parts[0] == "Contact" and parts[2:] == ["Formulation", "Type"]:
         ran = summary["formulation"][parts[1]]["type"]
         assert ran == value, f"Contact/{parts[1]} ran {ran}, not the {value} asked for"
+# Normal Augmentation left at 0: summary.json reports the r_n that ran (E / h, > 0) per zone.
+if args.automatic_rn:
+    for zone, f in summary["formulation"].items():
+        rn = f.get("automatic_normal_augmentation")
+        assert rn is not None and rn > 0, f"Contact/{zone}: no automatic r_n in summary.json"
+        print(f"automatic r_n of {zone}: {rn:g}")
 
 if args.case == "no-equilibrium":
     assert run.returncode == 1, f"exit code {run.returncode}: expected a named failure"
