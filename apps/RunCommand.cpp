@@ -6,7 +6,6 @@
 #include "apps/RunCheckpoint.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
-#include "apps/TimeText.hpp"
 #include "apps/output/ContactCsv.hpp"
 #include "apps/output/CriticalMuSummary.hpp"
 #include "apps/output/ProbeValues.hpp"
@@ -15,6 +14,7 @@
 #include "apps/output/SummaryJson.hpp"
 #include "apps/output/VtkSteps.hpp"
 #include "base/InputError.hpp"
+#include "base/NumberText.hpp"
 #include "core/io/OutputFolder.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
@@ -24,7 +24,6 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -210,9 +209,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         }
       }
       if (from.start.time >= sm.solverOptions.endTime * (1 - 1e-12))
-        throw InputError(what + ": the checkpoint is at t = " + timeText(from.info.time) +
+        throw InputError(what + ": the checkpoint is at t = " + numberText(from.info.time) +
                          ", not before Load Steps/End Time = " +
-                         timeText(sm.solverOptions.endTime) + ": nothing to run");
+                         numberText(sm.solverOptions.endTime) + ": nothing to run");
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
     solver = buildLinearSolver(*sm.scene.params, comm);
@@ -321,7 +320,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       for (double t : sm.contactTimes)
         if (std::abs(s.time - t) <= tolerance) {
           if (root)
-            ContactCsv(outDir + "/contact_t" + timeText(t) + ".csv")
+            ContactCsv(outDir + "/contact_t" + numberText(t) + ".csv")
                 .write(*contact, sm.contact, *sm.model.mesh);
           contactTimesWritten.push_back(t);
         }
@@ -376,8 +375,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (t > from.start.time && std::find(contactTimesWritten.begin(), contactTimesWritten.end(),
                                            t) == contactTimesWritten.end())
         std::cerr << "contactlab: warning: Output/Contact Times: no converged step at t = "
-                  << timeText(t) << " (the steps fall at multiples of End Time / Steps, and "
-                  << "where step cuts put them): contact_t" << timeText(t)
+                  << numberText(t) << " (the steps fall at multiples of End Time / Steps, and "
+                  << "where step cuts put them): contact_t" << numberText(t)
                   << ".csv was not written\n";
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "

@@ -4,7 +4,6 @@
 #include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneSchema.hpp"
 #include "apps/SceneTemperatures.hpp"
-#include "apps/TimeText.hpp"
 #include "base/InputError.hpp"
 #include "base/NumberText.hpp"
 #include "core/materials/MaterialRegistry.hpp"
@@ -488,11 +487,11 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   if (sm.checkpointEvery < 0) throw InputError(where + ": Output/Checkpoint Every must be >= 0");
   for (double t : output.get<Teuchos::Array<double>>("Contact Times")) {
     if (!(t > 0) || !(t <= sm.solverOptions.endTime * (1 + 1e-12)))
-      throw InputError(where + ": Output/Contact Times: " + timeText(t) +
-                       " is not in (0, End Time = " + timeText(sm.solverOptions.endTime) + "]");
+      throw InputError(where + ": Output/Contact Times: " + numberText(t) +
+                       " is not in (0, End Time = " + numberText(sm.solverOptions.endTime) + "]");
     if (!sm.contactTimes.empty() && !(t > sm.contactTimes.back()))
-      throw InputError(where + ": Output/Contact Times must increase (" + timeText(t) + " after " +
-                       timeText(sm.contactTimes.back()) + ")");
+      throw InputError(where + ": Output/Contact Times must increase (" + numberText(t) +
+                       " after " + numberText(sm.contactTimes.back()) + ")");
     sm.contactTimes.push_back(t);
   }
   sm.criticalMuCheck = output.get<bool>("Critical Mu Check");

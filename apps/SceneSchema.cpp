@@ -2,6 +2,7 @@
 
 #include "algorithms/StaticSolver.hpp"
 #include "base/InputError.hpp"
+#include "base/NumberText.hpp"
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
@@ -10,7 +11,6 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include <cstdio>
 #include <sstream>
 
 namespace contactlab {
@@ -410,21 +410,15 @@ void validateScene(ParameterList& scene, const std::string& where) {
 
 namespace {
 
-std::string formatNumber(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
 std::string formatValue(const Teuchos::ParameterEntry& entry) {
-  if (entry.isType<double>()) return formatNumber(Teuchos::getValue<double>(entry));
+  if (entry.isType<double>()) return numberText(Teuchos::getValue<double>(entry));
   if (entry.isType<int>()) return std::to_string(Teuchos::getValue<int>(entry));
   if (entry.isType<bool>()) return Teuchos::getValue<bool>(entry) ? "true" : "false";
   if (entry.isType<std::string>()) return "\"" + Teuchos::getValue<std::string>(entry) + "\"";
   std::string s;
   if (entry.isType<Teuchos::Array<double>>())
     for (double v : Teuchos::getValue<Teuchos::Array<double>>(entry))
-      s += (s.empty() ? "" : ", ") + formatNumber(v);
+      s += (s.empty() ? "" : ", ") + numberText(v);
   else if (entry.isType<Teuchos::Array<int>>())
     for (int v : Teuchos::getValue<Teuchos::Array<int>>(entry))
       s += (s.empty() ? "" : ", ") + std::to_string(v);

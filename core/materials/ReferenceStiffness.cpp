@@ -1,5 +1,7 @@
 #include "core/materials/ReferenceStiffness.hpp"
 
+#include "base/NumberText.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -31,8 +33,8 @@ double referenceYoungModulus(const Material& material) {
   const double mu = 0.5 * (c11 - c12), lambda = c12;
   if (!(mu > 0) || !(lambda + 2.0 * mu / 3.0 > 0) || !std::isfinite(c11 + c12))
     throw std::invalid_argument(
-        material.name() + " has no stable isotropic stiffness at rest (mu = " + std::to_string(mu) +
-        ", lambda = " + std::to_string(lambda) + ")");
+        material.name() + " has no stable isotropic stiffness at rest (mu = " + numberText(mu) +
+        ", lambda = " + numberText(lambda) + ")");
   return mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
 }
 

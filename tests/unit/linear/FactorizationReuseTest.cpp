@@ -175,8 +175,9 @@ TEST(FactorizationReuse, NeverFactorizesEveryMatrix) {
 }
 
 // A change that makes A singular (row and column p zeroed) cannot be solved through the
-// correction: its solve fails the residual check, A is factorized, and MUMPS' zero pivot is
-// reported as a singular matrix, as without reuse.
+// correction: the residual check cannot tell (a zero row's residual does not depend on x), the
+// condition estimate of I + G D refuses it, A is factorized, and MUMPS' zero pivot is reported
+// as a singular matrix, as without reuse.
 TEST(FactorizationReuse, ASingularChangeIsReportedAsWithoutReuse) {
   const auto A0 = modelMatrix({}, Layout::scattered);
   const auto b = test::rightHandSide(*A0, 1);
