@@ -35,6 +35,8 @@
 
 namespace contactlab {
 
+class SolidAlonePredictor;
+
 struct StaticSolverOptions {
   int steps = 1;
   double endTime = 1.0;
@@ -48,7 +50,7 @@ struct StaticSolverOptions {
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
   Teuchos::ParameterList nox;            // passed through to NOX
   // Whether a step whose prescribed values move starts from the tangent predictor
-  // (doc/algorithms.md): "tangent", "none", or "automatic" (tangent without contact).
+  // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";
   // Algorithm.
   std::string method = "partial-newton";
@@ -128,6 +130,7 @@ class StaticSolver {
   // solves the tangent predictor's system (null: no predictor, whatever the options say).
   StaticSolver(NonlinearSystem& problem, ContactControls* controls, NewtonMethod& newton,
                StaticSolverOptions options, LinearSolver* solver = nullptr);
+  ~StaticSolver();
 
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
   // solution and onStep runs (results are written there). Never throws on a numerical failure:
@@ -149,6 +152,8 @@ class StaticSolver {
     std::string message;
   };
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
+  // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
+  bool stepSolidAlone(Vector& x, double t, StepReport& sr);
   void treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
@@ -159,6 +164,7 @@ class StaticSolver {
   NewtonMethod& newton_;
   const StaticSolverOptions options_;
   LinearSolver* solver_;
+  std::unique_ptr<SolidAlonePredictor> solidAlone_;  // built at its first use
   CyclingDetector detector_;
   // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
   std::vector<std::unique_ptr<FixedPointLoop>> loops_;

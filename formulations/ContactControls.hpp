@@ -8,8 +8,11 @@
 // algorithms above steer through it.
 #include "base/LinearAlgebra.hpp"
 
+#include <Teuchos_RCP.hpp>
+
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace contactlab {
@@ -79,6 +82,21 @@ class ContactControls {
   virtual void setFrictionScale(double scale) = 0;
   // Geometry in Newton: which derivatives of the geometry the tangent includes (GeometricTerms).
   virtual void setGeometricTerms(GeometricTerms terms) = 0;
+
+  // A step of the solid alone (StaticSolver's solid-alone predictor), for a state where no point
+  // carries a force yet (every point open, or closed at zero pressure: the touching points of an
+  // undeformed state): the solid's own Newton step without contact, K du = -R_u with K and R_u
+  // the solid's tangent and residual at x's displacements, which moves a pressed body into its
+  // obstacle and so predicts the contact zone. Assembles them, asks `solve` for du (false: no
+  // step) and adds du to x's displacements. Returns false, x unchanged, when a point carries a
+  // force, when the solid's part is not a system of its own (inclined symmetry planes reduce
+  // the whole system), when the solid cannot be evaluated at x, or when `solve` fails.
+  // Collective.
+  using SolidSolve = std::function<bool(const Teuchos::RCP<const Matrix>& tangent,
+                                        const Vector& rhs, Vector& du, int dofsPerNode)>;
+  virtual bool stepSolidAlone(Vector& /*x*/, double /*t*/, const SolidSolve& /*solve*/) {
+    return false;
+  }
 };
 
 }  // namespace contactlab

@@ -317,6 +317,28 @@ void ContactProblem::setFrictionScale(double scale) {
   kernel_->setFrictionScale(scale);
 }
 
+bool ContactProblem::stepSolidAlone(Vector& x, double t, const SolidSolve& solve) {
+  // The inclined planes' elimination is applied to the monolithic system (deferred in the
+  // solid): the solid's tangent alone is not reduced.
+  if (!solid_.symmetry().empty()) return false;
+  // Every rank evaluates every point: the answer agrees. A closed point at zero pressure (the
+  // touching point of an undeformed state) carries nothing yet.
+  for (const ContactPoint& pt : points_)
+    if (pt.result.pressure != 0 || pt.result.traction != std::array<double, 3>{}) return false;
+  auto u = displacement(x);
+  auto rhs = solid_.createVector();
+  solid_.assemble(*u, t, rhs.get(), true);
+  if (!solid_.assemblyFailure().code.empty()) return false;
+  rhs->scale(-1.0);
+  auto du = solid_.createVector();
+  if (!solve(solid_.tangent(), *rhs, *du, dim_)) return false;
+  auto src = du->getData(0);
+  auto dst = x.getDataNonConst(0);
+  for (LO i = 0; i < ownedDisplacements_; ++i)
+    dst[i] += src[i];
+  return true;
+}
+
 void ContactProblem::setGeometricTerms(GeometricTerms terms) {
   if (terms != geometricTerms_) layoutChanged_ = true;  // columns change at the next pairing
   geometricTerms_ = terms;

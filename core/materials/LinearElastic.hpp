@@ -27,6 +27,7 @@ class LinearElastic : public Material {
   Kinematics kinematics() const override { return Kinematics::SmallStrain; }
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override;
   double density() const override { return parameters_.density; }
+  bool linear() const override { return true; }
   std::optional<double> referenceTemperature() const override {
     return parameters_.expansion.referenceTemperature;
   }

