@@ -82,11 +82,12 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "tangent, except for a model with contact at the undeformed state u_n = 0 (there the "
          "last tangent carries no contact load, and the predictor moves a pressed body into "
          "its obstacle) or with the contact statuses a fixed point (Algorithm/Method: "
-         "fixed-point), and there 'solid-alone' from 20 000 displacement dofs; 'solid-alone': "
-         "a step that starts with every contact point open (statuses in Newton) takes the "
+         "fixed-point); at a contact model's step from u_n = 0 with the statuses in Newton, "
+         "'solid-alone' from 20 000 displacement dofs. 'solid-alone': a step that starts with "
+         "no contact point carrying a force (all open, or touching at zero pressure) takes the "
          "solid's own step without contact, solved by CG with MueLu to 1e-3, as its first "
          "iterate, where Newton would factorize a matrix it discards at the next iteration "
-         "(counted as an iteration; the geometry stays paired at the step's start): measured "
+         "(counted as an iteration; the geometry stays paired at the step's start). Measured "
          "in doc/algorithms.md. Steps driven by loads alone start from u_n with 'tangent'",
          choices({"automatic", "tangent", "solid-alone", "none"}));
   p->set("Max Geometry Iterations", 30,
