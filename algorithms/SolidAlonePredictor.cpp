@@ -11,8 +11,6 @@ SolidAlonePredictor::~SolidAlonePredictor() = default;
 bool SolidAlonePredictor::step(ContactControls& controls, Vector& x, double t) {
   const auto solve = [this](const Teuchos::RCP<const Matrix>& tangent, const Vector& rhs,
                             Vector& du, int dofsPerNode) {
-    if (!always_ && static_cast<long long>(tangent->getGlobalNumRows()) < kMinimumDofs)
-      return false;
     if (!solver_) {
       BelosSolver::Options options;
       options.method = BelosSolver::Method::cg;
@@ -30,7 +28,7 @@ bool SolidAlonePredictor::step(ContactControls& controls, Vector& x, double t) {
     }
     return true;
   };
-  return controls.stepSolidAlone(x, t, solve);
+  return controls.stepSolidAlone(x, t, always_ ? 0 : kMinimumDofs, solve);
 }
 
 }  // namespace contactlab

@@ -27,7 +27,7 @@ class SolidAlonePredictor {
   // iteration budget (a body held only by contact: the direct solver then meets it). Collective.
   bool step(ContactControls& controls, Vector& x, double t);
 
-  static constexpr long long kMinimumDofs = 20000;
+  static constexpr GO kMinimumDofs = 20000;
   // ||K du + R|| <= kTolerance ||R||.
   static constexpr double kTolerance = 1e-3;
   static constexpr int kMaxIterations = 100;

@@ -88,13 +88,15 @@ class ContactControls {
   // undeformed state): the solid's own Newton step without contact, K du = -R_u with K and R_u
   // the solid's tangent and residual at x's displacements, which moves a pressed body into its
   // obstacle and so predicts the contact zone. Assembles them, asks `solve` for du (false: no
-  // step) and adds du to x's displacements. Returns false, x unchanged, when a point carries a
-  // force, when the solid's part is not a system of its own (inclined symmetry planes reduce
-  // the whole system), when the solid cannot be evaluated at x, or when `solve` fails.
-  // Collective.
+  // step) and adds du to x's displacements. Returns false, x unchanged, before assembling
+  // anything when the solid has fewer than `minimumDofs` displacement dofs, when a point
+  // carries a force or when the solid's part is not a system of its own (inclined symmetry
+  // planes reduce the whole system); after, when the solid cannot be evaluated at x or when
+  // `solve` fails. Collective.
   using SolidSolve = std::function<bool(const Teuchos::RCP<const Matrix>& tangent,
                                         const Vector& rhs, Vector& du, int dofsPerNode)>;
-  virtual bool stepSolidAlone(Vector& /*x*/, double /*t*/, const SolidSolve& /*solve*/) {
+  virtual bool stepSolidAlone(Vector& /*x*/, double /*t*/, GO /*minimumDofs*/,
+                              const SolidSolve& /*solve*/) {
     return false;
   }
 };

@@ -317,7 +317,8 @@ void ContactProblem::setFrictionScale(double scale) {
   kernel_->setFrictionScale(scale);
 }
 
-bool ContactProblem::stepSolidAlone(Vector& x, double t, const SolidSolve& solve) {
+bool ContactProblem::stepSolidAlone(Vector& x, double t, GO minimumDofs, const SolidSolve& solve) {
+  if (solid_.dofs().numGlobalDofs() < minimumDofs) return false;
   // The inclined planes' elimination is applied to the monolithic system (deferred in the
   // solid): the solid's tangent alone is not reduced.
   if (!solid_.symmetry().empty()) return false;

@@ -81,7 +81,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
   void setFrictionScale(double scale) override;
-  bool stepSolidAlone(Vector& x, double t, const SolidSolve& solve) override;
+  bool stepSolidAlone(Vector& x, double t, GO minimumDofs, const SolidSolve& solve) override;
 
   // Checkpoints (ContactProblemHistory.cpp). The history of the converged state x (call after
   // commitState), the same on every rank (collective).

@@ -63,12 +63,12 @@ class Material {
   // symmetric: true of every hyperelastic law and of associative plasticity with its consistent
   // tangent (tests/unit/materials check it); a non-associative law would say false.
   virtual bool symmetricTangent() const { return true; }
-  // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
-  // kernels output it and flag a point plastic when a step increased it.
   // Whether the stress is C strain with C constant and no internal variables (at the reference
   // temperature): a small-strain element's force is then K u with K computed once, which the
   // problem keeps instead of integrating again (Problem::assemble).
   virtual bool linear() const { return false; }
+  // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
+  // kernels output it and flag a point plastic when a step increased it.
   virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }
   // The stress-free temperature of a law that takes a temperature (thermal strain, parameters
   // tabulated in T); empty for a law that ignores MaterialInput::temperature, which a scene
