@@ -2,7 +2,8 @@
 // temperature) keep the stiffness integrated at their first assembly and give the force as
 // K u. The same model with the law flagged non-linear integrates every element at every
 // assembly: both must give the same residual and tangent, whether the first assembly asked for
-// the tangent or not, at a second state after the first (the kept stiffness is used there).
+// the tangent or not, at a second state after the first (where the kept stiffness is used: the
+// linear law is not evaluated there, the other one is).
 // Distorted meshes of every 2D and 3D element type, and axisymmetric rings, on 1 and 2 ranks.
 #include "ProblemTestSupport.hpp"
 
@@ -12,26 +13,31 @@
 namespace contactlab::test {
 namespace {
 
-// LinearElastic, integrated at every assembly.
-class IntegratedEveryTime : public Material {
+// LinearElastic flagged linear or not, counting its evaluations (quadrature points visited), so
+// that the test sees whether the kept stiffness was used, not only that it is right.
+class CountingLaw : public Material {
  public:
-  explicit IntegratedEveryTime(std::shared_ptr<LinearElastic> law) : law_(std::move(law)) {}
-  std::string name() const override { return law_->name(); }
-  Kinematics kinematics() const override { return law_->kinematics(); }
+  explicit CountingLaw(bool linear) : linear_(linear) {}
+  std::string name() const override { return law_.name(); }
+  Kinematics kinematics() const override { return law_.kinematics(); }
+  bool linear() const override { return linear_; }
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override {
-    law_->evaluate(in, out);
+    ++evaluations;
+    law_.evaluate(in, out);
   }
   std::optional<double> referenceTemperature() const override {
-    return law_->referenceTemperature();
+    return law_.referenceTemperature();
   }
+  mutable long evaluations = 0;
 
  private:
-  std::shared_ptr<LinearElastic> law_;
+  LinearElastic law_{210.0, 0.3};
+  bool linear_;
 };
 
 // `name`: an element type, or one followed by " axisymmetric" (the ring kernel, whose radial
 // translation strains the hoop: not in K's null space, unlike the axial one).
-Problem makeProblem(const std::string& name, bool kept) {
+Problem makeProblem(const std::string& name, const std::shared_ptr<CountingLaw>& law) {
   const bool axisymmetric = name.find(" axisymmetric") != std::string::npos;
   const std::string type = name.substr(0, name.find(' '));
   auto mesh = unitMesh(type, 2);
@@ -42,11 +48,7 @@ Problem makeProblem(const std::string& name, bool kept) {
   SolidModel model;
   model.mesh = mesh;
   model.axisymmetric = axisymmetric;
-  auto law = std::make_shared<LinearElastic>(210.0, 0.3);
-  if (kept)
-    model.materials["body"] = law;
-  else
-    model.materials["body"] = std::make_shared<IntegratedEveryTime>(law);
+  model.materials["body"] = law;
   DirichletCondition bc;
   bc.name = bc.group = boundaryGroups(mesh->dim).front();
   for (int c = 0; c < mesh->dim; ++c)
@@ -75,16 +77,21 @@ class LinearElement : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LinearElement, KeptStiffnessGivesTheIntegratedResidualAndTangent) {
   for (const bool tangentFirst : {true, false}) {
-    Problem kept = makeProblem(GetParam(), true);
-    Problem integrated = makeProblem(GetParam(), false);
+    auto keptLaw = std::make_shared<CountingLaw>(true);
+    auto integratedLaw = std::make_shared<CountingLaw>(false);
+    Problem kept = makeProblem(GetParam(), keptLaw);
+    Problem integrated = makeProblem(GetParam(), integratedLaw);
     auto r1 = kept.createVector(), r2 = integrated.createVector();
     auto first = state(kept, 0.01);
     kept.assemble(*first, 0.0, r1.get(), tangentFirst);
     integrated.assemble(*first, 0.0, r2.get(), tangentFirst);
     EXPECT_LE(maxDifference(*r1, *r2), 1e-12 * r2->normInf()) << "first assembly";
+    const long keptBefore = keptLaw->evaluations, integratedBefore = integratedLaw->evaluations;
     auto second = state(kept, 0.03);
     kept.assemble(*second, 0.0, r1.get(), true);
     integrated.assemble(*second, 0.0, r2.get(), true);
+    EXPECT_EQ(keptLaw->evaluations, keptBefore) << "the kept stiffness was integrated again";
+    EXPECT_GT(integratedLaw->evaluations, integratedBefore);
     ASSERT_GT(r2->normInf(), 0.0);
     EXPECT_LE(maxDifference(*r1, *r2), 1e-12 * r2->normInf()) << "second assembly";
     auto k1 = kept.createVector(), k2 = integrated.createVector();
