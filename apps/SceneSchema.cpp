@@ -258,7 +258,8 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   p.set("Discretization", "node-to-segment",
         "Where the contact conditions hold: 'node-to-segment' (at each slave node against the "
         "closest master point) or 'mortar' (weighted over the slave surface by the mortar "
-        "integrals D and M; two bodies only; its geometry is a fixed point, doc/verification.md)",
+        "integrals D and M, each slave facet against the master surface nearest to it that faces "
+        "it; two bodies only; its geometry is a fixed point, doc/verification.md)",
         choices({"node-to-segment", "mortar"}));
   p.set("Multiplier Basis", "dual",
         "mortar: the multiplier basis, 'dual' (biorthogonal to the slave's shape functions, "

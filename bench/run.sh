@@ -3,7 +3,7 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   factorization-reuse, peers) run only
+#   blade-root, factorization-reuse, peers) run only
 #   those tables,
 #   all by default (ironing3d and normal-field write doc/verification.md; peers installs GetFEM
 #   and CalculiX with apt-get when they are missing).
@@ -101,6 +101,16 @@ if want tube-expansion; then
   if [[ $large == 1 ]]; then
     python3 bench/tube_expansion.py "$BUILD/apps/contactlab" "$BUILD/bench-tube-expansion-hex27" \
       --element hex27 --discretization mortar --doc doc/performance.md
+  fi
+fi
+if want blade-root; then
+  # The seed's blade-root table in its shape, PF/NP/NG on the 3D slice: the scene's size (~30 s);
+  # --large adds the seed's 600 000 dofs.
+  python3 bench/blade_root_seed.py "$BUILD/apps/contactlab" "$BUILD/bench-blade-root" \
+    --size default --doc doc/performance.md
+  if [[ $large == 1 ]]; then
+    python3 bench/blade_root_seed.py "$BUILD/apps/contactlab" "$BUILD/bench-blade-root" \
+      --size seed --doc doc/performance.md
   fi
 fi
 if want factorization-reuse; then

@@ -145,7 +145,7 @@ std::map<std::int64_t, MortarDiscretization::Row> MortarDiscretization::rows(
       slaveNormals[a] = normals.at(facetNodes[offset + a]);
     MortarIntegrals in;
     try {
-      in = integrateMortar(f, slaveNormals, masters, basis_, areaWeight_);
+      in = integrateMortar(f, slaveNormals, masters, basis_, areaWeight_, searchDistance_);
     } catch (const std::invalid_argument& e) {
       throw InputError("Contact/" + zoneName_ + ": mortar: " + e.what());
     }

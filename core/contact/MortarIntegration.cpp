@@ -1,6 +1,7 @@
 #include "core/contact/MortarIntegration.hpp"
 
 #include "core/contact/MortarClipping.hpp"
+#include "core/contact/MortarMasterSelection.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
@@ -34,6 +35,20 @@ bool newtonConverged(double step, double previous) {
 // z component of a x b for in-plane vectors.
 double cross2(const double* a, const double* b) {
   return a[0] * b[1] - a[1] * b[0];
+}
+
+// The largest distance between two of the facet's nodes.
+double facetDiameter(const Facet& f) {
+  const std::size_t n = f.coords.size() / 3;
+  double d2 = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) {
+      double s = 0;
+      for (int c = 0; c < 3; ++c)
+        s += std::pow(f.coords[3 * a + c] - f.coords[3 * b + c], 2);
+      d2 = std::max(d2, s);
+    }
+  return std::sqrt(d2);
 }
 
 std::string describe(const Facet& f) {
@@ -216,6 +231,24 @@ void accumulate(int ns, const double* NS, int nm, const double* NM, double dA, d
   }
 }
 
+// One integration point of a master's overlap: D, M, the covered area, and the gap and normal
+// alignment along the slave's unit normal nS (MortarMasterSelection.hpp).
+void accumulate(int ns, const FacetPoint& ps, int nm, const FacetPoint& pm, const double* nS,
+                const double* nM, double dA, MasterOverlap& o) {
+  accumulate(ns, ps.N, nm, pm.N, dA, o.D.data(), o.integrals.M.data());
+  o.area += dA;
+  const double g[3] = {pm.x[0] - ps.x[0], pm.x[1] - ps.x[1], pm.x[2] - ps.x[2]};
+  o.gapMoment += dA * dot3(g, nS);
+  o.alignmentMoment += dA * dot3(nM, nS) / std::sqrt(dot3(nM, nM));
+}
+
+MasterOverlap newOverlap(std::size_t m, int ns, int nm) {
+  MasterOverlap o;
+  o.integrals = MortarMaster{m, std::vector<double>(static_cast<std::size_t>(ns) * nm, 0.0)};
+  o.D.assign(static_cast<std::size_t>(ns) * ns, 0.0);
+  return o;
+}
+
 // ---- 2D: projection along the slave's interpolated nodal normals ----
 
 struct SlaveLine {
@@ -276,7 +309,7 @@ double projectOnMaster(const Facet& master, const ReferenceElement& ref, const d
 
 void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& normals,
                  const std::vector<const Facet*>& masters, const SurfaceWeight& weight,
-                 MortarIntegrals& out) {
+                 double searchDistance, MortarIntegrals& out) {
   const ReferenceElement& sref = ReferenceElement::get(slave.type);
   const int ns = sref.numNodes();
   const SlaveLine line{slave, sref, normals};
@@ -292,6 +325,7 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
       throw std::invalid_argument("mortar integration: the nodal normals of slave " +
                                   describe(slave) + " are tangent to it (or zero)");
   }
+  std::vector<MasterOverlap> overlaps;
   for (std::size_t m = 0; m < masters.size(); ++m) {
     const Facet& master = *masters[m];
     const ReferenceElement& mref = ReferenceElement::get(master.type);
@@ -327,18 +361,22 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     }
     const int degree = 2 * (info(slave.type).order + info(master.type).order) + 2;
     const QuadratureRule& rule = quadratureRule(ElementType::Line2, degree);
-    MortarMaster mm{m, std::vector<double>(static_cast<std::size_t>(ns) * nm, 0.0)};
+    MasterOverlap overlap = newOverlap(m, ns, nm);
     for (int q = 0; q < rule.size(); ++q) {
       FacetPoint ps, pm;
       meetMaster(0.5 * (lo + hi) + 0.5 * (hi - lo) * rule.points[q], ps, pm);
-      double geometric[3];
+      double geometric[3], nM[3], n[3] = {0, 0, 0}, dn[2];
       const double dA = 0.5 * (hi - lo) * rule.weights[q] *
                         areaElement(slave, 2, ps.dN, geometric) * (weight ? weight(ps.x) : 1.0);
-      accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
-      out.coveredArea += dA;
+      line.normalField(ps, n, dn);
+      const double length = std::hypot(n[0], n[1]);
+      n[0] /= length, n[1] /= length;
+      areaElement(master, 2, pm.dN, nM);
+      accumulate(ns, ps, nm, pm, n, nM, dA, overlap);
     }
-    out.masters.push_back(std::move(mm));
+    overlaps.push_back(std::move(overlap));
   }
+  addNearestSurface(overlaps, facetDiameter(slave), searchDistance, out);
 }
 
 // ---- 3D: auxiliary plane ----
@@ -373,7 +411,8 @@ void projectOnPlanePoint(const Facet& f, const ReferenceElement& ref, const Auxi
 }
 
 void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& normals,
-                 const std::vector<const Facet*>& masters, MortarIntegrals& out) {
+                 const std::vector<const Facet*>& masters, double searchDistance,
+                 MortarIntegrals& out) {
   const ReferenceElement& sref = ReferenceElement::get(slave.type);
   const int ns = sref.numNodes();
   AuxiliaryPlane plane;
@@ -404,6 +443,7 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
                                 describe(slave) + " is perpendicular to it (nodal normals " +
                                 "tangent to the facet)");
   const double tolerance = kSliver * std::sqrt(projectedArea);
+  std::vector<MasterOverlap> overlapsFound;
   for (std::size_t m = 0; m < masters.size(); ++m) {
     const Facet& master = *masters[m];
     const ReferenceElement& mref = ReferenceElement::get(master.type);
@@ -411,7 +451,7 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     const int degree = std::max(shapeDegree(slave.type) + shapeDegree(master.type),
                                 2 * info(slave.type).order + 2);
     const QuadratureRule& rule = quadratureRule(ElementType::Tri3, degree);
-    MortarMaster mm{m, std::vector<double>(static_cast<std::size_t>(ns) * nm, 0.0)};
+    MasterOverlap overlap = newOverlap(m, ns, nm);
     bool overlaps = false;
     for (const Polygon2& masterPiece : projectedPolygons(master, plane, minArea))
       for (const Polygon2& slavePiece : slavePieces) {
@@ -432,16 +472,17 @@ void integrate3d(const Facet& slave, const std::vector<std::array<double, 3>>& n
             FacetPoint ps, pm;
             projectOnPlanePoint(slave, sref, plane, x, ps);
             projectOnPlanePoint(master, mref, plane, x, pm);
-            double nS[3];
+            double nS[3], nM[3];
             areaElement(slave, 3, ps.dN, nS);
+            areaElement(master, 3, pm.dN, nM);
             const double dA = rule.weights[q] * twiceArea / std::abs(dot3(nS, plane.n0.data()));
-            accumulate(ns, ps.N, nm, pm.N, dA, out.D.data(), mm.M.data());
-            out.coveredArea += dA;
+            accumulate(ns, ps, nm, pm, plane.n0.data(), nM, dA, overlap);
           }
         }
       }
-    if (overlaps) out.masters.push_back(std::move(mm));
+    if (overlaps) overlapsFound.push_back(std::move(overlap));
   }
+  addNearestSurface(overlapsFound, std::sqrt(out.area), searchDistance, out);
 }
 
 // The standard-basis integrals (D = int N_j N_k, M = int N_j N^M_l) into the basis Phi = B N:
@@ -523,7 +564,7 @@ std::vector<double> dualBasisCoefficients(const Facet& slave) {
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
                                 const std::vector<const Facet*>& masters, MultiplierBasis basis,
-                                const SurfaceWeight& weight) {
+                                const SurfaceWeight& weight, double searchDistance) {
   const int spaceDim = checkFacet(slave);
   if (weight && spaceDim != 2)
     throw std::invalid_argument("mortar integration: a weighted measure is for 2D (line) facets");
@@ -554,9 +595,9 @@ MortarIntegrals integrateMortar(const Facet& slave,
   const std::vector<double> whole =
       dual ? wholeFacetDualBasis(slave, lumped, mass) : std::vector<double>();
   if (spaceDim == 2)
-    integrate2d(slave, slaveNormals, masters, weight, out);
+    integrate2d(slave, slaveNormals, masters, weight, searchDistance, out);
   else
-    integrate3d(slave, slaveNormals, masters, out);
+    integrate3d(slave, slaveNormals, masters, searchDistance, out);
   if (dual && out.coveredArea > 0)
     toDualBasis(whole, multiplierBasisTransform(slave.type), ns, out);
   else if (!dual && hasTransformedBasis(slave.type))

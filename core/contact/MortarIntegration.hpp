@@ -42,6 +42,7 @@
 #include "core/contact/SurfaceWeight.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -66,7 +67,8 @@ struct MortarIntegrals {
 // `slaveNormals`: the unit nodal normals at the slave's nodes (averaged over the facets around
 // each node, as nodalNormals gives them); 2D projects along their interpolation, 3D takes the
 // auxiliary plane's normal from them. Overlaps among the masters are counted twice: the caller
-// passes a non-overlapping master surface.
+// passes a non-overlapping master surface. Of the overlapping masters only those of the surface
+// nearest to the slave, facing it and within `searchDistance` count (MortarMasterSelection.hpp).
 // Throws std::invalid_argument for a facet that is not line2/line3/tri3/tri6/quad4/quad8/quad9,
 // masters of another dimension than the slave, wrong coordinate or normal counts, a degenerate
 // facet (zero length or area), slave normals tangent to the slave (or cancelling), the dual
@@ -81,7 +83,7 @@ struct MortarIntegrals {
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
                                 const std::vector<const Facet*>& masters, MultiplierBasis basis,
-                                const SurfaceWeight& weight = {});
+                                const SurfaceWeight& weight = {}, double searchDistance = HUGE_VAL);
 
 // Coefficients B (row major ns x ns) of the dual basis on `slave`, Phi = B N: B = A T with
 // A = D_e M_e^-1, D_e = diag(int_S T N dA), M_e = int_S T N (T N)^T dA over the whole facet.
