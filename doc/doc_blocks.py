@@ -70,9 +70,15 @@ class Runs:
             entry = self.done.setdefault(key, {"lock": threading.Lock(), "n": len(self.done)})
         with entry["lock"]:  # a second block asking for a run under way waits for it
             if "result" not in entry:
-                out = os.path.join(self.work, "runs", f"{entry['n']:03d}-{scene}-np{ranks}")
-                entry["result"] = self._run(scene, sets, ranks, out)
+                entry["out"] = os.path.join(self.work, "runs",
+                                            f"{entry['n']:03d}-{scene}-np{ranks}")
+                entry["result"] = self._run(scene, sets, ranks, entry["out"])
         return entry["result"]
+
+    def folder(self, scene, sets=(), ranks=None):
+        """The output folder of that run (run first if needed): its other files."""
+        self(scene, sets, ranks)
+        return self.done[(scene, tuple(sets), ranks or self.ranks)]["out"]
 
     def _run(self, scene, sets, ranks, out):
         shutil.rmtree(out, ignore_errors=True)
@@ -297,6 +303,58 @@ def block_cattaneo_mindlin_mortar(runs, figures):
                  out)
 
 
+# ---------------------------------------------------------------- tube joint after each stage
+
+TUBE_STAGES = ((2.0, "expanded and released, 20 °C"), (3.0, "heated to 304 °C"),
+               (4.0, "in operation, 15.5 MPa"))
+
+
+def tube_joint(folder, time):
+    """(axial position, pressure, closed) of the joint's slave nodes at TIME, along the tube."""
+    rows = list(csv.DictReader(open(os.path.join(folder, f"contact_t{time:g}.csv"))))
+    points = sorted((float(r["reference_y"]), float(r["pressure"]), int(r["status"]) != 0)
+                    for r in rows)
+    return points
+
+
+def block_tube_stages(runs, figures):
+    """The seed's chain, axisymmetric: the joint's contact pressure along the expanded length
+    after each stage (Output/Contact Times), a row per stage and the figure."""
+    scene = "tube-expansion-thermal-axisymmetric"
+    folder = runs.folder(scene)
+    out = []
+    for time, stage in TUBE_STAGES:
+        points = tube_joint(folder, time)
+        closed = [(z, p) for z, p, c in points if c]
+        out.append([stage, num(time, 2), f"{len(closed)} of {len(points)}",
+                    f"{num(min(z for z, _ in closed), 3)} to {num(max(z for z, _ in closed), 3)}",
+                    num(sum(p for _, p in closed) / len(closed)), num(max(p for _, p in closed))])
+    plot_tube_stages(folder, os.path.join(figures, "tube-stages-pressure.png"))
+    return table(["stage", "t", "closed nodes", "closed over z (mm)", "mean pressure (MPa)",
+                  "max pressure (MPa)"], out) + \
+        "\n![Joint pressure after each stage](figures/tube-stages-pressure.png)\n"
+
+
+def plot_tube_stages(folder, path):
+    """The nodal contact pressure along the tube after each stage; open nodes hollow at 0."""
+    from matplotlib.figure import Figure
+    fig = Figure(figsize=(6.4, 4.0))
+    ax = fig.subplots()
+    for (time, stage), colour in zip(TUBE_STAGES, ("C0", "C1", "C3")):
+        points = tube_joint(folder, time)
+        ax.plot([z for z, _, _ in points], [p for _, p, _ in points], "-", color=colour, lw=0.8,
+                label=f"t = {time:g}: {stage}")
+        ax.plot([z for z, _, c in points if not c], [0.0 for _, _, c in points if not c], "o",
+                color=colour, mfc="none", ms=4)
+    ax.set_xlabel("axial position z (mm)")
+    ax.set_ylabel("contact pressure (MPa)")
+    ax.set_title("Tube-to-tubesheet joint (axisymmetric, mortar): after each stage")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 # ---------------------------------------------------------------- 1 rank against 2
 
 def block_ranks_agree(runs, figures):
@@ -386,6 +444,8 @@ BLOCKS = {
     "cattaneo-mindlin": ("verification.md", block_cattaneo_mindlin, "`cattaneo-mindlin-2d`"),
     "cattaneo-mindlin-mortar": ("verification.md", block_cattaneo_mindlin_mortar,
                                 "`cattaneo-mindlin-2d`, node-to-segment and mortar"),
+    "tube-stages": ("verification.md", block_tube_stages,
+                    "`tube-expansion-thermal-axisymmetric`; figures/tube-stages-pressure.png"),
     "ranks-agree": ("verification.md", block_ranks_agree,
                     "`hertz-2d-two-body`, `sliding-block-2d`, `hertz-3d` on 1 and 2 ranks"),
     "quick-comparison": ("studies.md", block_quick_comparison,
