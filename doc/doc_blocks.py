@@ -312,9 +312,8 @@ TUBE_STAGES = ((2.0, "expanded and released, 20 °C"), (3.0, "heated to 304 °C"
 def tube_joint(folder, time):
     """(axial position, pressure, closed) of the joint's slave nodes at TIME, along the tube."""
     rows = list(csv.DictReader(open(os.path.join(folder, f"contact_t{time:g}.csv"))))
-    points = sorted((float(r["reference_y"]), float(r["pressure"]), int(r["status"]) != 0)
-                    for r in rows)
-    return points
+    return sorted((float(r["reference_y"]), float(r["pressure"]), int(r["status"]) != 0)
+                  for r in rows)
 
 
 def block_tube_stages(runs, figures):
@@ -322,26 +321,28 @@ def block_tube_stages(runs, figures):
     after each stage (Output/Contact Times), a row per stage and the figure."""
     scene = "tube-expansion-thermal-axisymmetric"
     folder = runs.folder(scene)
+    joints = {time: tube_joint(folder, time) for time, _ in TUBE_STAGES}
     out = []
     for time, stage in TUBE_STAGES:
-        points = tube_joint(folder, time)
+        points = joints[time]
         closed = [(z, p) for z, p, c in points if c]
         out.append([stage, num(time, 2), f"{len(closed)} of {len(points)}",
                     f"{num(min(z for z, _ in closed), 3)} to {num(max(z for z, _ in closed), 3)}",
                     num(sum(p for _, p in closed) / len(closed)), num(max(p for _, p in closed))])
-    plot_tube_stages(folder, os.path.join(figures, "tube-stages-pressure.png"))
+    plot_tube_stages(joints, os.path.join(figures, "tube-stages-pressure.png"))
     return table(["stage", "t", "closed nodes", "closed over z (mm)", "mean pressure (MPa)",
                   "max pressure (MPa)"], out) + \
         "\n![Joint pressure after each stage](figures/tube-stages-pressure.png)\n"
 
 
-def plot_tube_stages(folder, path):
-    """The nodal contact pressure along the tube after each stage; open nodes hollow at 0."""
+def plot_tube_stages(joints, path):
+    """The nodal contact pressure along the tube after each stage (tube_joint's points by
+    time); open nodes hollow at 0."""
     from matplotlib.figure import Figure
     fig = Figure(figsize=(6.4, 4.0))
     ax = fig.subplots()
     for (time, stage), colour in zip(TUBE_STAGES, ("C0", "C1", "C3")):
-        points = tube_joint(folder, time)
+        points = joints[time]
         ax.plot([z for z, _, _ in points], [p for _, p, _ in points], "-", color=colour, lw=0.8,
                 label=f"t = {time:g}: {stage}")
         ax.plot([z for z, _, c in points if not c], [0.0 for _, _, c in points if not c], "o",

@@ -376,6 +376,8 @@ void integrate2d(const Facet& slave, const std::vector<std::array<double, 3>>& n
     }
     overlaps.push_back(std::move(overlap));
   }
+  // The size is the segment's length (its area is weighted by 2 pi r on rings); 3D takes the
+  // square root of the area, which keeps an elongated facet's size near its short side.
   addNearestSurface(overlaps, facetDiameter(slave), searchDistance, out);
 }
 
