@@ -88,6 +88,25 @@ TEST(PrescribedSlip, TwoDimensionsOnASymmetryAxis) {
   EXPECT_EQ(prescribedSlip({0, 1, 1, 0}, 1, 2, {1, 0}, {}, {{1.0, 0.0}}).prescribed, 1);
 }
 
+// The axisymmetric tube expansion's first slave node with friction: tube and tubesheet both held
+// axially at the joint's end, so the slave node and the master node facing it are fixed along
+// the tangent (y). Once the tube has expanded, the node's mortar row also reaches two free
+// master nodes of the next facet, with coefficients 1.5e-5 and 3.1e-5 (measured). That free
+// part, 2.4e-5 of the operator, cannot carry the multiplier: kept, it took 8e7 at the next
+// Newton iterate and the step failed at every cut (doc/verification.md, "Tube expansion").
+TEST(PrescribedSlip, AMortarRowThatBarelyReachesFreeNodesIsPrescribed) {
+  // dofs (r, y) of the slave node, the held master node, two free master nodes; 2D: (gap, slip).
+  const std::vector<double> B{1,         0,         -1,         0,       -1e-6,     0,
+                              -2e-6,     0,         2.269e-6,   -1.0,    -2.269e-6, 1.0,
+                              3.471e-11, -1.530e-5, -6.943e-11, 3.059e-5};
+  const std::vector<char> free{1, 0, 1, 0, 1, 1, 1, 1};
+  EXPECT_EQ(prescribedSlip(B, 1, 8, free).prescribed, 1);
+  // A free part of 0.5 % of the operator still carries friction.
+  std::vector<double> reaching = B;
+  reaching[8 + 7] = 5e-3;
+  EXPECT_EQ(prescribedSlip(reaching, 1, 8, free).prescribed, 0);
+}
+
 TEST(PrescribedSlip, TheDroppedMultiplierIsZeroAndTheOtherRowIsKept) {
   // A law of size 6 (g, v1, v2, p, L1, L2) with arbitrary rows for L1, L2.
   LawOutput out;
