@@ -28,6 +28,10 @@ void CyclingDetector::reset() {
   histories_.clear();
 }
 
+void CyclingDetector::forget(std::size_t point) {
+  if (point < histories_.size()) histories_[point] = History{};
+}
+
 std::vector<CyclingEvent> CyclingDetector::observe(const std::vector<ContactPointState>& states) {
   if (histories_.size() != states.size()) histories_.assign(states.size(), History{});
   std::vector<CyclingEvent> events;

@@ -45,6 +45,9 @@ class CyclingDetector {
   // Feeds the states of one evaluation; returns the points that started cycling with it (a
   // point is reported again only after its history changed by a new state).
   std::vector<CyclingEvent> observe(const std::vector<ContactPointState>& states);
+  // Forgets one point's history: a treatment forced its status, and the change the forcing
+  // makes is not a cycle of the point's own.
+  void forget(std::size_t point);
 
  private:
   struct Entry {

@@ -275,6 +275,7 @@ void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
                          : e.kind == CyclingKind::SlipReversal ? 1
                                                                : kForcedClosed;
       controls_->forceStatus(e.point, status);
+      detector_.forget(e.point);
     } else {
       controls_->scaleCoefficients(e.point, 10.0);
     }

@@ -89,6 +89,44 @@ TEST(CyclingDetector, ResetForgetsTheHistory) {
   EXPECT_TRUE(detector.observe({state(3, -0.1)}).empty());
 }
 
+// The friction cycle the forced treatment made of its own decisions (the axisymmetric tube with
+// friction under the fixed point): stick-slip forces slip, the forced slip reverses twice and
+// is forced to stick, and that stick, read as a fourth alternation of the point's history,
+// forced slip again, every fourth Newton iterate until max-iterations. The treatment forgets a
+// point's history when it forces it (StaticSolver::treatCycling).
+TEST(CyclingDetector, AForcedStatusStartsTheHistoryOver) {
+  auto slip = [](double direction) {
+    ContactPointState s = state(3, 0, 2);
+    s.traction = {direction, 0, 0};
+    return s;
+  };
+  const auto stickSlipThenReversal = [&](bool forget) {
+    CyclingDetector detector;
+    std::vector<CyclingKind> kinds;
+    const auto observe = [&](const ContactPointState& s) {
+      for (const auto& e : detector.observe({s})) {
+        kinds.push_back(e.kind);
+        if (forget) detector.forget(e.point);
+      }
+    };
+    for (const auto& s : {state(3, 0, 1), slip(1), state(3, 0, 1), slip(1)})
+      observe(s);  // stick-slip: forced to slip
+    for (const auto& s : {slip(-1), slip(1), slip(-1)})
+      observe(s);  // the forced slip reverses twice: forced to stick
+    observe(state(3, 0, 1));
+    observe(state(3, 0, 1));
+    return kinds;
+  };
+  const auto treated = stickSlipThenReversal(true);
+  ASSERT_EQ(treated.size(), 2u);
+  EXPECT_EQ(treated[0], CyclingKind::StickSlip);
+  EXPECT_EQ(treated[1], CyclingKind::SlipReversal);
+  // Without forgetting, the forced stick is one more stick-slip alternation.
+  const auto remembered = stickSlipThenReversal(false);
+  ASSERT_EQ(remembered.size(), 3u);
+  EXPECT_EQ(remembered[2], CyclingKind::StickSlip);
+}
+
 TEST(CyclingDetector, KindNamesAreDistinct) {
   for (int a = 0; a < kCyclingKinds; ++a)
     for (int b = a + 1; b < kCyclingKinds; ++b)
