@@ -57,7 +57,7 @@ class FixedPointLoop {
   int updates() const { return updates_; }
   int maxUpdates() const { return maxUpdates_; }
   const std::string& failure() const { return identity_.failure; }
-  std::string failureMessage() const {
+  virtual std::string failureMessage() const {
     return identity_.capBefore + std::to_string(updates_) + identity_.capAfter;
   }
   void recordUpdate(StepReport& report) {

@@ -8,6 +8,9 @@
 #include "algorithms/FixedPointLoop.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 
+#include <string>
+#include <vector>
+
 namespace contactlab {
 
 class GeometryLoop : public FixedPointLoop {
@@ -28,10 +31,17 @@ class GeometryLoop : public FixedPointLoop {
   bool renewsInnerCaps() const override { return true; }
   MovedStateTest testMovedState(const Vector& x, double t, double reference,
                                 Vector& residual) override;
+  // At the cap, says whether the residual at the updated geometry had stopped falling, and
+  // which Geometry Tolerance would have accepted it.
+  std::string failureMessage() const override;
+
+ protected:
+  void release() override { relativeResiduals_.clear(); }
 
  private:
   NonlinearSystem& system_;
   double tolerance_, absoluteTolerance_;
+  std::vector<double> relativeResiduals_;  // each moved-state test this step, / the reference
 };
 
 }  // namespace contactlab
