@@ -65,7 +65,7 @@ class Runs:
         """(summary, contact.csv rows, return code) of SCENE (a name in scenes/) with SETS, on
         RANKS ranks (default the --ranks given)."""
         ranks = ranks or self.ranks
-        key = (scene, tuple(sets), ranks)
+        key = self._key(scene, sets, ranks)
         with self.lock:
             entry = self.done.setdefault(key, {"lock": threading.Lock(), "n": len(self.done)})
         with entry["lock"]:  # a second block asking for a run under way waits for it
@@ -78,7 +78,10 @@ class Runs:
     def folder(self, scene, sets=(), ranks=None):
         """The output folder of that run (run first if needed): its other files."""
         self(scene, sets, ranks)
-        return self.done[(scene, tuple(sets), ranks or self.ranks)]["out"]
+        return self.done[self._key(scene, sets, ranks)]["out"]
+
+    def _key(self, scene, sets, ranks):
+        return (scene, tuple(sets), ranks or self.ranks)
 
     def _run(self, scene, sets, ranks, out):
         shutil.rmtree(out, ignore_errors=True)

@@ -5,11 +5,11 @@
 // no free row: the stick law's row (Lambda - Lambda^ = -r_t v) is zero there and the tangent is
 // singular, with every algorithm. code_aster asks the user to list such nodes (SANS_GROUP_NO_FR);
 // here they are found from B: the directions q of the tangent plane with B_q = sum_k q_k B_k = 0 on
-// the free dofs, or below 0.1 % of B_q (a mortar row that reaches a free node by a sliver cannot
-// hold a multiplier either). Their multiplier component q . Lambda is dropped (set to 0 by its own
-// row): the force along q is the support's, and the friction law acts on the free directions. The
-// other rows are rotated with the same orthonormal basis (an invertible recombination of the
-// equations, so the free direction's law is unchanged).
+// the free dofs, or below 0.1 % of the slip operator there (a mortar row that reaches a free node
+// by a sliver cannot hold a multiplier either). Their multiplier component q . Lambda is dropped
+// (set to 0 by its own row): the force along q is the support's, and the friction law acts on the
+// free directions. The other rows are rotated with the same orthonormal basis (an invertible
+// recombination of the equations, so the free direction's law is unchanged).
 //
 // A slave node on a symmetry plane drops the friction along the plane's normal too, whatever B
 // says: the tangential traction across a symmetry plane is zero by symmetry. B alone misses it
