@@ -16,7 +16,12 @@ RunReport runStatic(NonlinearSystem& system, ContactControls* controls, LinearSo
     newton = std::make_unique<NoxNewton>(system, solver, controls, options.lineSearch, options.nox);
   else
     newton = std::make_unique<PlainNewton>(system, solver, controls);
-  return StaticSolver(system, controls, *newton, options, &solver)
+  // The failed step's second try (Newton/Line Search Retry): NOX with Backtrack, the NOX
+  // pass-through parameters too; none when the first try already searches along its steps.
+  std::unique_ptr<NewtonMethod> retry;
+  if (options.lineSearch == "Full Step")
+    retry = std::make_unique<NoxNewton>(system, solver, controls, "Backtrack", options.nox);
+  return StaticSolver(system, controls, *newton, options, &solver, retry.get())
       .run(u, onStep, onIteration, start);
 }
 

@@ -50,7 +50,10 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validLoadSteps()
          "A step that fails is cut in two and retried, up to this many times in a row (>= 0; "
          "0: a failed step ends the run). After a step converges without a cut the step "
          "doubles again, up to End Time / Steps. No step is cut below End Time / Steps / "
-         "2^Max Cuts: a run whose every step needs a cut ends there (step-too-small)");
+         "2^Max Cuts: a run whose every step needs a cut ends there (step-too-small). Cut or "
+         "not, a step ends on every multiple of End Time / Steps, kink of a load function "
+         "(a ramp's start and stop, a table's times) and Output/Contact Times entry it would "
+         "pass");
   return p;
 }
 
@@ -72,6 +75,16 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          choices({"plain", "nox"}));
   p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
          choices({"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}));
+  p->set("Line Search Retry", "last-resort",
+         "A load step whose Newton failed is solved again from the step's start by NOX's "
+         "line-search based solver with the Backtrack line search (the Newton step halved until "
+         "||R|| decreases): 'last-resort' when the step cannot be cut any more (Max Cuts or the "
+         "smallest step), before the run fails; 'every-failure' before each cut too; 'never'. "
+         "Full steps stay the first try: a contact Newton often converges through iterates "
+         "whose ||R|| grows, and backtracking every step costs more iterations on most scenes "
+         "(doc/algorithms.md \"Line search as a last resort\"). Not with Driver: nox and a line "
+         "search already",
+         choices({"last-resort", "every-failure", "never"}));
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
@@ -177,6 +190,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.geometryTolerance = newton.get<double>("Geometry Tolerance");
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
+  o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   o.predictor = newton.get<std::string>("Predictor");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
@@ -234,16 +248,19 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
 StaticSolver::~StaticSolver() = default;
 
 StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
-                           NewtonMethod& newton, StaticSolverOptions options, LinearSolver* solver)
+                           NewtonMethod& newton, StaticSolverOptions options, LinearSolver* solver,
+                           NewtonMethod* retry)
     : problem_(problem),
       controls_(controls),
       newton_(newton),
+      retry_(retry),
       options_(std::move(options)),
       solver_(solver),
       detector_(options_.grazingTolerance),
       loops_(composeLoops(options_, problem, controls)),
       slowDynamics_(options_.slowDynamics) {
   slowDynamics_.requireMass(problem_);
+  if (options_.lineSearchRetry == "never") retry_ = nullptr;
   if (controls_)
     controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
                                                            : GeometricTerms::none);
@@ -377,8 +394,8 @@ bool StaticSolver::stepSolidAlone(Vector& x, double t, StepReport& sr) {
   return moved;
 }
 
-bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
-                             const IterationCallback& onIteration) {
+bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, StepReport& sr,
+                             RunReport& report, const IterationCallback& onIteration) {
   const double t = sr.time;
   x.assign(u);
   problem_.applyDirichlet(t, x);
@@ -454,7 +471,7 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
   for (;;) {
-    const NewtonOutcome outcome = newton_.solve(x, request, observer);
+    const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;
     sr.iterations += outcome.iterations;
     sr.residual = outcome.residual;
@@ -495,6 +512,45 @@ bool StaticSolver::solveStep(const Vector& u, Vector& x, StepReport& sr, RunRepo
   }
 }
 
+namespace {
+// Whether a step failed because its iterates did not settle, which a line search may change;
+// not a singular tangent or an iterate the solid or the pairing cannot evaluate (a
+// backtracking search takes a non-finite ||R|| as a decrease).
+bool iteratesFailedToConverge(const std::string& failure) {
+  for (const char* name :
+       {"max-iterations", "diverged", "degraded-contact", "statuses-not-converged",
+        "thresholds-not-converged", "geometry-not-converged"})
+    if (failure == name) return true;
+  return false;
+}
+
+// A step attempt's counts into the run's, converged or not.
+void account(const StepReport& sr, RunReport& report) {
+  report.iterations += sr.iterations;
+  report.statusIterations += sr.statusIterations;
+  report.thresholdIterations += sr.thresholdIterations;
+  report.geometryIterations += sr.geometryIterations;
+  for (int k = 0; k < kCyclingKinds; ++k)
+    report.cycling[k] += sr.cycling[k];
+  report.seconds.assembly += sr.seconds.assembly;
+  report.seconds.linearSolve += sr.seconds.linearSolve;
+}
+}  // namespace
+
+double StaticSolver::stepEnd(double t, double dt) const {
+  // The next nominal time k End Time / Steps after t, and the first landing time before it:
+  // after cuts and regrowth the steps drift off the nominal grid, and a step from t = 0.9375
+  // to 1.1875 passed the peak of the hex27 tube's load table at t = 1 (Backtrack run: 297 N of
+  // residual contact force where the steps that land on t = 1 give 358 N).
+  const double nominal = options_.endTime / options_.steps;
+  const double margin = 1e-9 * nominal;
+  double stop = (std::floor(t / nominal + 1e-9) + 1) * nominal;
+  if (stop > options_.endTime - margin) stop = options_.endTime;  // no sliver of a last step
+  for (double landing : options_.landingTimes)
+    if (landing > t + margin && landing < stop - margin) stop = landing;
+  return t + dt > stop - margin ? stop : t + dt;
+}
+
 RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                             const IterationCallback& onIteration, const RunStart& start) {
   RunReport report;
@@ -517,11 +573,36 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     StepReport sr;
     sr.step = start.step + report.steps + 1;
     sr.cuts = cuts;
-    // Land exactly on End Time (no sliver of a last step).
-    sr.time = (options_.endTime - (t + dt) < 1e-9 * nominal) ? options_.endTime : t + dt;
+    sr.time = stepEnd(t, dt);
+    const double h = sr.time - t;  // dt, or less where the step lands on a time it must not pass
+    // The floor: a run whose every step converges only after a cut would otherwise halve dt
+    // without end and creep towards a time it never reaches (measured: the elasto-plastic
+    // 3D ironing, 1e-5 steps at t = 0.8124 after an hour).
+    const bool atFloor = h / 2 < smallest * (1 - 1e-9);
+    const bool lastTry = cuts == options_.maxCuts || atFloor;
     bool ok = false;
     try {
-      ok = solveStep(u, *x, sr, report, onIteration);
+      ok = solveStep(newton_, u, *x, sr, report, onIteration);
+      // A contact Newton that failed with full steps (cycling statuses, overshooting iterates)
+      // often converges at the same increment when each step must decrease ||R||: the
+      // frictional hex27 tube's unloading failed down to the smallest step and converges in 9
+      // iterations so (doc/algorithms.md "Line search as a last resort").
+      if (!ok && retry_ && (lastTry || options_.lineSearchRetry == "every-failure") &&
+          iteratesFailedToConverge(report.failure)) {
+        // A failed retry reports the method's own failure (the one a table of methods
+        // compares), the retry's in its message.
+        const std::string failure = report.failure, message = report.message;
+        ++report.lineSearchRetries;
+        ok = solveStep(*retry_, u, *x, sr, report, onIteration);  // sr counts both attempts
+        if (ok) {
+          report.failure.clear();
+          report.message.clear();
+        } else {
+          report.message = message + "; solved again with the Backtrack line search: " +
+                           report.failure + ": " + report.message;
+          report.failure = failure;
+        }
+      }
     } catch (const Interrupted& i) {
       // The last converged step stays the result; the summary says why the run stopped.
       report.failure = "interrupted";
@@ -533,20 +614,9 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       report.iterations += sr.iterations;
       return report;
     }
-    report.iterations += sr.iterations;
-    report.statusIterations += sr.statusIterations;
-    report.thresholdIterations += sr.thresholdIterations;
-    report.geometryIterations += sr.geometryIterations;
-    for (int k = 0; k < kCyclingKinds; ++k)
-      report.cycling[k] += sr.cycling[k];
-    report.seconds.assembly += sr.seconds.assembly;
-    report.seconds.linearSolve += sr.seconds.linearSolve;
+    account(sr, report);
     if (!ok) {
-      // The floor: a run whose every step converges only after a cut would otherwise halve dt
-      // without end and creep towards a time it never reaches (measured: the elasto-plastic
-      // 3D ironing, 1e-5 steps at t = 0.8124 after an hour).
-      const bool atFloor = dt / 2 < smallest * (1 - 1e-9);
-      if (cuts == options_.maxCuts || atFloor) {
+      if (lastTry) {
         if (options_.maxCuts > 0) {
           report.failure = "step-too-small";
           report.message =
@@ -560,7 +630,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       }
       ++cuts;
       ++report.cuts;
-      dt /= 2;
+      dt = h / 2;
       report.failure.clear();
       report.message.clear();
       continue;

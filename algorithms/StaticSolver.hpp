@@ -15,7 +15,10 @@
 // Every Newton iterate feeds the cycling detector; the treatment (none, automatic, forced)
 // acts on the cycling points for the rest of the step. A failed step is cut in two, up to
 // Max Cuts times and never below End Time / Steps / 2^Max Cuts; steps that converge without a
-// cut let the step grow back.
+// cut let the step grow back. Steps never pass a nominal time k End Time / Steps or a landing
+// time (a load function's kink): cuts and regrowth would otherwise step over the peak of a
+// load table. A step that cannot be cut any more is solved once more by a
+// backtracking line-search Newton before the run fails (Newton/Line Search Retry).
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
@@ -41,6 +44,9 @@ struct StaticSolverOptions {
   int steps = 1;
   double endTime = 1.0;
   int maxCuts = 0;  // bisections of a failed step (0: a failed step ends the run)
+  // Load times a step must end on, besides the nominal ones k End Time / Steps: the kinks of
+  // the load functions, output times (in any order; those outside (0, End Time) are ignored).
+  std::vector<double> landingTimes;
   int maxIterations = 20;
   double relativeTolerance = 1e-8;
   double absoluteTolerance = 1e-12;
@@ -49,6 +55,10 @@ struct StaticSolverOptions {
   std::string driver = "plain";          // "plain" (PlainNewton) or "nox" (NoxNewton)
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
   Teuchos::ParameterList nox;            // passed through to NOX
+  // When a failed step is solved again by the line-search retry Newton (StaticSolver's
+  // constructor): "last-resort" (instead of failing the run), "every-failure" (before each
+  // cut), "never".
+  std::string lineSearchRetry = "last-resort";
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";
@@ -93,16 +103,19 @@ struct RunReport {
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
   int cuts = 0;
+  int lineSearchRetries =
+      0;  // failed steps solved again by the line-search Newton (converged or not)
   CyclingCounts cycling{};
   PhaseSeconds seconds;
 
   // The counts as a step's run totals, and the counts a continued run starts from.
   RunTotals totals() const {
-    return {iterations,          linearSolves,       cuts,   statusIterations,
+    return {iterations,          linearSolves,       cuts,   lineSearchRetries, statusIterations,
             thresholdIterations, geometryIterations, cycling};
   }
   void startFrom(const RunTotals& t) {
     iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
+    lineSearchRetries = t.lineSearchRetries;
     statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
     geometryIterations = t.geometryIterations, cycling = t.cycling;
   }
@@ -128,8 +141,11 @@ class StaticSolver {
 
   // `controls` is the system's contact seam, or null for a system without contact. `solver`
   // solves the tangent predictor's system (null: no predictor, whatever the options say).
+  // `retry`, when given, solves a failed step again from its start (a line-search Newton) as
+  // options.lineSearchRetry says.
   StaticSolver(NonlinearSystem& problem, ContactControls* controls, NewtonMethod& newton,
-               StaticSolverOptions options, LinearSolver* solver = nullptr);
+               StaticSolverOptions options, LinearSolver* solver = nullptr,
+               NewtonMethod* retry = nullptr);
   ~StaticSolver();
 
   // Starts from u (the initial state, usually zero). After each converged step, u holds the
@@ -140,8 +156,11 @@ class StaticSolver {
 
  private:
   // One attempt at the step to time t from the converged state u; x holds the result.
-  bool solveStep(const Vector& u, Vector& x, StepReport& sr, RunReport& report,
-                 const IterationCallback& onIteration);
+  bool solveStep(NewtonMethod& newton, const Vector& u, Vector& x, StepReport& sr,
+                 RunReport& report, const IterationCallback& onIteration);
+  // The end of a step of size dt from t: t + dt, or the first nominal or landing time after t
+  // when t + dt would pass it.
+  double stepEnd(double t, double dt) const;
   // The tangent predictor from the converged state u to the step's time, when the prescribed
   // values moved: x (u with the new prescribed values on entry) becomes u + du with
   // K(u) du = -R(u, t) - K(u)_{.D} du_D.
@@ -162,6 +181,7 @@ class StaticSolver {
   NonlinearSystem& problem_;
   ContactControls* controls_;
   NewtonMethod& newton_;
+  NewtonMethod* retry_;
   const StaticSolverOptions options_;
   LinearSolver* solver_;
   std::unique_ptr<SolidAlonePredictor> solidAlone_;  // built at its first use

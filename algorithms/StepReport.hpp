@@ -17,6 +17,7 @@ using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind
 // restarted run's summary counts the whole run.
 struct RunTotals {
   int iterations = 0, linearSolves = 0, cuts = 0;
+  int lineSearchRetries = 0;  // failed steps solved again by the line-search Newton
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   CyclingCounts cycling{};
 };

@@ -70,6 +70,10 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   run.iterations = static_cast<int>(file.integerAttribute("newton_iterations"));
   run.linearSolves = static_cast<int>(file.integerAttribute("linear_solves"));
   run.cuts = static_cast<int>(file.integerAttribute("cuts"));
+  try {  // absent from checkpoints written before Newton/Line Search Retry
+    run.lineSearchRetries = static_cast<int>(file.integerAttribute("line_search_retries"));
+  } catch (const InputError&) {
+  }
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
   run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
   run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));
@@ -147,6 +151,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("newton_iterations", static_cast<std::int64_t>(run.iterations));
     file.writeAttribute("linear_solves", static_cast<std::int64_t>(run.linearSolves));
     file.writeAttribute("cuts", static_cast<std::int64_t>(run.cuts));
+    file.writeAttribute("line_search_retries", static_cast<std::int64_t>(run.lineSearchRetries));
     file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));
     file.writeAttribute("threshold_iterations", static_cast<std::int64_t>(run.thresholdIterations));
     file.writeAttribute("geometry_iterations", static_cast<std::int64_t>(run.geometryIterations));

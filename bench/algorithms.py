@@ -38,8 +38,11 @@ for label, scene, sets, what in cases:
             for treatment in treatments:
                 name = f"{label}-{what}-{method}-{driver}-{search}-{treatment}"
                 out = os.path.join(work, re.sub(r"[^A-Za-z0-9.-]+", "_", name))
+                # Each Newton alone: without the default retry of a failed last step with
+                # Backtrack (doc/algorithms.md "Line search as a last resort").
                 options = [f"Algorithm/Method={method}",
-                           f"Algorithm/Cycling Treatment={treatment}", f"Newton/Driver={driver}"]
+                           f"Algorithm/Cycling Treatment={treatment}", f"Newton/Driver={driver}",
+                           "Newton/Line Search Retry=never"]
                 if search:
                     options.append(f"Newton/Line Search={search}")
                 s, wall, _ = runs.run(exe, "run", os.path.join(scenes, scene + ".yaml"), out,

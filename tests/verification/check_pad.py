@@ -11,8 +11,10 @@ predictor on the drag steps, doc/algorithms.md "Predictor": their forced state v
 law at two points by far more than the tolerance, Newton from it cycles again, and the run says so
 instead of reporting it converged; checked with Newton/Predictor none). Step cutting saves the
 untreated generalized Newton, and 'automatic' saves Lagrange's Newton presets too (its cycling
-points forced). Every run that converges ends in the same state (normal and
-tangential force within 1e-6)."""
+points forced). These runs assess the treatments alone: Newton/Line Search Retry is 'never'.
+With the default retry (the failed last step solved again by a Backtrack line search), the two
+Newton presets converge without treatment. Every run that converges ends in the same state
+(normal and tangential force within 1e-6)."""
 import os, sys
 
 exe, scene, work, mu = sys.argv[1:5]
@@ -24,9 +26,10 @@ checklist = Checklist()
 check, failures = checklist.check, checklist.failures
 
 
-def run(name, *sets):
+def run(name, *sets, retry="never"):
     summary, r = fresh_run(exe, scene, os.path.join(work, name),
-                           [f"Contact/floor/Friction={mu}", *sets])
+                           [f"Contact/floor/Friction={mu}", f"Newton/Line Search Retry={retry}",
+                            *sets])
     if summary is None:
         sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
     return summary
@@ -62,6 +65,17 @@ check(f"mu={mu} generalized-newton none with step cutting: {s['failure'] or 'con
       f"{s['load_steps']['cuts']} cuts", s["converged"] and s["load_steps"]["cuts"] > 0)
 if s["converged"]:
     converged["generalized-newton none, cuts"] = s
+
+# The default line-search retry rescues the untreated Newton presets (the retry solves the step
+# that failed with full steps again, from its start).
+for method in ["generalized-newton", "partial-newton"]:
+    s = run(f"{method}-none-retry", f"Algorithm/Method={method}",
+            "Algorithm/Cycling Treatment=none", retry="last-resort")
+    check(f"mu={mu} {method} none with the line-search retry: {s['failure'] or 'converged'}, "
+          f"{s['load_steps']['line_search_retries']} retries",
+          s["converged"] and s["load_steps"]["line_search_retries"] > 0)
+    if s["converged"]:
+        converged[f"{method} none, line-search retry"] = s
 
 # Lagrange, its constants the scene's augmentations (c_n = 20, c_t = 100): they only pick the
 # status, so 'automatic' forces its cycling points instead of scaling them (before, both Newton

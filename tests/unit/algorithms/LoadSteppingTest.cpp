@@ -1,0 +1,167 @@
+// StaticSolver's load stepping around a failing Newton. The line-search retry (Newton/Line
+// Search Retry): a step whose Newton failed with full steps is solved again from the step's
+// start by the retry Newton, at the last try ('last-resort') or before every cut
+// ('every-failure'); never for a failure a line search cannot change (a singular tangent).
+// Landing: whatever cuts did to the step size, a step ends on every nominal time k End Time /
+// Steps and every landing time (a load table's kink) it would pass. A one-unknown system
+// R(x) = x - t; the scripted Newtons either fail with a given reason or put x at the root.
+#include "algorithms/StaticSolver.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace contactlab {
+namespace {
+
+class RootAtTimeSystem : public NonlinearSystem {
+ public:
+  RootAtTimeSystem() : map_(Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()))) {}
+  Teuchos::RCP<Vector> createVector() const override { return Teuchos::rcp(new Vector(map_)); }
+  void applyDirichlet(double, Vector&) const override {}
+  void assemble(const Vector& x, double t, Vector* residual, bool) override {
+    if (residual) residual->getDataNonConst(0)[0] = x.getData(0)[0] - t;
+  }
+  const Teuchos::RCP<Matrix>& tangent() const override { return tangent_; }
+  void commitState(const Vector&, double) override {}
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<Matrix> tangent_;
+};
+
+// Fails with `failure` (three iterations), or solves in one when `failure` is empty.
+// With `failAt`, fails only at the first solve of each of those times.
+class ScriptedNewton : public NewtonMethod {
+ public:
+  explicit ScriptedNewton(std::string failure, std::vector<double> failAt = {})
+      : failure_(std::move(failure)), failAt_(std::move(failAt)), always_(failAt_.empty()) {}
+  int solves = 0;
+  std::vector<double> times;  // of the solves
+  NewtonOutcome solve(Vector& x, const NewtonRequest& request, const Observer&) override {
+    ++solves;
+    times.push_back(request.time);
+    NewtonOutcome out;
+    const auto at = std::find(failAt_.begin(), failAt_.end(), request.time);
+    const bool succeed = failure_.empty() || (!always_ && at == failAt_.end());
+    if (at != failAt_.end()) failAt_.erase(at);
+    if (succeed) {
+      x.putScalar(request.time);
+      out.iterations = 1;
+      return out;
+    }
+    out.iterations = 3;
+    out.failure = failure_;
+    out.message = "scripted " + failure_;
+    return out;
+  }
+
+ private:
+  std::string failure_;
+  std::vector<double> failAt_;
+  bool always_;  // fails at every solve
+};
+
+StaticSolverOptions options(const std::string& retry, int maxCuts) {
+  StaticSolverOptions o;
+  o.steps = 2;
+  o.maxCuts = maxCuts;
+  o.lineSearchRetry = retry;
+  return o;
+}
+
+RunReport run(NewtonMethod& first, NewtonMethod& retry, const StaticSolverOptions& o) {
+  RootAtTimeSystem system;
+  auto u = system.createVector();
+  return StaticSolver(system, nullptr, first, o, nullptr, &retry).run(*u, {});
+}
+
+TEST(LineSearchRetry, ALastResortSolvesTheStepTheFullStepsFailed) {
+  ScriptedNewton fullSteps("max-iterations"), lineSearch("");
+  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
+  ASSERT_TRUE(report.converged) << report.message;
+  EXPECT_TRUE(report.failure.empty());
+  EXPECT_EQ(report.steps, 2);
+  EXPECT_EQ(report.lineSearchRetries, 2);
+  EXPECT_EQ(lineSearch.solves, 2);
+  EXPECT_EQ(report.iterations, 2 * (3 + 1));  // both attempts count
+}
+
+TEST(LineSearchRetry, ALastResortWaitsUntilTheStepCannotBeCut) {
+  ScriptedNewton fullSteps("diverged"), lineSearch("");
+  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 2));
+  ASSERT_TRUE(report.converged) << report.message;
+  // The first step (0.5) is cut twice before its retry, at the smallest step 0.5 / 2^2.
+  ASSERT_FALSE(lineSearch.times.empty());
+  EXPECT_DOUBLE_EQ(lineSearch.times[0], 0.125);
+  EXPECT_EQ(std::vector<double>(fullSteps.times.begin(), fullSteps.times.begin() + 3),
+            (std::vector<double>{0.5, 0.25, 0.125}));
+  // Every failure is either cut or, at the last try, retried.
+  EXPECT_EQ(fullSteps.solves, report.cuts + report.lineSearchRetries);
+  EXPECT_EQ(lineSearch.solves, report.lineSearchRetries);
+}
+
+TEST(LineSearchRetry, EveryFailureRetriesBeforeCutting) {
+  ScriptedNewton fullSteps("degraded-contact"), lineSearch("");
+  const RunReport report = run(fullSteps, lineSearch, options("every-failure", 2));
+  ASSERT_TRUE(report.converged) << report.message;
+  EXPECT_EQ(report.cuts, 0);
+  EXPECT_EQ(report.lineSearchRetries, 2);
+}
+
+TEST(LineSearchRetry, NeverLeavesTheFailure) {
+  ScriptedNewton fullSteps("max-iterations"), lineSearch("");
+  const RunReport report = run(fullSteps, lineSearch, options("never", 0));
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, "max-iterations");
+  EXPECT_EQ(lineSearch.solves, 0);
+  EXPECT_EQ(report.lineSearchRetries, 0);
+}
+
+TEST(LineSearchRetry, ASingularTangentIsNotRetried) {
+  ScriptedNewton fullSteps(kSingularTangent), lineSearch("");
+  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, kSingularTangent);
+  EXPECT_EQ(lineSearch.solves, 0);
+}
+
+TEST(LineSearchRetry, AFailedRetryNamesBothAttempts) {
+  ScriptedNewton fullSteps("max-iterations"), lineSearch("diverged");
+  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.failure, "max-iterations");  // the method's own
+  EXPECT_EQ(report.message.find("scripted max-iterations"), 0u) << report.message;
+  EXPECT_NE(report.message.find("solved again with the Backtrack line search: diverged: "
+                                "scripted diverged"),
+            std::string::npos)
+      << report.message;
+  EXPECT_EQ(report.lineSearchRetries, 1);
+}
+
+// The step to 0.25 fails twice: cut to 0.125, then from there to 0.1875; the steps regrow
+// (0.0625, 0.125, 0.25), and the one from 0.375 would end at 0.625, past the nominal time 0.5
+// and a table's peak at 0.55: the steps land on both.
+TEST(LoadStepping, StepsLandOnTheNominalTimesAndTheLandingTimes) {
+  ScriptedNewton newton("max-iterations", {0.25, 0.25});
+  StaticSolverOptions o = options("never", 2);
+  o.steps = 4;
+  o.landingTimes = {0.55, 2.0, -1.0};  // outside (0, End Time): ignored
+  RootAtTimeSystem system;
+  auto u = system.createVector();
+  std::vector<double> converged;
+  const RunReport report =
+      StaticSolver(system, nullptr, newton, o).run(*u, [&](const StepReport& sr, const Vector&) {
+        converged.push_back(sr.time);
+      });
+  ASSERT_TRUE(report.converged) << report.message;
+  const std::vector<double> expected{0.125, 0.1875, 0.25, 0.375, 0.5, 0.55, 0.75, 1.0};
+  ASSERT_EQ(converged.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(converged[i], expected[i], 1e-12) << i;
+}
+
+}  // namespace
+}  // namespace contactlab
