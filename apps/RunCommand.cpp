@@ -9,6 +9,7 @@
 #include "apps/output/ContactCsv.hpp"
 #include "apps/output/CriticalMuSummary.hpp"
 #include "apps/output/ProbeValues.hpp"
+#include "apps/output/ProfileCsv.hpp"
 #include "apps/output/StepUniquenessCheck.hpp"
 #include "apps/output/StepsCsv.hpp"
 #include "apps/output/SummaryJson.hpp"
@@ -261,6 +262,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   StepsCsv stepsCsv(outDir + "/steps.csv", sm.criticalMuCheck && contact);
   ContactCsv contactCsv(outDir + "/contact.csv");
   ProbeValues probes(sm, *problem);
+  const ProfileCsv profiles(sm, *problem);
   VtkSteps vtk(outDir, rawMpiComm(comm));
   // The series starts from rest: a t = 0 frame before step 1 (also what a run that converges
   // no step leaves); a run from an earlier state starts from that state, at its time; a
@@ -335,6 +337,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     stepsCsv.addStep(s, cr, condition, pairingSeconds, contactSeconds, criticalMu);
     if (root) stepsCsv.write();
     probes.record(*solution, s.time);
+    if (!sm.profiles.empty()) {
+      profiles.write(outDir, "", *solution, s.time);
+      for (double t : sm.contactTimes)
+        if (std::abs(s.time - t) <= 1e-9 * sm.solverOptions.endTime)
+          profiles.write(outDir, "_t" + numberText(t), *solution, s.time);
+    }
     progress.step(s, steps, elapsed());
     // The checkpoint last: when it names a step, that step's outputs are all written.
     ++stepsThisRun;
@@ -375,9 +383,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (t > from.start.time && std::find(contactTimesWritten.begin(), contactTimesWritten.end(),
                                            t) == contactTimesWritten.end())
         std::cerr << "contactlab: warning: Output/Contact Times: no converged step at t = "
-                  << numberText(t) << " (the steps fall at multiples of End Time / Steps, and "
-                  << "where step cuts put them): contact_t" << numberText(t)
-                  << ".csv was not written\n";
+                  << numberText(t) << ": contact_t" << numberText(t) << ".csv was not written\n";
   if (contact && root && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "

@@ -494,6 +494,27 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
                        " after " + numberText(sm.contactTimes.back()) + ")");
     sm.contactTimes.push_back(t);
   }
+  // The steps land on every kink of a load function and on the output times, whatever cuts
+  // did to the step sizes.
+  std::vector<double>& landing = sm.solverOptions.landingTimes;
+  landing = sm.contactTimes;
+  const auto addKinks = [&](const auto& prescribed) {
+    for (const auto& item : prescribed)
+      for (double k : item.function.kinks())
+        landing.push_back(k);
+  };
+  addKinks(sm.model.dirichlet);
+  addKinks(sm.model.surfaceLoads);
+  addKinks(sm.model.bodyForces);
+  addKinks(sm.model.centrifugalLoads);
+  addKinks(sm.model.pointLoads);
+  addKinks(sm.model.temperatures);
+  for (const ContactZone& zone : sm.contact)
+    if (zone.obstacle)
+      for (double k : zone.obstacle->function.kinks())
+        landing.push_back(k);
+  std::sort(landing.begin(), landing.end());
+  landing.erase(std::unique(landing.begin(), landing.end()), landing.end());
   sm.criticalMuCheck = output.get<bool>("Critical Mu Check");
   sm.criticalMuTolerance = output.get<double>("Critical Mu Tolerance");
   sm.criticalMuMaxPatterns = output.get<int>("Critical Mu Max Patterns");
@@ -510,6 +531,45 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
     probe.point = vector3(pr, "Point", where, "Output/Probes/" + probe.name, dim);
     std::tie(probe.node, probe.distance) = nearestNode(*mesh, probe.point, {});
     sm.probes.push_back(probe);
+  }
+  const ParameterList& profiles = output.sublist("Profiles");
+  for (auto it = profiles.begin(); it != profiles.end(); ++it) {
+    const ParameterList& pr = profiles.sublist(profiles.name(it));
+    const std::string path = "Output/Profiles/" + profiles.name(it);
+    Profile profile;
+    profile.name = profiles.name(it);
+    profile.field = pr.get<std::string>("Field");
+    profile.frame = pr.get<std::string>("Frame");
+    profile.from = vector3(pr, "From", where, path, dim);
+    profile.to = vector3(pr, "To", where, path, dim);
+    profile.centre = vector3(pr, "Centre", where, path, dim);
+    profile.axis = vector3(pr, "Axis", where, path, 3);
+    const int n = pr.get<int>("Points");
+    if (n < 2) throw InputError(where + ": " + path + "/Points must be >= 2");
+    if (profile.frame == "cylindrical") {
+      if (sm.model.axisymmetric)
+        throw InputError(where + ": " + path +
+                         "/Frame: an axisymmetric model's components "
+                         "are cylindrical already (xx = rr, yy = axial, zz = hoop); use "
+                         "'cartesian'");
+      const auto& a = profile.axis;
+      if (dim == 2 && (a[0] != 0 || a[1] != 0))
+        throw InputError(where + ": " + path +
+                         "/Axis: a 2D model's cylindrical frame turns "
+                         "about the z axis; leave Axis at [0, 0, 1]");
+      if (!(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] > 0))
+        throw InputError(where + ": " + path + "/Axis must not be zero");
+    }
+    for (int k = 0; k < n; ++k) {
+      std::array<double, 3> x{};
+      for (int i = 0; i < 3; ++i)
+        x[i] = profile.from[i] + (profile.to[i] - profile.from[i]) * k / (n - 1);
+      const auto [node, distance] = nearestNode(*mesh, x, {});
+      profile.points.push_back(x);
+      profile.nodes.push_back(node);
+      profile.distances.push_back(distance);
+    }
+    sm.profiles.push_back(profile);
   }
   sm.scene = std::move(scene);
   return sm;

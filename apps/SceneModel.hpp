@@ -25,12 +25,25 @@ struct Probe {
   double distance = 0;
 };
 
+// Output/Profiles/<name>: a field along a segment, read at the mesh nodes nearest `points`
+// evenly spaced points from `from` to `to` (profile_<name>.csv).
+struct Profile {
+  std::string name;
+  std::string field;  // "displacement" or "stress"
+  std::string frame;  // "cartesian" or "cylindrical" (about `axis` through `centre`)
+  std::array<double, 3> from{}, to{}, centre{}, axis{{0, 0, 1}};
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::int64_t> nodes;  // nearest mesh node of each point
+  std::vector<double> distances;
+};
+
 struct SceneModel {
   SceneFile scene;  // validated, defaults filled in
   SolidModel model;
   std::vector<ContactZone> contact;  // empty: no contact (no contact unknowns are built)
   StaticSolverOptions solverOptions;
   std::vector<Probe> probes;
+  std::vector<Profile> profiles;
   std::string outputDirectory;
   // Initial State: the folder whose checkpoint the run starts from (empty: from rest), and
   // whether the load time continues from the checkpoint's (Time: continue) or restarts at 0.

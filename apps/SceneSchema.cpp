@@ -211,6 +211,28 @@ ParameterList probeItem() {
   return p;
 }
 
+ParameterList profileItem() {
+  ParameterList p;
+  p.set("From", Teuchos::Array<double>(3, 0.0), "Start of the segment");
+  p.set("To", Teuchos::Array<double>(3, 0.0), "End of the segment");
+  p.set("Points", 21,
+        "Evenly spaced points from From to To (>= 2); each reads the mesh node closest to it "
+        "(its coordinates and distance are in the file)");
+  p.set("Field", "stress",
+        "'stress' (6 components, nodal average of element averages, as Probes) or "
+        "'displacement'",
+        choices({"stress", "displacement"}));
+  p.set("Frame", "cartesian",
+        "Components in the mesh's axes ('cartesian'; in axisymmetry x = r, y axial, zz the "
+        "hoop stress) or 'cylindrical' about Axis through Centre (r from the axis, t = "
+        "Axis x r, z along it: stress rr tt zz rt tz rz, e.g. a 3D tube's hoop stress tt; "
+        "2D plane models about z)",
+        choices({"cartesian", "cylindrical"}));
+  p.set("Centre", Teuchos::Array<double>(3, 0.0), "Frame: cylindrical: a point of the axis");
+  p.set("Axis", Teuchos::Array<double>({0.0, 0.0, 1.0}), "Frame: cylindrical: the axis direction");
+  return p;
+}
+
 ParameterList obstacleItem() {
   ParameterList p;
   p.set("Type", "plane",
@@ -322,8 +344,8 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
   p.set("Contact Times", Teuchos::Array<double>(),
         "Load times (increasing, in (0, End Time]) after whose converged step the contact "
         "points are also written to contact_t<time>.csv (contact.csv's columns), e.g. the end "
-        "of each stage of a load history; a time no converged step reaches is reported at the "
-        "end of the run");
+        "of each stage of a load history; the steps land on them; a time the run does not "
+        "reach (it failed before) is reported at the end of the run");
   p.set("Critical Mu Check", false,
         "After each converged step, the uniqueness check of `contactlab critical-mu` (status "
         "patterns around the state, determinant signs, critical mu): a warning when mu >= "
@@ -340,6 +362,9 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
   p.set("Probes",
         namedSection(userSublist(user, "Probes"), "Output/Probes", where,
                      [](const ParameterList&, const std::string&) { return probeItem(); }));
+  p.set("Profiles",
+        namedSection(userSublist(user, "Profiles"), "Output/Profiles", where,
+                     [](const ParameterList&, const std::string&) { return profileItem(); }));
   return p;
 }
 
@@ -507,6 +532,12 @@ std::string sceneReference() {
   describeList(out, outputSection(nullptr, ""), "");
   out << "\n### Output/Probes/<name>\n\n";
   describeList(out, probe, "");
+  out << "\n### Output/Profiles/<name>\n\n";
+  out << "A field along a segment, written after every converged step to "
+         "profile_<name>.csv (the last converged step) and, at each Output/Contact Times "
+         "entry, to profile_<name>_t<time>.csv: columns time, s (the point's distance from "
+         "From), the point, the node read, its distance, then the components.\n\n";
+  describeList(out, profileItem(), "");
   out << "\n## Registries\n\n";
   describeRegistry(out, meshSourceRegistry(), "Mesh");
   describeRegistry(out, materialRegistry(), "Materials/<block>");

@@ -319,42 +319,59 @@ def tube_joint(folder, time):
                   for r in rows)
 
 
+def tube_hoop(folder, time):
+    """(axial position, hoop stress) along the tube's mid-wall at TIME: the scene's
+    Output/Profiles/tube-mid-wall (axisymmetric: stress_zz is the hoop stress)."""
+    rows = csv.DictReader(open(os.path.join(folder, f"profile_tube-mid-wall_t{time:g}.csv")))
+    return [(float(r["node_y"]), float(r["stress_zz"])) for r in rows]
+
+
 def block_tube_stages(runs, figures):
     """The seed's chain, axisymmetric: the joint's contact pressure along the expanded length
-    after each stage (Output/Contact Times), a row per stage and the figure."""
+    (Output/Contact Times) and the tube's hoop stress at mid-wall (Output/Profiles) after each
+    stage, a row per stage and the figure."""
     scene = "tube-expansion-thermal-axisymmetric"
     folder = runs.folder(scene)
     joints = {time: tube_joint(folder, time) for time, _ in TUBE_STAGES}
+    hoops = {time: tube_hoop(folder, time) for time, _ in TUBE_STAGES}
     out = []
     for time, stage in TUBE_STAGES:
         points = joints[time]
         closed = [(z, p) for z, p, c in points if c]
+        hoop = [h for _, h in hoops[time]]
         out.append([stage, num(time, 2), f"{len(closed)} of {len(points)}",
                     f"{num(min(z for z, _ in closed), 3)} to {num(max(z for z, _ in closed), 3)}",
-                    num(sum(p for _, p in closed) / len(closed)), num(max(p for _, p in closed))])
-    plot_tube_stages(joints, os.path.join(figures, "tube-stages-pressure.png"))
+                    num(sum(p for _, p in closed) / len(closed)), num(max(p for _, p in closed)),
+                    num(sum(hoop) / len(hoop)), f"{num(min(hoop))} to {num(max(hoop))}"])
+    plot_tube_stages(joints, hoops, os.path.join(figures, "tube-stages-pressure.png"))
     return table(["stage", "t", "closed nodes", "closed over z (mm)", "mean pressure (MPa)",
-                  "max pressure (MPa)"], out) + \
-        "\n![Joint pressure after each stage](figures/tube-stages-pressure.png)\n"
+                  "max pressure (MPa)", "mean hoop stress at mid-wall (MPa)",
+                  "hoop stress range (MPa)"], out) + \
+        "\n![Joint pressure and tube hoop stress after each stage]" \
+        "(figures/tube-stages-pressure.png)\n"
 
 
-def plot_tube_stages(joints, path):
+def plot_tube_stages(joints, hoops, path):
     """The nodal contact pressure along the tube after each stage (tube_joint's points by
-    time); open nodes hollow at 0."""
+    time; open nodes hollow at 0), and the tube's mid-wall hoop stress (tube_hoop's)."""
     from matplotlib.figure import Figure
-    fig = Figure(figsize=(6.4, 4.0))
-    ax = fig.subplots()
+    fig = Figure(figsize=(6.4, 6.4))
+    top, bottom = fig.subplots(2, 1, sharex=True)
     for (time, stage), colour in zip(TUBE_STAGES, ("C0", "C1", "C3")):
         points = joints[time]
-        ax.plot([z for z, _, _ in points], [p for _, p, _ in points], "-", color=colour, lw=0.8,
-                label=f"t = {time:g}: {stage}")
-        ax.plot([z for z, _, c in points if not c], [0.0 for _, _, c in points if not c], "o",
-                color=colour, mfc="none", ms=4)
-    ax.set_xlabel("axial position z (mm)")
-    ax.set_ylabel("contact pressure (MPa)")
-    ax.set_title("Tube-to-tubesheet joint (axisymmetric, mortar): after each stage")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
+        top.plot([z for z, _, _ in points], [p for _, p, _ in points], "-", color=colour, lw=0.8,
+                 label=f"t = {time:g}: {stage}")
+        top.plot([z for z, _, c in points if not c], [0.0 for _, _, c in points if not c], "o",
+                 color=colour, mfc="none", ms=4)
+        bottom.plot([z for z, _ in hoops[time]], [h for _, h in hoops[time]], ".-",
+                    color=colour, lw=0.8, ms=3)
+    top.set_ylabel("contact pressure (MPa)")
+    top.set_title("Tube-to-tubesheet joint (axisymmetric, mortar): after each stage")
+    top.legend(fontsize=8)
+    bottom.set_xlabel("axial position z (mm)")
+    bottom.set_ylabel("tube hoop stress at mid-wall (MPa)")
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 

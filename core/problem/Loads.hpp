@@ -22,6 +22,13 @@ struct LoadFunction {
   double endTime = 1.0;
   double startTime = 0.0;
   std::vector<double> times, factors;  // table: strictly increasing times, same sizes
+  // The times where the function has a kink (a ramp's start and stop, a table's times): a load
+  // step that passes one cuts the corner of the history, e.g. the peak of a load table.
+  std::vector<double> kinks() const {
+    if (kind == Kind::Constant) return {};
+    if (kind == Kind::Table) return times;
+    return {startTime, endTime};
+  }
   double operator()(double t) const {
     if (kind == Kind::Constant) return 1.0;
     if (kind == Kind::Table) return piecewiseLinear(times, factors, t);

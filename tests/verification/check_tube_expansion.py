@@ -3,10 +3,11 @@
 within 2 %"): scenes/tube-expansion-3d.yaml, expanded over the tube's whole length (--set, so
 that both models carry the same load), a 10-degree sector whose cuts are symmetry planes (one
 inclined), against scenes/tube-expansion-axisymmetric.yaml, whose forces are per full ring.
-Compares after the release: the residual contact normal force (the sector's times 360 / Angle)
-and the residual contact pressure along the joint (mean over each model's contact points in
-the middle half of the length, away from the free top end). Each relative difference must be
-below TOL.
+Compares after the release: the residual contact normal force (the sector's times 360 / Angle),
+the residual contact pressure along the joint (mean over each model's contact points in the
+middle half of the length, away from the free top end) and the tube's residual hoop stress at
+mid-wall over the same half (the scenes' Output/Profiles/tube-mid-wall: 3D stress_tt in
+cylindrical components, axisymmetric stress_zz). Each relative difference must be below TOL.
 
 usage: check_tube_expansion.py CONTACTLAB SCENE_3D SCENE_AXISYMMETRIC OUTDIR TOL"""
 import csv, os, sys
@@ -33,19 +34,32 @@ def middle_pressure(folder, axial):
     return sum(values) / len(values)
 
 
+def middle_hoop(folder, column):
+    """Mean hoop stress of profile_tube-mid-wall.csv over its middle half (axial s)."""
+    rows = list(csv.DictReader(open(os.path.join(folder, "profile_tube-mid-wall.csv"))))
+    values = [float(r[column]) for r in rows
+              if 0.25 * THICKNESS <= float(r["s"]) <= 0.75 * THICKNESS]
+    return sum(values) / len(values)
+
+
 force3d = s3["contact"]["normal_force"] * 360.0 / ANGLE
 force_axi = sa["contact"]["normal_force"]
 p3d = middle_pressure(os.path.join(out, "3d"), "reference_z")
 p_axi = middle_pressure(os.path.join(out, "axisymmetric"), "reference_y")
 force_error = abs(force3d / force_axi - 1)
 pressure_error = abs(p3d / p_axi - 1)
+hoop3d = middle_hoop(os.path.join(out, "3d"), "stress_tt")
+hoop_axi = middle_hoop(os.path.join(out, "axisymmetric"), "stress_zz")
+hoop_error = abs(hoop3d / hoop_axi - 1)
 print(f"RESULT force_3d_ring={force3d:.6g} force_axisymmetric={force_axi:.6g} "
       f"pressure_3d={p3d:.6g} pressure_axisymmetric={p_axi:.6g} "
+      f"hoop_3d={hoop3d:.6g} hoop_axisymmetric={hoop_axi:.6g} "
       f"force_difference={force_error:.3e} pressure_difference={pressure_error:.3e} "
+      f"hoop_difference={hoop_error:.3e} "
       f"newton_3d={s3['iterations']['newton']} newton_axisymmetric={sa['iterations']['newton']} "
       f"seconds_3d={s3['seconds']['total']:.1f} seconds_axisymmetric={sa['seconds']['total']:.2f}")
 if not (force3d > 0 and p3d > 0):
     sys.exit("FAIL: no residual contact after the release")
-if not (force_error <= tol and pressure_error <= tol):
+if not (force_error <= tol and pressure_error <= tol and hoop_error <= tol):
     sys.exit(f"FAIL: 3D and axisymmetric differ by more than {tol}")
 print("PASS")
