@@ -75,16 +75,16 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          choices({"plain", "nox"}));
   p->set("Line Search", "Full Step", "NOX line search (Driver: nox)",
          choices({"Full Step", "Backtrack", "Polynomial", "More'-Thuente"}));
-  p->set("Line Search Retry", "last-resort",
+  p->set("Line Search Retry", "every-failure",
          "A load step whose Newton failed is solved again from the step's start by NOX's "
          "line-search based solver with the Backtrack line search (the Newton step halved until "
-         "||R|| decreases): 'last-resort' when the step cannot be cut any more (Max Cuts or the "
-         "smallest step), before the run fails; 'every-failure' before each cut too; 'never'. "
-         "Full steps stay the first try: a contact Newton often converges through iterates "
-         "whose ||R|| grows, and backtracking every step costs more iterations on most scenes "
-         "(doc/algorithms.md \"Line search as a last resort\"). Not with Driver: nox and a line "
+         "||R|| decreases) before it is cut ('every-failure'), only when it cannot be cut any "
+         "more (Max Cuts or the smallest step) before the run fails ('last-resort'), or not "
+         "('never'). Full steps stay the first try: a contact Newton often converges through "
+         "iterates whose ||R|| grows, and backtracking every step costs more iterations on most "
+         "scenes (doc/algorithms.md \"Line search retry\"). Not with Driver: nox and a line "
          "search already",
-         choices({"last-resort", "every-failure", "never"}));
+         choices({"every-failure", "last-resort", "never"}));
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
@@ -586,7 +586,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       // A contact Newton that failed with full steps (cycling statuses, overshooting iterates)
       // often converges at the same increment when each step must decrease ||R||: the
       // frictional hex27 tube's unloading failed down to the smallest step and converges in 9
-      // iterations so (doc/algorithms.md "Line search as a last resort").
+      // iterations so (doc/algorithms.md "Line search retry").
       if (!ok && retry_ && (lastTry || options_.lineSearchRetry == "every-failure") &&
           iteratesFailedToConverge(report.failure)) {
         // A failed retry reports the method's own failure (the one a table of methods
@@ -598,8 +598,9 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
           report.failure.clear();
           report.message.clear();
         } else {
-          report.message = message + "; solved again with the Backtrack line search: " +
-                           report.failure + ": " + report.message;
+          report.message = message +
+                           "; solved again with the Backtrack line search: " + report.failure +
+                           ": " + report.message;
           report.failure = failure;
         }
       }

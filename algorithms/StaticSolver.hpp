@@ -17,8 +17,8 @@
 // Max Cuts times and never below End Time / Steps / 2^Max Cuts; steps that converge without a
 // cut let the step grow back. Steps never pass a nominal time k End Time / Steps or a landing
 // time (a load function's kink): cuts and regrowth would otherwise step over the peak of a
-// load table. A step that cannot be cut any more is solved once more by a
-// backtracking line-search Newton before the run fails (Newton/Line Search Retry).
+// load table. A failed step is solved once more by a backtracking line-search Newton before
+// it is cut (Newton/Line Search Retry).
 #include "algorithms/CyclingDetector.hpp"
 #include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
@@ -56,9 +56,9 @@ struct StaticSolverOptions {
   std::string lineSearch = "Full Step";  // NOX line search (driver "nox" only)
   Teuchos::ParameterList nox;            // passed through to NOX
   // When a failed step is solved again by the line-search retry Newton (StaticSolver's
-  // constructor): "last-resort" (instead of failing the run), "every-failure" (before each
-  // cut), "never".
-  std::string lineSearchRetry = "last-resort";
+  // constructor): "every-failure" (before each cut, and before the run fails), "last-resort"
+  // (only when the step cannot be cut any more), "never".
+  std::string lineSearchRetry = "every-failure";
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";

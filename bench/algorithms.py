@@ -39,7 +39,7 @@ for label, scene, sets, what in cases:
                 name = f"{label}-{what}-{method}-{driver}-{search}-{treatment}"
                 out = os.path.join(work, re.sub(r"[^A-Za-z0-9.-]+", "_", name))
                 # Each Newton alone: without the default retry of a failed last step with
-                # Backtrack (doc/algorithms.md "Line search as a last resort").
+                # Backtrack (doc/algorithms.md "Line search retry").
                 options = [f"Algorithm/Method={method}",
                            f"Algorithm/Cycling Treatment={treatment}", f"Newton/Driver={driver}",
                            "Newton/Line Search Retry=never"]
