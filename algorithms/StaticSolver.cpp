@@ -595,6 +595,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
         ++report.lineSearchRetries;
         ok = solveStep(*retry_, u, *x, sr, report, onIteration);  // sr counts both attempts
         if (ok) {
+          sr.lineSearchRetry = true;
           report.failure.clear();
           report.message.clear();
         } else {

@@ -72,17 +72,24 @@ StaticSolverOptions options(const std::string& retry, int maxCuts) {
   return o;
 }
 
-RunReport run(NewtonMethod& first, NewtonMethod& retry, const StaticSolverOptions& o) {
+// `retried`, when given, gets each converged step's StepReport::lineSearchRetry.
+RunReport run(NewtonMethod& first, NewtonMethod& retry, const StaticSolverOptions& o,
+              std::vector<bool>* retried = nullptr) {
   RootAtTimeSystem system;
   auto u = system.createVector();
-  return StaticSolver(system, nullptr, first, o, nullptr, &retry).run(*u, {});
+  return StaticSolver(system, nullptr, first, o, nullptr, &retry)
+      .run(*u, [&](const StepReport& sr, const Vector&) {
+        if (retried) retried->push_back(sr.lineSearchRetry);
+      });
 }
 
 TEST(LineSearchRetry, ALastResortSolvesTheStepTheFullStepsFailed) {
   ScriptedNewton fullSteps("max-iterations"), lineSearch("");
-  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
+  std::vector<bool> retried;
+  const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0), &retried);
   ASSERT_TRUE(report.converged) << report.message;
   EXPECT_TRUE(report.failure.empty());
+  EXPECT_EQ(retried, (std::vector<bool>{true, true}));  // what the progress line reports
   EXPECT_EQ(report.steps, 2);
   EXPECT_EQ(report.lineSearchRetries, 2);
   EXPECT_EQ(lineSearch.solves, 2);
