@@ -103,8 +103,7 @@ struct RunReport {
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
   int cuts = 0;
-  int lineSearchRetries =
-      0;  // failed steps solved again by the line-search Newton (converged or not)
+  int lineSearchRetries = 0;  // failed steps the line-search Newton solved again (or not)
   CyclingCounts cycling{};
   PhaseSeconds seconds;
 

@@ -313,19 +313,21 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     auto solution =
         contact ? contact->displacement(state) : Teuchos::rcp(new Vector(state, Teuchos::Copy));
     if (sm.writeVtk) vtk.write(s.time, *problem, contact.get(), *solution);
+    // The Output/Contact Times entry this step lands on, if any: its outputs are kept under
+    // the time's name too.
+    std::optional<double> stage;
+    for (double t : sm.contactTimes)
+      if (std::abs(s.time - t) <= 1e-9 * sm.solverOptions.endTime) stage = t;
     ContactResultants cr;
     if (contact) {
       cr = contact->resultants();
       if (root) contactCsv.write(*contact, sm.contact, *sm.model.mesh);
-      // Output/Contact Times: this step's contact points kept under the time's name too.
-      const double tolerance = 1e-9 * sm.solverOptions.endTime;
-      for (double t : sm.contactTimes)
-        if (std::abs(s.time - t) <= tolerance) {
-          if (root)
-            ContactCsv(outDir + "/contact_t" + numberText(t) + ".csv")
-                .write(*contact, sm.contact, *sm.model.mesh);
-          contactTimesWritten.push_back(t);
-        }
+      if (stage) {
+        if (root)
+          ContactCsv(outDir + "/contact_t" + numberText(*stage) + ".csv")
+              .write(*contact, sm.contact, *sm.model.mesh);
+        contactTimesWritten.push_back(*stage);
+      }
       convergedContact = summary.contactBlock(cr).set("time", s.time);
     }
     // Read before the uniqueness check, whose assemblies count in the next step's timings.
@@ -339,9 +341,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     probes.record(*solution, s.time);
     if (!sm.profiles.empty()) {
       profiles.write(outDir, "", *solution, s.time);
-      for (double t : sm.contactTimes)
-        if (std::abs(s.time - t) <= 1e-9 * sm.solverOptions.endTime)
-          profiles.write(outDir, "_t" + numberText(t), *solution, s.time);
+      if (stage) profiles.write(outDir, "_t" + numberText(*stage), *solution, s.time);
     }
     progress.step(s, steps, elapsed());
     // The checkpoint last: when it names a step, that step's outputs are all written.

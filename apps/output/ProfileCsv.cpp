@@ -39,6 +39,8 @@ void ProfileCsv::write(const std::string& dir, const std::string& suffix, const 
     const double length =
         std::sqrt(std::pow(p.to[0] - p.from[0], 2) + std::pow(p.to[1] - p.from[1], 2) +
                   std::pow(p.to[2] - p.from[2], 2));
+    std::vector<std::array<double, 6>> stresses;
+    if (p.field == "stress") stresses = problem_.nodeStresses(u, p.nodes, t);
     for (std::size_t k = 0; k < p.points.size(); ++k) {
       const double* xn = &sm_.model.mesh->coords[3 * p.nodes[k]];
       const std::array<double, 3> node{xn[0], xn[1], xn[2]};
@@ -57,7 +59,7 @@ void ProfileCsv::write(const std::string& dir, const std::string& suffix, const 
         for (int c = 0; c < dim; ++c)
           row.push_back(d[c]);
       } else {
-        auto s = problem_.nodeStress(u, p.nodes[k], t);
+        auto s = stresses[k];
         if (cylindrical) s = cylindricalComponents(s, node, p.centre, p.axis);
         row.insert(row.end(), s.begin(), s.end());
       }

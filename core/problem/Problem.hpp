@@ -146,6 +146,10 @@ class Problem : public NonlinearSystem {
   // Nodal average of the element-average Cauchy stress at a mesh node, at the block
   // temperatures of time t (collective).
   std::array<double, 6> nodeStress(const Vector& u, std::int64_t meshNode, double t) const;
+  // The same at several mesh nodes, with one pass over the elements (collective).
+  std::vector<std::array<double, 6>> nodeStresses(const Vector& u,
+                                                  const std::vector<std::int64_t>& meshNodes,
+                                                  double t) const;
   // The prescribed temperature of mesh block `block` at time t; empty when the scene gives
   // none (the material is then at its reference temperature).
   std::optional<double> blockTemperature(int block, double t) const;

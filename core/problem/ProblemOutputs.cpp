@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace contactlab {
 
@@ -183,25 +185,40 @@ std::array<double, 3> Problem::nodeDisplacement(const Vector& u, std::int64_t me
 }
 
 std::array<double, 6> Problem::nodeStress(const Vector& u, std::int64_t meshNode, double t) const {
-  // Average over the elements around the node, whichever rank assembles them.
+  return nodeStresses(u, {meshNode}, t)[0];
+}
+
+std::vector<std::array<double, 6>> Problem::nodeStresses(const Vector& u,
+                                                         const std::vector<std::int64_t>& meshNodes,
+                                                         double t) const {
+  // Average over the elements around each node, whichever rank assembles them: one overlap
+  // import and one pass over the elements for all the nodes, each element's stress evaluated
+  // once however many of the nodes it holds.
   auto uOverlap = overlapCopy(u);
-  std::array<double, 7> local{}, global{};
-  const int n = dofs_->overlapNodeIndex(meshNode);
-  if (n >= 0) {
-    for (std::size_t i = 0; i < elements_.size(); ++i) {
-      const auto& e = elements_[i];
-      if (std::find(e.nodes.begin(), e.nodes.end(), n) == e.nodes.end()) continue;
-      const auto s = elementStress(i, *uOverlap, t);
+  const std::size_t count = meshNodes.size();
+  std::vector<double> local(7 * count, 0.0), global(7 * count, 0.0);
+  std::vector<int> overlap(count);
+  for (std::size_t j = 0; j < count; ++j)
+    overlap[j] = dofs_->overlapNodeIndex(meshNodes[j]);
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    std::optional<std::array<double, 6>> s;
+    for (std::size_t j = 0; j < count; ++j) {
+      if (overlap[j] < 0 || std::find(e.nodes.begin(), e.nodes.end(), overlap[j]) == e.nodes.end())
+        continue;
+      if (!s) s = elementStress(i, *uOverlap, t);
       for (int k = 0; k < 6; ++k)
-        local[k] += s[k];
-      local[6] += 1.0;
+        local[7 * j + k] += (*s)[k];
+      local[7 * j + 6] += 1.0;
     }
   }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 7, local.data(), global.data());
-  std::array<double, 6> s{};
-  for (int k = 0; k < 6; ++k)
-    s[k] = global[6] > 0 ? global[k] / global[6] : 0.0;
-  return s;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(7 * count), local.data(),
+                     global.data());
+  std::vector<std::array<double, 6>> stresses(count);
+  for (std::size_t j = 0; j < count; ++j)
+    for (int k = 0; k < 6; ++k)
+      stresses[j][k] = global[7 * j + 6] > 0 ? global[7 * j + k] / global[7 * j + 6] : 0.0;
+  return stresses;
 }
 
 }  // namespace contactlab
