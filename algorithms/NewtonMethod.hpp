@@ -16,6 +16,9 @@ struct NewtonRequest {
   double target = 0;              // converged when ||R|| <= target (and no status changed)
   int maxIterations = 20;         // linear solves allowed
   bool geometryInNewton = false;  // re-pair at every iterate (the generalized Newton)
+  // An update that moves a displacement by more than this is scaled down to it (0: full
+  // steps). Newton/Max Update times the model's size.
+  double maxUpdate = 0;
 };
 
 struct NewtonOutcome {
@@ -24,6 +27,7 @@ struct NewtonOutcome {
   std::string failure;  // empty, or a named reason (StaticSolver's list)
   std::string message;
   double assemblySeconds = 0, linearSolveSeconds = 0;
+  int limitedUpdates = 0;  // updates scaled down to NewtonRequest::maxUpdate
 };
 
 class NewtonMethod {

@@ -88,6 +88,15 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     }
     out.linearSolveSeconds += secondsSince(t0);
     ++out.iterations;
+    // A near-singular tangent (a body past its limit load, or free, until it meets contact)
+    // gives an update orders of magnitude too long; scaled down, Newton walks along it.
+    if (request.maxUpdate > 0) {
+      const double largest = system_.largestDisplacement(*increment);
+      if (largest > request.maxUpdate) {
+        increment->scale(request.maxUpdate / largest);
+        ++out.limitedUpdates;
+      }
+    }
     x.update(1.0, *increment, 1.0);
   }
 }

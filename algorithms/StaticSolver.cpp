@@ -85,6 +85,14 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "scenes (doc/algorithms.md \"Line search retry\"). Not with Driver: nox and a line "
          "search already",
          choices({"every-failure", "last-resort", "never"}));
+  p->set("Max Update", 0.05,
+         "The largest displacement a Newton update may make at any node, as a fraction of the "
+         "model's size (the diagonal of its bounding box); a longer update is scaled down to it "
+         "(multipliers too: the direction is kept). It only acts on an update far too long, "
+         "from a tangent that is nearly singular: a body past its limit load (perfect "
+         "plasticity) or free under load control until it meets contact, where full steps "
+         "diverge (doc/algorithms.md \"Update limit\"). >= 0; 0: full steps. Driver: plain "
+         "(the line-search retry's NOX steps are not limited)");
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
@@ -191,6 +199,9 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
   o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
+  o.maxUpdate = newton.get<double>("Max Update");
+  if (!(o.maxUpdate >= 0))
+    throw std::invalid_argument("Newton/Max Update must be >= 0 (0: full steps)");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   o.predictor = newton.get<std::string>("Predictor");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
@@ -470,6 +481,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
+  request.maxUpdate = options_.maxUpdate * problem_.modelSize();
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;
@@ -478,6 +490,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     sr.seconds.assembly += outcome.assemblySeconds;
     sr.seconds.linearSolve += outcome.linearSolveSeconds;
     report.linearSolves += outcome.iterations;
+    report.limitedUpdates += outcome.limitedUpdates;
     if (!outcome.failure.empty()) {
       // A NaN residual from an iterate the solid could not evaluate: say which and where.
       const AssemblyFailure assembly = problem_.assemblyFailure();

@@ -59,6 +59,9 @@ struct StaticSolverOptions {
   // constructor): "every-failure" (before each cut, and before the run fails), "last-resort"
   // (only when the step cannot be cut any more), "never".
   std::string lineSearchRetry = "every-failure";
+  // The largest displacement a plain Newton update may make, as a fraction of the model's size
+  // (NonlinearSystem::modelSize); 0: full steps.
+  double maxUpdate = 0.05;
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";
@@ -104,17 +107,19 @@ struct RunReport {
   int linearSolves = 0;
   int cuts = 0;
   int lineSearchRetries = 0;  // failed steps the line-search Newton solved again (or not)
+  int limitedUpdates = 0;     // Newton updates scaled down to Newton/Max Update
   CyclingCounts cycling{};
   PhaseSeconds seconds;
 
   // The counts as a step's run totals, and the counts a continued run starts from.
   RunTotals totals() const {
-    return {iterations,          linearSolves,       cuts,   lineSearchRetries, statusIterations,
+    return {iterations,          linearSolves,       cuts,
+            lineSearchRetries,   limitedUpdates,     statusIterations,
             thresholdIterations, geometryIterations, cycling};
   }
   void startFrom(const RunTotals& t) {
     iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
-    lineSearchRetries = t.lineSearchRetries;
+    lineSearchRetries = t.lineSearchRetries, limitedUpdates = t.limitedUpdates;
     statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
     geometryIterations = t.geometryIterations, cycling = t.cycling;
   }

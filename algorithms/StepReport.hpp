@@ -18,6 +18,7 @@ using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind
 struct RunTotals {
   int iterations = 0, linearSolves = 0, cuts = 0;
   int lineSearchRetries = 0;  // failed steps solved again by the line-search Newton
+  int limitedUpdates = 0;     // Newton updates scaled down to Newton/Max Update
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   CyclingCounts cycling{};
 };

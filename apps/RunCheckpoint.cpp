@@ -74,6 +74,10 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
     run.lineSearchRetries = static_cast<int>(file.integerAttribute("line_search_retries"));
   } catch (const InputError&) {
   }
+  try {  // absent from checkpoints written before Newton/Max Update
+    run.limitedUpdates = static_cast<int>(file.integerAttribute("limited_updates"));
+  } catch (const InputError&) {
+  }
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
   run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
   run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));
@@ -152,6 +156,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("linear_solves", static_cast<std::int64_t>(run.linearSolves));
     file.writeAttribute("cuts", static_cast<std::int64_t>(run.cuts));
     file.writeAttribute("line_search_retries", static_cast<std::int64_t>(run.lineSearchRetries));
+    file.writeAttribute("limited_updates", static_cast<std::int64_t>(run.limitedUpdates));
     file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));
     file.writeAttribute("threshold_iterations", static_cast<std::int64_t>(run.thresholdIterations));
     file.writeAttribute("geometry_iterations", static_cast<std::int64_t>(run.geometryIterations));

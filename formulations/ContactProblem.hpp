@@ -53,6 +53,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   Teuchos::RCP<Vector> createVector() const override;
   void applyDirichlet(double t, Vector& x) const override;
   void completeIncrement(Vector& dx) const override;
+  // Over the displacement part of dx (multipliers and slave normals are not lengths).
+  double largestDisplacement(const Vector& dx) const override;
+  double modelSize() const override { return solid_.modelSize(); }
   void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
   const Teuchos::RCP<Matrix>& tangent() const override;
   AssemblyFailure assemblyFailure() const override;

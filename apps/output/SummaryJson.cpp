@@ -177,6 +177,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
                              .set("converged", report.steps)
                              .set("cuts", report.cuts)
                              .set("line_search_retries", report.lineSearchRetries))
+      .set("limited_updates", report.limitedUpdates)
       .set("iterations", JsonValue::object()
                              .set("newton", report.iterations)
                              .set("status", report.statusIterations)

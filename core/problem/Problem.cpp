@@ -305,6 +305,17 @@ void Problem::completeIncrement(Vector& dx) const {
   symmetry_->project(dx.getDataNonConst(0).getRawPtr());
 }
 
+double Problem::modelSize() const {
+  const std::vector<double>& coords = model_.mesh->coords;
+  if (coords.empty()) return 0;
+  std::array<double, 3> low{coords[0], coords[1], coords[2]}, high = low;
+  for (std::size_t i = 0; i < coords.size(); ++i) {
+    low[i % 3] = std::min(low[i % 3], coords[i]);
+    high[i % 3] = std::max(high[i % 3], coords[i]);
+  }
+  return std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+}
+
 void Problem::addExternalForces(double t, const double* u, std::vector<double>& f) const {
   const Mesh& mesh = *model_.mesh;
   surfaceLoads_->addForces(t, u, f);
