@@ -17,7 +17,7 @@ struct NewtonRequest {
   int maxIterations = 20;         // linear solves allowed
   bool geometryInNewton = false;  // re-pair at every iterate (the generalized Newton)
   // An update that moves a displacement by more than this is scaled down to it (0: full
-  // steps). Newton/Max Update times the model's size.
+  // steps): a failed step's second try (Newton/Max Update times the model's size).
   double maxUpdate = 0;
 };
 
@@ -27,7 +27,8 @@ struct NewtonOutcome {
   std::string failure;  // empty, or a named reason (StaticSolver's list)
   std::string message;
   double assemblySeconds = 0, linearSolveSeconds = 0;
-  int limitedUpdates = 0;  // updates scaled down to NewtonRequest::maxUpdate
+  int limitedUpdates = 0;    // updates scaled down to NewtonRequest::maxUpdate
+  double longestUpdate = 0;  // the largest displacement an update made (before any scaling)
 };
 
 class NewtonMethod {

@@ -2,6 +2,7 @@
 
 #include "base/Elapsed.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -90,12 +91,11 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     ++out.iterations;
     // A near-singular tangent (a body past its limit load, or free, until it meets contact)
     // gives an update orders of magnitude too long; scaled down, Newton walks along it.
-    if (request.maxUpdate > 0) {
-      const double largest = system_.largestDisplacement(*increment);
-      if (largest > request.maxUpdate) {
-        increment->scale(request.maxUpdate / largest);
-        ++out.limitedUpdates;
-      }
+    const double largest = system_.largestDisplacement(*increment);
+    out.longestUpdate = std::max(out.longestUpdate, largest);
+    if (request.maxUpdate > 0 && largest > request.maxUpdate) {
+      increment->scale(request.maxUpdate / largest);
+      ++out.limitedUpdates;
     }
     x.update(1.0, *increment, 1.0);
   }

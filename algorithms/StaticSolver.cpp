@@ -86,13 +86,14 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "search already",
          choices({"every-failure", "last-resort", "never"}));
   p->set("Max Update", 0.05,
-         "The largest displacement a Newton update may make at any node, as a fraction of the "
-         "model's size (the diagonal of its bounding box); a longer update is scaled down to it "
-         "(multipliers too: the direction is kept). It only acts on an update far too long, "
-         "from a tangent that is nearly singular: a body past its limit load (perfect "
-         "plasticity) or free under load control until it meets contact, where full steps "
-         "diverge (doc/algorithms.md \"Update limit\"). >= 0; 0: full steps. Driver: plain "
-         "(the line-search retry's NOX steps are not limited)");
+         "A step whose full Newton steps failed through an update that moved a node by more "
+         "than this fraction of the model's size (twice the largest distance of a node from the "
+         "nodes' centroid: a box's diagonal) is solved again from its start with every longer "
+         "update scaled down to it (multipliers too: the direction is kept), after the "
+         "line-search retry and before a cut. So long an update comes from a tangent that is "
+         "nearly singular: a body past its limit load (perfect plasticity), or held only by "
+         "contact under load control (doc/algorithms.md \"Update limit\"). A step that "
+         "converges with full steps is never limited. >= 0; 0: no such retry. Driver: plain");
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
@@ -406,7 +407,8 @@ bool StaticSolver::stepSolidAlone(Vector& x, double t, StepReport& sr) {
 }
 
 bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, StepReport& sr,
-                             RunReport& report, const IterationCallback& onIteration) {
+                             RunReport& report, const IterationCallback& onIteration,
+                             double maxUpdate) {
   const double t = sr.time;
   x.assign(u);
   problem_.applyDirichlet(t, x);
@@ -481,7 +483,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
-  request.maxUpdate = options_.maxUpdate * problem_.modelSize();
+  request.maxUpdate = maxUpdate;
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;
@@ -491,6 +493,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     sr.seconds.linearSolve += outcome.linearSolveSeconds;
     report.linearSolves += outcome.iterations;
     report.limitedUpdates += outcome.limitedUpdates;
+    sr.longestUpdate = std::max(sr.longestUpdate, outcome.longestUpdate);
     if (!outcome.failure.empty()) {
       // A NaN residual from an iterate the solid could not evaluate: say which and where.
       const AssemblyFailure assembly = problem_.assemblyFailure();
@@ -582,6 +585,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   const double smallest = std::ldexp(nominal, -options_.maxCuts);
   double t = start.time, dt = start.stepSize > 0 ? start.stepSize : nominal;
   int cuts = 0;  // in a row, for the current step
+  const double updateLimit = options_.maxUpdate * problem_.modelSize();
   while (t < options_.endTime * (1 - 1e-12)) {
     StepReport sr;
     sr.step = start.step + report.steps + 1;
@@ -596,28 +600,41 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     bool ok = false;
     try {
       ok = solveStep(newton_, u, *x, sr, report, onIteration);
+      // A failed step solved again another way from its start (sr counts every attempt); a
+      // failed second try reports the first attempt's failure (the one a table of methods
+      // compares), the second's in its message.
+      const auto solveAgain = [&](NewtonMethod& method, double maxUpdate, const std::string& how) {
+        const std::string failure = report.failure, message = report.message;
+        if (solveStep(method, u, *x, sr, report, onIteration, maxUpdate)) {
+          report.failure.clear();
+          report.message.clear();
+          return true;
+        }
+        report.message =
+            message + "; solved again " + how + ": " + report.failure + ": " + report.message;
+        report.failure = failure;
+        return false;
+      };
       // A contact Newton that failed with full steps (cycling statuses, overshooting iterates)
       // often converges at the same increment when each step must decrease ||R||: the
       // frictional hex27 tube's unloading failed down to the smallest step and converges in 9
       // iterations so (doc/algorithms.md "Line search retry").
       if (!ok && retry_ && (lastTry || options_.lineSearchRetry == "every-failure") &&
           iteratesFailedToConverge(report.failure)) {
-        // A failed retry reports the method's own failure (the one a table of methods
-        // compares), the retry's in its message.
-        const std::string failure = report.failure, message = report.message;
         ++report.lineSearchRetries;
-        ok = solveStep(*retry_, u, *x, sr, report, onIteration);  // sr counts both attempts
-        if (ok) {
-          sr.lineSearchRetry = true;
-          report.failure.clear();
-          report.message.clear();
-        } else {
-          report.message = message +
-                           "; solved again with the Backtrack line search: " + report.failure +
-                           ": " + report.message;
-          report.failure = failure;
-        }
+        ok = sr.lineSearchRetry = solveAgain(*retry_, 0, "with the Backtrack line search");
       }
+      // Full steps that failed through an update longer than the limit: a tangent nearly
+      // singular (a perfectly plastic tube at its limit load before it meets the hole) threw the
+      // iterate out, and ||R|| is flat along that mode, so the line search creeps; with the
+      // updates limited Newton walks along it (doc/algorithms.md "Update limit"). Whatever the
+      // failure (iterates that did not settle; a tangent that cannot be factorized, or an
+      // element inverted, at a far-flung iterate); where no update was that long, the same
+      // steps would fail again. After the line-search retry, so that what it saved is
+      // unchanged.
+      if (!ok && updateLimit > 0 && sr.longestUpdate > updateLimit)
+        ok = sr.updateLimitRetry =
+            solveAgain(newton_, updateLimit, "with updates limited to " + sci(updateLimit));
     } catch (const Interrupted& i) {
       // The last converged step stays the result; the summary says why the run stopped.
       report.failure = "interrupted";

@@ -59,8 +59,9 @@ struct StaticSolverOptions {
   // constructor): "every-failure" (before each cut, and before the run fails), "last-resort"
   // (only when the step cannot be cut any more), "never".
   std::string lineSearchRetry = "every-failure";
-  // The largest displacement a plain Newton update may make, as a fraction of the model's size
-  // (NonlinearSystem::modelSize); 0: full steps.
+  // The largest displacement a plain Newton update may make when a step whose full steps failed
+  // is solved again, as a fraction of the model's size (NonlinearSystem::modelSize); 0: no
+  // such retry.
   double maxUpdate = 0.05;
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
@@ -159,9 +160,10 @@ class StaticSolver {
                 const RunStart& start = {});
 
  private:
-  // One attempt at the step to time t from the converged state u; x holds the result.
+  // One attempt at the step to time t from the converged state u; x holds the result. maxUpdate
+  // > 0 scales every longer Newton update down to it (NewtonRequest::maxUpdate).
   bool solveStep(NewtonMethod& newton, const Vector& u, Vector& x, StepReport& sr,
-                 RunReport& report, const IterationCallback& onIteration);
+                 RunReport& report, const IterationCallback& onIteration, double maxUpdate = 0);
   // The end of a step of size dt from t: t + dt, or the first nominal or landing time after t
   // when t + dt would pass it.
   double stepEnd(double t, double dt) const;

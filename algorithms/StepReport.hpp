@@ -26,14 +26,16 @@ struct RunTotals {
 struct StepReport {
   int step = 0;  // 1-based, converged steps
   double time = 0;
-  int cuts = 0;                  // bisections before this step converged
-  bool lineSearchRetry = false;  // converged by the line-search retry (Newton/Line Search Retry)
-  double nextStepSize = 0;       // the load-time increment the next step will try (a checkpoint's)
-  RunTotals run;                 // the run's totals up to this step
-  int iterations = 0;            // Newton iterations (linear solves), failed attempts included
-  int statusIterations = 0;      // status fixed-point updates that changed a status
-  int thresholdIterations = 0;   // threshold fixed-point updates that moved a threshold
-  int geometryIterations = 0;    // geometry updates that moved and restarted Newton
+  int cuts = 0;                   // bisections before this step converged
+  bool lineSearchRetry = false;   // converged by the line-search retry (Newton/Line Search Retry)
+  bool updateLimitRetry = false;  // converged with its updates limited (Newton/Max Update)
+  double longestUpdate = 0;       // the largest displacement a Newton update of the step made
+  double nextStepSize = 0;        // the load-time increment the next step will try (a checkpoint's)
+  RunTotals run;                  // the run's totals up to this step
+  int iterations = 0;             // Newton iterations (linear solves), failed attempts included
+  int statusIterations = 0;       // status fixed-point updates that changed a status
+  int thresholdIterations = 0;    // threshold fixed-point updates that moved a threshold
+  int geometryIterations = 0;     // geometry updates that moved and restarted Newton
   double residual = 0;
   CyclingCounts cycling{};
   PhaseSeconds seconds;

@@ -35,10 +35,11 @@ class RunProgress {
     lastElapsed_ = elapsed;
     if (!enabled_) return;
     if (tty_) std::fprintf(stderr, "\r%90s\r", "");
-    std::fprintf(stderr,
-                 "  step %d (%d planned)  t = %g  %d iterations%s%s  |R| = %.3e  elapsed %.1f s\n",
-                 s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "",
-                 s.lineSearchRetry ? " (line-search retry)" : "", s.residual, elapsed);
+    std::fprintf(
+        stderr, "  step %d (%d planned)  t = %g  %d iterations%s%s%s  |R| = %.3e  elapsed %.1f s\n",
+        s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "",
+        s.updateLimitRetry ? " (update-limit retry)" : "",
+        s.lineSearchRetry ? " (line-search retry)" : "", s.residual, elapsed);
   }
 
  private:

@@ -114,8 +114,10 @@ def lines_agree(committed, generated, banded=()):
     of the columns BANDED (indices) hold iteration counts compared by iterations_agree."""
     if banded and committed.startswith("|") and generated.startswith("|"):
         old, new = committed.split("|"), generated.split("|")
+        chaotic = len(old) > 1 and old[1].strip() in CHAOTIC_ROWS
         return len(old) == len(new) and all(
-            cells_agree(a, b) if i in banded else lines_agree(a, b)
+            (outcome_of_chaotic_run(a) and outcome_of_chaotic_run(b) if chaotic
+             else cells_agree(a, b)) if i in banded else lines_agree(a, b)
             for i, (a, b) in enumerate(zip(old, new)))
     if NUMBER.split(committed) != NUMBER.split(generated):
         return False
@@ -129,6 +131,18 @@ def lines_agree(committed, generated, banded=()):
 # where another cycles to the limit (max-iterations); measured: the cell moved from the one to
 # the other when the linear elements' force became K u (the same numbers to round-off).
 INTERCHANGEABLE_FAILURES = {"max-iterations", "singular-tangent"}
+# Rows of such a degenerate run where round-off also picks between converging and those failures:
+# the grazing pad under partial Newton converged in 34 iterations on the machine that wrote the
+# page, fails with max-iterations (||R|| = 0, the statuses still flipping) on an AMD EPYC with
+# its default kernels and with Prescott's, Haswell's and Zen's, converges in 20 with
+# Sandybridge's. Their banded cells agree when both are a convergence ("✓ N") or one of
+# INTERCHANGEABLE_FAILURES; any other failure (a NaN, a crash) still differs.
+CHAOTIC_ROWS = {"grazing: touching, no press"}
+
+
+def outcome_of_chaotic_run(cell):
+    cell = cell.strip()
+    return cell in INTERCHANGEABLE_FAILURES or re.fullmatch(r"✓ \d+", cell) is not None
 
 
 def cells_agree(committed, generated):

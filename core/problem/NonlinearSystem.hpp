@@ -47,8 +47,8 @@ class NonlinearSystem {
   // The largest absolute displacement component of an increment dx (collective): what a Newton
   // update moves the model by. The default takes every entry of dx.
   virtual double largestDisplacement(const Vector& dx) const { return dx.normInf(); }
-  // The diagonal of the model's bounding box in the reference configuration, the length an
-  // update is measured against (0: unknown).
+  // The model's diameter in the reference configuration (Problem: twice the largest distance of
+  // a node from the centroid), the length an update is measured against (0: unknown).
   virtual double modelSize() const { return 0; }
   // Assembles R(x, t) into `residual` (if not null) and dR/dx into tangent() when requested.
   virtual void assemble(const Vector& x, double t, Vector* residual, bool withTangent) = 0;

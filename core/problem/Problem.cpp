@@ -306,14 +306,20 @@ void Problem::completeIncrement(Vector& dx) const {
 }
 
 double Problem::modelSize() const {
+  // Twice the largest distance of a node from the nodes' centroid: a box's diagonal, and unlike
+  // the bounding box's diagonal the same for a rotated copy of the model (so Newton is too).
   const std::vector<double>& coords = model_.mesh->coords;
-  if (coords.empty()) return 0;
-  std::array<double, 3> low{coords[0], coords[1], coords[2]}, high = low;
-  for (std::size_t i = 0; i < coords.size(); ++i) {
-    low[i % 3] = std::min(low[i % 3], coords[i]);
-    high[i % 3] = std::max(high[i % 3], coords[i]);
-  }
-  return std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+  const std::size_t nodes = coords.size() / 3;
+  if (nodes == 0) return 0;
+  std::array<double, 3> centroid{0, 0, 0};
+  for (std::size_t i = 0; i < coords.size(); ++i)
+    centroid[i % 3] += coords[i] / nodes;
+  double largest = 0;
+  for (std::size_t n = 0; n < nodes; ++n)
+    largest =
+        std::max(largest, std::hypot(coords[3 * n] - centroid[0], coords[3 * n + 1] - centroid[1],
+                                     coords[3 * n + 2] - centroid[2]));
+  return 2 * largest;
 }
 
 void Problem::addExternalForces(double t, const double* u, std::vector<double>& f) const {

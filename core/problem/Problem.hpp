@@ -86,7 +86,8 @@ class Problem : public NonlinearSystem {
   void applyDirichlet(double t, Vector& u) const override;
   // Writes the dependent components of an increment from the others (SymmetryConstraints).
   void completeIncrement(Vector& dx) const override;
-  // The diagonal of the mesh's bounding box (every rank holds the whole mesh).
+  // Twice the largest distance of a node from the nodes' centroid (every rank holds the whole
+  // mesh).
   double modelSize() const override;
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;

@@ -1,8 +1,9 @@
 // Newton/Max Update on R(x, t) = atan(x - a t), one unknown: from x = 0, full Newton steps
 // overshoot and diverge once the root is farther than about 1.39 (the textbook case of a
 // tangent that flattens away from the root, as a perfectly plastic body's does past its limit
-// load). Scaled down to the limit, the updates walk to the root and then converge
-// quadratically; an update shorter than the limit is left whole.
+// load). The step is then solved again with the updates scaled down to the limit: they walk to
+// the root and then converge quadratically. A step that converges with full steps, or whose
+// failed updates were all shorter than the limit, is not solved again.
 #include "algorithms/PlainNewton.hpp"
 #include "algorithms/StaticSolver.hpp"
 #include "linear/Klu2Solver.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 class ArctanSystem : public NonlinearSystem {
  public:
-  explicit ArctanSystem(double root) : root_(root) {
+  ArctanSystem(double root, double size) : root_(root), size_(size) {
     map_ = Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()));
     tangent_ = Teuchos::rcp(new Matrix(map_, 1));
     const GO col = 0;
@@ -40,10 +41,10 @@ class ArctanSystem : public NonlinearSystem {
   }
   const Teuchos::RCP<Matrix>& tangent() const override { return tangent_; }
   void commitState(const Vector&, double) override {}
-  double modelSize() const override { return 10.0; }
+  double modelSize() const override { return size_; }
 
  private:
-  double root_;
+  double root_, size_;
   Teuchos::RCP<const Map> map_;
   Teuchos::RCP<Matrix> tangent_;
 };
@@ -53,15 +54,17 @@ struct Outcome {
   double x = 0;
 };
 
-// One load step to t = 1, no cut, no retry: what Newton alone does.
-Outcome run(double root, double maxUpdate) {
-  ArctanSystem system(root);
+// One load step to t = 1, no cut, no line-search retry.
+Outcome run(double root, double maxUpdate, double size = 10.0, int maxIterations = 20) {
+  ArctanSystem system(root, size);
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(system, solver, nullptr);
   StaticSolverOptions options;
   options.maxUpdate = maxUpdate;
   options.lineSearchRetry = "never";
   options.relativeTolerance = 1e-12;
+  options.maxIterations = maxIterations;
+  options.maxCuts = 0;
   StaticSolver stepper(system, nullptr, newton, options, &solver);
   auto x = system.createVector();
   Outcome out;
@@ -75,22 +78,35 @@ TEST(UpdateLimit, FullStepsOvershootARootBeyondTheFlatTangent) {
   EXPECT_FALSE(full.report.converged);
 }
 
-TEST(UpdateLimit, ScaledUpdatesWalkToTheRoot) {
+TEST(UpdateLimit, AFailedStepIsSolvedAgainWithScaledUpdatesThatWalkToTheRoot) {
   // The limit is 0.05 of the model size 10: 0.5 per update.
-  const Outcome limited = run(3.0, 0.05);
+  const Outcome full = run(3.0, 0.0), limited = run(3.0, 0.05);
   ASSERT_TRUE(limited.report.converged) << limited.report.message;
   EXPECT_NEAR(limited.x, 3.0, 1e-10);
-  // Six updates of 0.5 reach the root's neighbourhood; then a few quadratic ones.
-  EXPECT_GE(limited.report.iterations, 6);
-  EXPECT_LE(limited.report.iterations, 12);
+  // The full steps' failed attempt, then six updates of 0.5 to the root's neighbourhood and a
+  // few quadratic ones.
+  EXPECT_GE(limited.report.limitedUpdates, 5);
+  EXPECT_GE(limited.report.iterations, full.report.iterations + 6);
+  EXPECT_LE(limited.report.iterations, full.report.iterations + 12);
 }
 
-TEST(UpdateLimit, LeavesAnUpdateShorterThanTheLimitWhole) {
-  // The first update from 0 is atan(0.3) (1 + 0.09) = 0.318 < 0.5: the same Newton iterates.
-  const Outcome full = run(0.3, 0.0), limited = run(0.3, 0.05);
+TEST(UpdateLimit, AStepThatConvergesWithFullStepsIsNotLimited) {
+  // The first update from 0 is atan(0.3) (1 + 0.09) = 0.318: converges with full steps.
+  const Outcome full = run(0.3, 0.0), limited = run(0.3, 0.001);
   ASSERT_TRUE(full.report.converged && limited.report.converged);
+  EXPECT_EQ(limited.report.limitedUpdates, 0);
   EXPECT_EQ(limited.report.iterations, full.report.iterations);
   EXPECT_EQ(limited.x, full.x);
+}
+
+TEST(UpdateLimit, AFailedStepWhoseUpdatesWereShorterThanTheLimitIsNotSolvedAgain) {
+  // One iteration allowed: the update 12.5 fails the step; the limit is 0.05 x 1000 = 50, so a
+  // second try would take the same step and fail the same way.
+  const Outcome limited = run(3.0, 0.05, 1000.0, 1);
+  EXPECT_FALSE(limited.report.converged);
+  EXPECT_EQ(limited.report.failure, "max-iterations");
+  EXPECT_EQ(limited.report.iterations, 1);
+  EXPECT_EQ(limited.report.limitedUpdates, 0);
 }
 
 }  // namespace
