@@ -1,5 +1,7 @@
 #include "algorithms/NoxNewton.hpp"
 
+#include "base/Elapsed.hpp"
+
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
@@ -24,15 +26,33 @@ using TOE = Thyra::TpetraOperatorVectorExtraction<Scalar, LO, GO, Node>;
 using Teuchos::RCP;
 using Teuchos::rcp;
 
+// Adds the wall seconds of its scope to a phase's total, also when the scope throws (a singular
+// tangent still cost its factorization): NOX calls the model and the solver, so the phases are
+// timed where it calls them.
+class PhaseTimer {
+ public:
+  explicit PhaseTimer(double* total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+  ~PhaseTimer() {
+    if (total_) *total_ += secondsSince(start_);
+  }
+
+ private:
+  double* total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 // J x = b solved by the project's LinearSolver, factored when the factory initializes it.
 class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
  public:
   void set(const RCP<const Thyra::LinearOpBase<double>>& op, LinearSolver* solver,
-           RCP<const Matrix> matrix, const NonlinearSystem* system) {
+           RCP<const Matrix> matrix, const NonlinearSystem* system, double* solveSeconds) {
     op_ = op;
     solver_ = solver;
     matrix_ = std::move(matrix);
     system_ = system;
+    solveSeconds_ = solveSeconds;
   }
   RCP<const Thyra::LinearOpBase<double>> op() const { return op_; }
   RCP<const Thyra::VectorSpaceBase<double>> range() const override { return op_->range(); }
@@ -55,6 +75,7 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
       Thyra::EOpTransp, const Thyra::MultiVectorBase<double>& B,
       const Teuchos::Ptr<Thyra::MultiVectorBase<double>>& X,
       const Teuchos::Ptr<const Thyra::SolveCriteria<double>>) const override {
+    PhaseTimer timer(solveSeconds_);
     auto b = TOE::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = TOE::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
     solver_->solve(*b, *x);  // LinearSolverError propagates: NOX reports the failure
@@ -73,12 +94,14 @@ class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
   LinearSolver* solver_ = nullptr;
   RCP<const Matrix> matrix_;  // the one factored, for the singularity check of each solve
   const NonlinearSystem* system_ = nullptr;
+  double* solveSeconds_ = nullptr;
 };
 
 class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
                       public Teuchos::ParameterListAcceptorDefaultBase {
  public:
-  SolverFactory(LinearSolver& solver, NonlinearSystem& system) : solver_(solver), system_(system) {}
+  SolverFactory(LinearSolver& solver, NonlinearSystem& system, double* solveSeconds)
+      : solver_(solver), system_(system), solveSeconds_(solveSeconds) {}
   bool isCompatible(const Thyra::LinearOpSourceBase<double>&) const override { return true; }
   RCP<Thyra::LinearOpWithSolveBase<double>> createOp() const override { return rcp(new SolverOp); }
   void initializeOp(const RCP<const Thyra::LinearOpSourceBase<double>>& source,
@@ -86,8 +109,12 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
                     const Thyra::ESupportSolveUse) const override {
     // The system's current tangent (with geometry in Newton a re-pairing may have replaced it).
     // The solver analyses on its first matrix by itself.
-    solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
-    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_, system_.tangent(), &system_);
+    {
+      PhaseTimer timer(solveSeconds_);
+      solver_.setMatrix(system_.tangent(), system_.takePatternChanged());
+    }
+    dynamic_cast<SolverOp&>(*op).set(source->getOp(), &solver_, system_.tangent(), &system_,
+                                     solveSeconds_);
   }
   void uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
                       RCP<const Thyra::LinearOpSourceBase<double>>* source,
@@ -113,6 +140,7 @@ class SolverFactory : public Thyra::LinearOpWithSolveFactoryBase<double>,
  private:
   LinearSolver& solver_;
   NonlinearSystem& system_;
+  double* solveSeconds_;  // factorizations and solves: NewtonOutcome::linearSolveSeconds
 };
 
 // The system's tangent as it is now: re-pairing replaces the matrix (and its graph) during a
@@ -171,12 +199,14 @@ class IterateObserver : public NOX::Observer {
 // R(x, t) = 0 at a fixed time t as a Thyra model: f = R, W = dR/dx.
 class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
  public:
+  // The phases' seconds are added to `seconds` (the outcome the solve returns).
   SystemModel(NonlinearSystem& system, LinearSolver& solver, const RCP<const Map>& map,
-              bool geometryInNewton)
+              bool geometryInNewton, NewtonOutcome& seconds)
       : system_(system),
         space_(Thyra::createVectorSpace<Scalar, LO, GO, Node>(map)),
-        factory_(rcp(new SolverFactory(solver, system))),
-        geometryInNewton_(geometryInNewton) {
+        factory_(rcp(new SolverFactory(solver, system, &seconds.linearSolveSeconds))),
+        geometryInNewton_(geometryInNewton),
+        assemblySeconds_(&seconds.assemblySeconds) {
     Thyra::ModelEvaluatorBase::InArgsSetup<double> in;
     in.setModelEvalDescription("contactlab::SystemModel");
     in.setSupports(Thyra::ModelEvaluatorBase::IN_ARG_x);
@@ -212,6 +242,7 @@ class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
                      const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const override {
     auto x = TOE::getConstTpetraVector(in.get_x());
     RCP<Vector> f = out.get_f().is_null() ? Teuchos::null : TOE::getTpetraVector(out.get_f());
+    PhaseTimer timer(assemblySeconds_);
     if (geometryInNewton_) system_.updateGeometry(*x, t_);
     system_.assemble(*x, t_, f.get(), !out.get_W_op().is_null());
   }
@@ -221,6 +252,7 @@ class SystemModel : public Thyra::StateFuncModelEvaluatorBase<double> {
   RCP<SolverFactory> factory_;
   Thyra::ModelEvaluatorBase::InArgs<double> inArgs_, nominal_;
   bool geometryInNewton_;
+  double* assemblySeconds_;
   double t_ = 0;
 };
 
@@ -236,7 +268,7 @@ NoxNewton::NoxNewton(NonlinearSystem& system, LinearSolver& solver, const Contac
 
 NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Observer& observer) {
   NewtonOutcome out;
-  auto model = rcp(new SystemModel(system_, solver_, x.getMap(), request.geometryInNewton));
+  auto model = rcp(new SystemModel(system_, solver_, x.getMap(), request.geometryInNewton, out));
   model->setTime(request.time);
   auto trial = system_.createVector();
   trial->assign(x);

@@ -202,7 +202,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
   o.maxUpdate = newton.get<double>("Max Update");
   if (!(o.maxUpdate >= 0))
-    throw std::invalid_argument("Newton/Max Update must be >= 0 (0: full steps)");
+    throw std::invalid_argument("Newton/Max Update must be >= 0 (0: no such retry)");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   o.predictor = newton.get<std::string>("Predictor");
   if (o.driver == "plain" && o.lineSearch != "Full Step")

@@ -423,12 +423,7 @@ void ContactProblem::completeIncrement(Vector& dx) const {
 }
 
 double ContactProblem::largestDisplacement(const Vector& dx) const {
-  auto entries = dx.getData(0);
-  double local = 0, largest = 0;
-  for (LO i = 0; i < ownedDisplacements_; ++i)
-    local = std::max(local, std::abs(entries[i]));
-  Teuchos::reduceAll(*solid_.dofs().comm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
-  return largest;
+  return solid_.largestDisplacement(*displacement(dx));
 }
 
 void ContactProblem::commitState(const Vector& x, double t) {
