@@ -32,8 +32,10 @@ else
 	$(BUILD_DIR)/apps/contactlab run $(SCENE)
 endif
 
+# ctest runs $(JOBS) tests at once, which fills the cores: one BLAS thread per test process
+# (a run alone gives its rank every core it may use, linear/BlasThreads.hpp).
 test: build
-	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	cd $(BUILD_DIR) && OPENBLAS_NUM_THREADS=1 ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 bench: build
 	./bench/run.sh

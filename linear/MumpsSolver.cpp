@@ -1,6 +1,7 @@
 #include "linear/MumpsSolver.hpp"
 
 #include "base/Elapsed.hpp"
+#include "linear/BlasThreads.hpp"
 #include "linear/MumpsErrors.hpp"
 #include "linear/MumpsSolverImpl.hpp"
 #include "linear/SolverParameters.hpp"
@@ -129,6 +130,7 @@ MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>&
   // ordering is a small part of an analysis, and the ranks already use the cores.
   setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
 #endif
+  shareCoresAmongRanks(rawCommOf(*comm));
   Impl& m = *impl_;
   m.teuchosComm = comm;
   MPI_Comm_dup(rawCommOf(*comm), &m.comm);
