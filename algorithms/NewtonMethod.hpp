@@ -19,7 +19,18 @@ struct NewtonRequest {
   // An update that moves a displacement by more than this is scaled down to it (0: full
   // steps): a failed step's second try (Newton/Max Update times the model's size).
   double maxUpdate = 0;
+  // Give up ("diverged") when this many iterates in a row have ||R|| above kStallFactor times
+  // the solve's first one; 0: never.
+  int stallIterations = 0;
 };
+
+// A contact Newton whose iterates stay two orders of magnitude above where the solve started,
+// Stall Iterations in a row, does not come back (measured on the frictional hex27 tube: its
+// failing full steps climb to 1e3-1e8 x their start by the 4th iterate and stay there until Max
+// Iterations), while converging solves that wander do so lower or shorter: the pad's fixed
+// point at nu = 0.499 spends 9 iterates at 10-16 x its start before it converges (10 x stalled
+// it), the frictional axisymmetric tube 3 in a row above 100 x.
+inline constexpr double kStallFactor = 100;
 
 struct NewtonOutcome {
   int iterations = 0;  // linear solves

@@ -41,6 +41,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
   auto residual = system_.createVector();
   auto increment = system_.createVector();
   double start = 0;
+  int farIterates = 0;  // consecutive iterates with ||R|| > kStallFactor x the start's
   for (int it = 0;; ++it) {
     auto t0 = clock::now();
     if (request.geometryInNewton && it > 0) system_.updateGeometry(x, request.time);
@@ -49,6 +50,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     const double norm = residual->norm2();
     out.residual = norm;
     if (it == 0) start = norm;
+    farIterates = norm > kStallFactor * start ? farIterates + 1 : 0;
     if (!std::isfinite(norm)) {
       out.failure = "nan-detected";
       out.message = "the residual is not finite at iteration " + std::to_string(it);
@@ -59,6 +61,13 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
       out.failure = "diverged";
       out.message = "Newton diverged: ||R|| grew to " + sci(norm);
+      return out;
+    }
+    if (request.stallIterations > 0 && farIterates >= request.stallIterations) {
+      out.failure = "diverged";
+      out.message = "Newton stalled: " + std::to_string(farIterates) + " iterations with ||R|| > " +
+                    sci(kStallFactor * start) + " (" + sci(kStallFactor) + " x its start; now " +
+                    sci(norm) + ")";
       return out;
     }
     if (out.iterations == request.maxIterations) {

@@ -94,6 +94,13 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "nearly singular: a body past its limit load (perfect plasticity), or held only by "
          "contact under load control (doc/algorithms.md \"Update limit\"). A step that "
          "converges with full steps is never limited. >= 0; 0: no such retry. Driver: plain");
+  p->set("Stall Iterations", 8,
+         "A Newton solve whose last Stall Iterations iterates all had ||R|| above 100 times its "
+         "first one gives up ('diverged') and goes to the retries or the cut instead of "
+         "spending the rest of Max Iterations: a frictional step whose full steps fail climbs to "
+         "||R|| 1e3-1e8 times its start and stays there (doc/algorithms.md \"Stalled "
+         "Newton\"). >= 0; 0: never. Not in the update-limit retry (its short updates may take "
+         "long to descend). Driver: plain");
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
          "-R(u_n, t) - K(u_n) du_D, which spreads the prescribed increment du_D through the "
@@ -203,6 +210,9 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.maxUpdate = newton.get<double>("Max Update");
   if (!(o.maxUpdate >= 0))
     throw std::invalid_argument("Newton/Max Update must be >= 0 (0: no such retry)");
+  o.stallIterations = newton.get<int>("Stall Iterations");
+  if (o.stallIterations < 0)
+    throw std::invalid_argument("Newton/Stall Iterations must be >= 0 (0: never)");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   o.predictor = newton.get<std::string>("Predictor");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
@@ -484,6 +494,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.maxIterations = options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
   request.maxUpdate = maxUpdate;
+  request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;

@@ -4,11 +4,11 @@
 // load). The step is then solved again with the updates scaled down to the limit: they walk to
 // the root and then converge quadratically. A step that converges with full steps, or whose
 // failed updates were all shorter than the limit, is not solved again.
+#include "ScalarSystem.hpp"
+
 #include "algorithms/PlainNewton.hpp"
 #include "algorithms/StaticSolver.hpp"
 #include "linear/Klu2Solver.hpp"
-
-#include <Tpetra_Core.hpp>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -16,38 +16,15 @@
 namespace contactlab {
 namespace {
 
-class ArctanSystem : public NonlinearSystem {
- public:
-  ArctanSystem(double root, double size) : root_(root), size_(size) {
-    map_ = Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()));
-    tangent_ = Teuchos::rcp(new Matrix(map_, 1));
-    const GO col = 0;
-    const double zero = 0;
-    tangent_->insertGlobalValues(0, 1, &zero, &col);
-    tangent_->fillComplete();
-  }
-  Teuchos::RCP<Vector> createVector() const override { return Teuchos::rcp(new Vector(map_)); }
-  void applyDirichlet(double, Vector&) const override {}
-  void assemble(const Vector& xv, double t, Vector* residual, bool withTangent) override {
-    const double d = xv.getData(0)[0] - root_ * t;
-    if (residual) residual->getDataNonConst(0)[0] = std::atan(d);
-    if (withTangent) {
-      tangent_->resumeFill();
-      const GO col = 0;
-      const double k = 1 / (1 + d * d);
-      tangent_->replaceGlobalValues(0, 1, &k, &col);
-      tangent_->fillComplete();
-    }
-  }
-  const Teuchos::RCP<Matrix>& tangent() const override { return tangent_; }
-  void commitState(const Vector&, double) override {}
-  double modelSize() const override { return size_; }
-
- private:
-  double root_, size_;
-  Teuchos::RCP<const Map> map_;
-  Teuchos::RCP<Matrix> tangent_;
-};
+// R(x, t) = atan(x - root t).
+test::ScalarSystem arctan(double root, double size) {
+  return test::ScalarSystem([root](double x, double t) { return std::atan(x - root * t); },
+                            [root](double x, double t) {
+                              const double d = x - root * t;
+                              return 1 / (1 + d * d);
+                            },
+                            size);
+}
 
 struct Outcome {
   RunReport report;
@@ -56,7 +33,7 @@ struct Outcome {
 
 // One load step to t = 1, no cut, no line-search retry.
 Outcome run(double root, double maxUpdate, double size = 10.0, int maxIterations = 20) {
-  ArctanSystem system(root, size);
+  test::ScalarSystem system = arctan(root, size);
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(system, solver, nullptr);
   StaticSolverOptions options;
