@@ -530,18 +530,8 @@ TEST_P(ContactProblemTest, NoxNewtonMatchesThePlainNewton) {
       steps.driver = "nox";
       steps.lineSearch = lineSearch;
     }
-    // Each driver reports its phases' seconds: the contact terms are assembled within the
-    // assembly (steps.csv prints the difference) and every iteration solved a linear system.
-    PhaseSeconds seconds;
-    const RunReport report =
-        runStatic(contact, &contact, *solver, steps, *x, [&](const StepReport& sr, const Vector&) {
-          seconds.assembly += sr.seconds.assembly;
-          seconds.linearSolve += sr.seconds.linearSolve;
-        });
+    const RunReport report = runStatic(contact, &contact, *solver, steps, *x);
     EXPECT_TRUE(report.converged) << lineSearch << ": " << report.message;
-    EXPECT_GE(seconds.assembly, contact.contactSeconds()) << lineSearch;
-    EXPECT_GT(contact.contactSeconds(), 0.0) << lineSearch;
-    EXPECT_GT(seconds.linearSolve, 0.0) << lineSearch;
     return std::make_pair(x, report);
   };
   const auto [reference, plain] = solveWith("");
