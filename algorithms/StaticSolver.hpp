@@ -63,8 +63,8 @@ struct StaticSolverOptions {
   // is solved again, as a fraction of the model's size (NonlinearSystem::modelSize); 0: no
   // such retry.
   double maxUpdate = 0.05;
-  // A plain Newton solve gives up when this many iterations have not lowered ||R|| below its
-  // smallest value so far (NewtonRequest::stallIterations); 0: never.
+  // A plain Newton solve gives up when this many iterates in a row had ||R|| above
+  // kStallFactor times its first one (NewtonRequest::stallIterations); 0: never.
   int stallIterations = 8;
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
