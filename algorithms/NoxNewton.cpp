@@ -26,22 +26,7 @@ using TOE = Thyra::TpetraOperatorVectorExtraction<Scalar, LO, GO, Node>;
 using Teuchos::RCP;
 using Teuchos::rcp;
 
-// Adds the wall seconds of its scope to a phase's total, also when the scope throws (a singular
-// tangent still cost its factorization): NOX calls the model and the solver, so the phases are
-// timed where it calls them.
-class PhaseTimer {
- public:
-  explicit PhaseTimer(double* total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  PhaseTimer(const PhaseTimer&) = delete;
-  PhaseTimer& operator=(const PhaseTimer&) = delete;
-  ~PhaseTimer() {
-    if (total_) *total_ += secondsSince(start_);
-  }
-
- private:
-  double* total_;
-  std::chrono::steady_clock::time_point start_;
-};
+// NOX calls the model and the solver, so the phases are timed (PhaseTimer) where it calls them.
 
 // J x = b solved by the project's LinearSolver, factored when the factory initializes it.
 class SolverOp : public Thyra::LinearOpWithSolveBase<double> {
