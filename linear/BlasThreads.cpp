@@ -7,10 +7,7 @@
 #include <thread>
 
 namespace contactlab {
-namespace {
 
-// The cores this process may run on (taskset, a batch system's binding, a container's limit
-// through its affinity mask), not the machine's.
 int usableCores() {
   cpu_set_t set;
   CPU_ZERO(&set);
@@ -26,8 +23,6 @@ int ranksOnThisNode(MPI_Comm comm) {
   MPI_Comm_free(&node);
   return ranks;
 }
-
-}  // namespace
 
 int blasThreadsPerRank(int cores, int ranksOnNode) {
   return std::max(1, cores / std::max(1, ranksOnNode));

@@ -12,6 +12,13 @@ namespace contactlab {
 // The cores of a node shared out among its ranks: at least one thread each.
 int blasThreadsPerRank(int cores, int ranksOnNode);
 
+// The cores this process may run on (taskset, a batch system's binding, a container's limit
+// through its affinity mask), not the machine's; at least 1.
+int usableCores();
+
+// The ranks of `comm` that share this process' node (memory). Collective on `comm`.
+int ranksOnThisNode(MPI_Comm comm);
+
 // Sets OpenBLAS' thread count for this process to blasThreadsPerRank(the cores this process
 // may run on, the ranks of `comm` on this node). Collective on `comm`. A user's
 // OPENBLAS_NUM_THREADS or OMP_NUM_THREADS wins: then nothing is set. Returns the BLAS' thread

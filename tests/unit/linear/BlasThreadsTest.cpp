@@ -1,11 +1,13 @@
 // The BLAS' threads per rank: the node's cores shared out among its ranks, a user's setting kept.
 #include "linear/BlasThreads.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <optional>
 #include <string>
+#include <thread>
 
 namespace contactlab {
 namespace {
@@ -16,6 +18,15 @@ TEST(BlasThreads, TheCoresAreSharedOutAmongTheRanksOfANode) {
   EXPECT_EQ(blasThreadsPerRank(2, 3), 1);  // oversubscribed: one each, never zero
   EXPECT_EQ(blasThreadsPerRank(8, 3), 2);
   EXPECT_EQ(blasThreadsPerRank(1, 0), 1);
+}
+
+// The share's inputs: the tests run on one machine, so every rank is on this node.
+TEST(BlasThreads, ItsInputsAreThisProcessCoresAndTheRanksOnItsNode) {
+  int ranks = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  EXPECT_EQ(ranksOnThisNode(MPI_COMM_WORLD), ranks);
+  EXPECT_GE(usableCores(), 1);
+  EXPECT_LE(usableCores(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
 }
 
 // Sets an environment variable for the scope of a test, and puts back what was there.
@@ -46,16 +57,8 @@ TEST(BlasThreads, EachRankGetsItsShareUnlessTheUserSaidOtherwise) {
   using GetParallel = int (*)();
   const auto parallel = reinterpret_cast<GetParallel>(dlsym(RTLD_DEFAULT, "openblas_get_parallel"));
   if (parallel == nullptr) GTEST_SKIP() << "the BLAS is not OpenBLAS";
-  int ranks = 1, ranksOnNode = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  MPI_Comm node;
-  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-  MPI_Comm_size(node, &ranksOnNode);
-  MPI_Comm_free(&node);
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  ASSERT_EQ(sched_getaffinity(0, sizeof(set), &set), 0);
-  const int share = parallel() == 0 ? 1 : blasThreadsPerRank(CPU_COUNT(&set), ranksOnNode);
+  const int ranksOnNode = ranksOnThisNode(MPI_COMM_WORLD);
+  const int share = parallel() == 0 ? 1 : blasThreadsPerRank(usableCores(), ranksOnNode);
   {
     // The user's value, read by OpenBLAS when it loaded, stays: contactlab sets nothing.
     ScopedEnv openblas("OPENBLAS_NUM_THREADS", "1");
