@@ -331,12 +331,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       convergedContact = summary.contactBlock(cr).set("time", s.time);
     }
     // Read before the uniqueness check, whose assemblies count in the next step's timings.
-    const double pairingSeconds = contact ? contact->pairingSeconds() : 0.0;
-    const double contactSeconds = contact ? contact->contactSeconds() : 0.0;
+    std::optional<ContactPhaseSeconds> contactSeconds;
+    if (contact) contactSeconds = contact->phaseSeconds();
     const std::optional<double> condition = solver->conditionEstimate();
     std::optional<std::string> criticalMu;
     if (uniqueness) criticalMu = uniqueness->check(s, state);
-    stepsCsv.addStep(s, cr, condition, pairingSeconds, contactSeconds, criticalMu);
+    stepsCsv.addStep(s, cr, condition, contactSeconds, criticalMu);
     if (root) stepsCsv.write();
     probes.record(*solution, s.time);
     if (!sm.profiles.empty()) {

@@ -105,9 +105,9 @@ int main(int argc, char** argv) {
     }
     const double rms = std::sqrt(squares / std::max(inside, 1));
     const int it = std::max(report.iterations, 1);
-    const double assembly = report.seconds.assembly - contact.contactSeconds();
+    const ContactPhaseSeconds seconds = contact.phaseSeconds();
     const double total =
-        assembly + contact.pairingSeconds() + contact.contactSeconds() + report.seconds.linearSolve;
+        seconds.solid + seconds.pairing + seconds.contact + report.seconds.linearSolve;
     if (root) {
       std::printf(
           "| %s | %s | %lld | %zu | %d | %d%s | %.3f | %.4f | %.4f | %.3f | %.1f %% | %.1f | "
@@ -115,11 +115,9 @@ int main(int argc, char** argv) {
           name.c_str(), type.c_str(),
           static_cast<long long>(solid.dofs().numGlobalDofs() + contact.numMultipliers()),
           contact.numPoints(), comm->getSize(), report.iterations,
-          report.converged ? "" : (" (" + report.failure + ")").c_str(), assembly / it,
-          contact.pairingSeconds() / it, contact.contactSeconds() / it,
-          report.seconds.linearSolve / it,
-          100 * (contact.pairingSeconds() + contact.contactSeconds()) / total, a / h, 100 * error,
-          100 * rms);
+          report.converged ? "" : (" (" + report.failure + ")").c_str(), seconds.solid / it,
+          seconds.pairing / it, seconds.contact / it, report.seconds.linearSolve / it,
+          100 * (seconds.pairing + seconds.contact) / total, a / h, 100 * error, 100 * rms);
       std::fflush(stdout);
     }
   }

@@ -385,7 +385,10 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
   }
   auto u = displacement(x);
   Teuchos::RCP<Vector> ru = residual ? solid_.createVector() : Teuchos::null;
-  solid_.assemble(*u, t, ru.get(), withTangent);
+  {
+    PhaseTimer timer(&seconds_.solid);
+    solid_.assemble(*u, t, ru.get(), withTangent);
+  }
   const auto start = std::chrono::steady_clock::now();
   state_->import(x);
   assembler_->begin(residual, ru.get(), withTangent ? solid_.tangent().get() : nullptr);
@@ -409,7 +412,7 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
   assembler_->end();
   if (contactForces) solid_.addToReactions(*contactForces);
   solid_.symmetry().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
-  contactSeconds_ += secondsSince(start);
+  seconds_.contact += secondsSince(start);
 }
 
 AssemblyFailure ContactProblem::assemblyFailure() const {

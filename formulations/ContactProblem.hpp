@@ -44,6 +44,13 @@ class ContactPointKernel;
 class ContactSurfaceState;
 struct ContactPoint;
 
+// Wall seconds of a contact problem's phases, cumulated since the start.
+struct ContactPhaseSeconds {
+  double pairing = 0;  // updateGeometry
+  double solid = 0;    // the solid's assembly within the contact problem's
+  double contact = 0;  // the contact terms: evaluation and insertion of the contact points
+};
+
 class ContactProblem : public NonlinearSystem, public ContactControls {
  public:
   // `solid` must outlive this. Throws InputError for a zone whose groups are missing.
@@ -111,10 +118,10 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // Adds contact_pressure, tangential_traction, gap, slip, contact_status to a piece made by
   // solid().outputPiece (points in the solid's overlap-node order).
   void addPointData(MeshPiece& piece) const;
-  // Wall time spent so far in pairing (updateGeometry) and in the contact terms (evaluation and
-  // insertion of the contact points in assemble; the solid's assembly is not counted).
-  double pairingSeconds() const { return pairingSeconds_; }
-  double contactSeconds() const { return contactSeconds_; }
+  // Wall time spent so far in pairing (updateGeometry), in the solid's assembly and in the
+  // contact terms (evaluation and insertion of the contact points) within assemble(): every
+  // evaluation counts, a Newton iteration's or not, so no phase is a difference of two timers.
+  ContactPhaseSeconds phaseSeconds() const { return seconds_; }
 
  private:
   // updateGeometry's work: pairs every point at state x and time t and freezes that geometry.
@@ -153,7 +160,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // Why the last geometry update failed on an iterate (empty: it did not): assemble() then
   // returns NaN and assemblyFailure() names it "contact-geometry-failed".
   std::string geometryFailure_;
-  double pairingSeconds_ = 0, contactSeconds_ = 0;
+  ContactPhaseSeconds seconds_;
   int statusChanges_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
   GeometricTerms geometricTerms_ = GeometricTerms::none;

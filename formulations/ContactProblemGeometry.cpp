@@ -100,7 +100,7 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
   if (repaired || assembler_->matrix().is_null() || layoutChanged_)
     assembler_->buildGraph(*solid_.tangent(), points_);
   layoutChanged_ = false;
-  pairingSeconds_ += secondsSince(start);
+  seconds_.pairing += secondsSince(start);
   return moved;
 }
 

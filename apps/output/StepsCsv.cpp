@@ -44,13 +44,16 @@ StepsCsv::StepsCsv(std::string path, bool criticalMuColumn)
     : path_(std::move(path)), table_(stepColumns(criticalMuColumn)) {}
 
 void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
-                       std::optional<double> condition, double cumulatedPairingSeconds,
-                       double cumulatedContactSeconds,
+                       std::optional<double> condition,
+                       const std::optional<ContactPhaseSeconds>& contactSeconds,
                        const std::optional<std::string>& criticalMu) {
-  const double pairing = cumulatedPairingSeconds - lastPairingSeconds_;
-  const double contactTerms = cumulatedContactSeconds - lastContactSeconds_;
-  lastPairingSeconds_ = cumulatedPairingSeconds;
-  lastContactSeconds_ = cumulatedContactSeconds;
+  double assembly = s.seconds.assembly, pairing = 0, contactTerms = 0;
+  if (contactSeconds) {
+    assembly = contactSeconds->solid - last_.solid;
+    pairing = contactSeconds->pairing - last_.pairing;
+    contactTerms = contactSeconds->contact - last_.contact;
+    last_ = *contactSeconds;
+  }
   int events = 0;
   for (int k = 1; k < kCyclingKinds; ++k)
     events += s.cycling[k];
@@ -76,7 +79,7 @@ void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
     row.push_back(F::format(s.cycling[k]));
   row.push_back(condition ? F::format(*condition) : std::string());
   if (condition) maxCondition_ = std::max(maxCondition_, *condition);
-  for (double v : {s.seconds.assembly - contactTerms, pairing, contactTerms, s.seconds.linearSolve})
+  for (double v : {assembly, pairing, contactTerms, s.seconds.linearSolve})
     row.push_back(F::format(v));
   if (criticalMu) row.push_back(*criticalMu);
   table_.addFormattedRow(std::move(row));

@@ -19,13 +19,14 @@ class StepsCsv {
   // criticalMuColumn: the run checks uniqueness after each step (Output/Critical Mu Check).
   StepsCsv(std::string path, bool criticalMuColumn);
 
-  // One converged step. cumulatedPairingSeconds and cumulatedContactSeconds are the contact
-  // problem's timers since the start (0 without contact): the row gets this step's share, and
-  // the contact terms are taken out of the assembly time, which includes them.
+  // One converged step. contactSeconds: the contact problem's timers since the start (none
+  // without contact); the row gets this step's share of each, and assembly_s is the solid's
+  // share (without contact: the step's assembly seconds).
   // criticalMu: the cell of the critical mu column (given exactly when it exists).
   void addStep(const StepReport& step, const ContactResultants& resultants,
-               std::optional<double> conditionEstimate, double cumulatedPairingSeconds,
-               double cumulatedContactSeconds, const std::optional<std::string>& criticalMu);
+               std::optional<double> conditionEstimate,
+               const std::optional<ContactPhaseSeconds>& contactSeconds,
+               const std::optional<std::string>& criticalMu);
 
   // A run continued from a checkpoint (--restart): the file's first `rows` rows (those of the
   // steps up to the checkpoint) come before the new ones. Call on rank 0 only, before write().
@@ -41,8 +42,8 @@ class StepsCsv {
  private:
   const std::string path_;
   CsvWriter table_;
-  std::string earlierRows_;  // resume(): the earlier run's rows, as written
-  double lastPairingSeconds_ = 0, lastContactSeconds_ = 0;
+  std::string earlierRows_;   // resume(): the earlier run's rows, as written
+  ContactPhaseSeconds last_;  // the contact problem's timers at the previous row
   double maxCondition_ = -1;
 };
 

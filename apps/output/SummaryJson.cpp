@@ -148,8 +148,8 @@ JsonValue SummaryJson::forces(const std::vector<Reaction>& list) const {
 JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
                              const MaterialStateSummary& materialState, int ranks) const {
   const auto& params = *sm_.scene.params;
-  const double pairingSeconds = contact_ ? contact_->pairingSeconds() : 0.0;
-  const double contactSeconds = contact_ ? contact_->contactSeconds() : 0.0;
+  const ContactPhaseSeconds contactSeconds =
+      contact_ ? contact_->phaseSeconds() : ContactPhaseSeconds{0, report.seconds.assembly, 0};
   JsonValue cycling = JsonValue::object();
   for (int k = 1; k < kCyclingKinds; ++k)
     cycling.set(cyclingKindName(static_cast<CyclingKind>(k)), report.cycling[k]);
@@ -190,9 +190,9 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
       .set("cycling", cycling)
       .set("seconds", JsonValue::object()
                           .set("setup", record.setupSeconds)
-                          .set("assembly", report.seconds.assembly - contactSeconds)
-                          .set("pairing", pairingSeconds)
-                          .set("contact", contactSeconds)
+                          .set("assembly", contactSeconds.solid)
+                          .set("pairing", contactSeconds.pairing)
+                          .set("contact", contactSeconds.contact)
                           .set("linear_solve", report.seconds.linearSolve)
                           .set("output", report.seconds.output)
                           .set("total", record.totalSeconds))

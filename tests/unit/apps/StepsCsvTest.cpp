@@ -46,8 +46,8 @@ TEST(StepsCsv, CriticalMuColumnOnlyWhenTheCheckRuns) {
   StepsCsv a(with, true), b(without, false);
   StepReport s;
   s.step = 1;
-  a.addStep(s, {}, std::nullopt, 0, 0, std::string("inf"));
-  b.addStep(s, {}, std::nullopt, 0, 0, std::nullopt);
+  a.addStep(s, {}, std::nullopt, std::nullopt, std::string("inf"));
+  b.addStep(s, {}, std::nullopt, std::nullopt, std::nullopt);
   a.write();
   b.write();
   const auto ra = readCsv(with), rb = readCsv(without);
@@ -69,7 +69,7 @@ TEST(StepsCsv, ContactForceColumns) {
   r.normalForceMagnitude = 5.0;
   r.normalForce = {0.5, 0.0, -4.0};
   r.tangentialForce = {1.5, 0.25, 0.125};
-  csv.addStep(s, r, std::nullopt, 0, 0, std::nullopt);
+  csv.addStep(s, r, std::nullopt, std::nullopt, std::nullopt);
   csv.write();
   const auto rows = readCsv(path);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "normal_force")), 5.0);
@@ -79,26 +79,32 @@ TEST(StepsCsv, ContactForceColumns) {
   std::filesystem::remove(path);
 }
 
-// The contact problem's timers are cumulated over the run: each row gets its step's share, and
-// the contact terms come out of the assembly time, which includes them.
+// The contact problem's timers are cumulated over the run: each row gets its step's share of
+// each (the solid's assembly, pairing, contact terms), never a difference of two timers (the
+// contact terms taken out of the Newton solves' assembly seconds came out negative where contact
+// was evaluated outside them). Without contact, assembly_s is the step's assembly seconds.
 TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
   const std::string path = scratch("phases.csv");
   StepsCsv csv(path, false);
   StepReport s;
   s.step = 1;
-  s.seconds.assembly = 5.0;
-  csv.addStep(s, {}, 10.0, 1.0, 2.0, std::nullopt);
+  s.seconds.assembly = 0.001;  // a step's Newton assemblies: not what the contact rows print
+  csv.addStep(s, {}, 10.0, ContactPhaseSeconds{1.0, 3.0, 2.0}, std::nullopt);
   s.step = 2;
-  csv.addStep(s, {}, 30.0, 1.5, 2.5, std::nullopt);
-  csv.addStep(s, {}, std::nullopt, 1.5, 2.5, std::nullopt);
+  csv.addStep(s, {}, 30.0, ContactPhaseSeconds{1.5, 7.5, 2.5}, std::nullopt);
+  s.seconds.assembly = 5.0;
+  csv.addStep(s, {}, std::nullopt, std::nullopt, std::nullopt);
   csv.write();
   const auto rows = readCsv(path);
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "pairing_s")), 1.0);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "assembly_s")), 3.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_s")), 2.0);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "pairing_s")), 0.5);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "contact_s")), 0.5);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 2, "assembly_s")), 4.5);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 3, "assembly_s")), 5.0);
+  EXPECT_DOUBLE_EQ(std::stod(column(rows, 3, "pairing_s")), 0.0);
   EXPECT_EQ(column(rows, 3, "condition_estimate"), "");
   EXPECT_DOUBLE_EQ(csv.maxConditionEstimate(), 30.0);
   std::filesystem::remove(path);
