@@ -145,7 +145,11 @@ TEST_P(FactorizationReuse, AFewChangedRowsAreSolvedThroughACorrection) {
     const auto x = solved(solver, A, *b);
     MumpsSolver direct(withMode(mode, false), world());
     const auto reference = solved(direct, A, *b);
-    EXPECT_LT(test::relativeResidual(*A, *b, *x), 1e-12);
+    // The solver's promise is the backward error (kCorrectionBackwardError = 1e-13; here
+    // ~3e-17). The relative residual is that times ||A|| ||x|| / ||b|| ~ 1e4: ~3e-13 usually,
+    // but on 2 ranks MUMPS' dynamic scheduling gave once in 25 loaded runs a factorization
+    // whose correction reached 3.5e-10 (a backward error ~3.5e-14, accepted, no refinement).
+    EXPECT_LT(test::backwardError(*A, *b, *x), 1e-13);
     EXPECT_LT(test::relativeDifference(*x, *reference), 1e-10);
   }
   EXPECT_EQ(solver.stats().factorizations, 1);

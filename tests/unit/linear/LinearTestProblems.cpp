@@ -1,5 +1,6 @@
 #include "LinearTestProblems.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Import.hpp>
 
 #include <algorithm>
@@ -174,6 +175,32 @@ double relativeResidual(const Matrix& A, const MultiVector& b, const MultiVector
   double worst = 0;
   for (size_t j = 0; j < rn.size(); ++j)
     worst = std::max(worst, rn[j] / bn[j]);
+  return worst;
+}
+
+double backwardError(const Matrix& A, const MultiVector& b, const MultiVector& x) {
+  MultiVector r(b, Teuchos::Copy);
+  A.apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+  const size_t n = b.getNumVectors();
+  std::vector<double> rn(n), xn(n), bn(n);
+  r.normInf(rn);
+  x.normInf(xn);
+  b.normInf(bn);
+  double localNorm = 0;  // ||A||_inf: the largest absolute row sum
+  for (LO row = 0; row < static_cast<LO>(A.getNodeNumRows()); ++row) {
+    Matrix::local_inds_host_view_type cols;
+    Matrix::values_host_view_type values;
+    A.getLocalRowView(row, cols, values);
+    double sum = 0;
+    for (size_t k = 0; k < values.extent(0); ++k)
+      sum += std::abs(values(k));
+    localNorm = std::max(localNorm, sum);
+  }
+  double norm = 0;
+  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MAX, localNorm, Teuchos::outArg(norm));
+  double worst = 0;
+  for (size_t j = 0; j < n; ++j)
+    worst = std::max(worst, rn[j] / (norm * xn[j] + bn[j]));
   return worst;
 }
 

@@ -51,6 +51,9 @@ Teuchos::RCP<MultiVector> rightHandSide(const Matrix& A, size_t columns);
 std::vector<double> gathered(const MultiVector& v, size_t col);
 // max_j ||b_j - A x_j|| / ||b_j||.
 double relativeResidual(const Matrix& A, const MultiVector& b, const MultiVector& x);
+// max_j ||b_j - A x_j||_inf / (||A||_inf ||x_j||_inf + ||b_j||_inf): the normwise backward
+// error, what a solver can promise whatever the matrix' condition (a direct solve's is ~1e-16).
+double backwardError(const Matrix& A, const MultiVector& b, const MultiVector& x);
 // max_j ||x_j - y_j|| / ||y_j||, comparing by global id (x and y may have different maps).
 double relativeDifference(const MultiVector& x, const MultiVector& y);
 
