@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -20,7 +21,8 @@ struct NewtonRequest {
   // steps): a failed step's second try (Newton/Max Update times the model's size).
   double maxUpdate = 0;
   // Give up ("diverged") when this many iterates in a row have ||R|| above kStallFactor times
-  // the solve's first one; 0: never.
+  // the solve's first one, or when the iterates repeat a two-iterate cycle (newtonCycles);
+  // 0: never.
   int stallIterations = 0;
 };
 
@@ -31,6 +33,14 @@ struct NewtonRequest {
 // point at nu = 0.499 spends 9 iterates at 10-16 x its start before it converges (10 x stalled
 // it), the frictional axisymmetric tube 3 in a row above 100 x.
 inline constexpr double kStallFactor = 100;
+
+// Whether the last five residual norms of a solve alternate a, b, a, b, a (each equal to the one
+// two iterates before to 1e-9 relative; a = b too): Newton on a piecewise law revisiting the
+// same two iterates, after the cycling treatment had its chance (it acts on the 4th
+// alternation of a point's statuses and changes the residual when it changes anything). The
+// frictional hex27 tube's unloading step cycled so between ||R|| = 50.35 and 54.10 for its last
+// 12 iterations before Max Iterations.
+bool newtonCycles(const std::vector<double>& norms);
 
 struct NewtonOutcome {
   int iterations = 0;  // linear solves

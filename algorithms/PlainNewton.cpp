@@ -23,6 +23,15 @@ bool newtonConverged(double norm, const NewtonRequest& request, const ContactCon
   return iteration == 0 || controls == nullptr || controls->statusChanges() == 0;
 }
 
+bool newtonCycles(const std::vector<double>& norms) {
+  const std::size_t n = norms.size();
+  if (n < 5) return false;
+  const auto same = [&](std::size_t a, std::size_t b) {
+    return std::abs(norms[a] - norms[b]) <= 1e-6 * std::max(norms[a], norms[b]);
+  };
+  return same(n - 1, n - 3) && same(n - 3, n - 5) && same(n - 2, n - 4);
+}
+
 std::string singularTangentMessage(int iteration, const std::string& detail) {
   return "the tangent is singular at iteration " + std::to_string(iteration) + " (" + detail + ")";
 }
@@ -42,6 +51,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
   // Consecutive iterates with ||R|| > kStallFactor x the start's. Relative to the start alone:
   // a solve that iterates started above its target (one at or below it converges at once).
   int farIterates = 0;
+  std::vector<double> norms;  // this solve's ||R|| per iterate
   for (int it = 0;; ++it) {
     {
       PhaseTimer timer(&out.assemblySeconds);
@@ -51,6 +61,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     const double norm = residual->norm2();
     out.residual = norm;
     if (it == 0) start = norm;
+    norms.push_back(norm);
     farIterates = norm > kStallFactor * start ? farIterates + 1 : 0;
     if (!std::isfinite(norm)) {
       out.failure = "nan-detected";
@@ -69,6 +80,12 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.message = "Newton stalled: " + std::to_string(farIterates) + " iterations with ||R|| > " +
                     sci(kStallFactor * start) + " (" + sci(kStallFactor) + " x its start; now " +
                     sci(norm) + ")";
+      return out;
+    }
+    if (request.stallIterations > 0 && newtonCycles(norms)) {
+      out.failure = "diverged";
+      out.message = "Newton cycles: ||R|| alternates " + sci(norms[norms.size() - 2]) + " and " +
+                    sci(norm) + " (the same two iterates)";
       return out;
     }
     if (out.iterations == request.maxIterations) {

@@ -99,7 +99,9 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "first one gives up ('diverged') and goes to the retries or the cut instead of "
          "spending the rest of Max Iterations: a frictional step whose full steps fail climbs to "
          "||R|| 1e3-1e8 times its start and stays there (doc/algorithms.md \"Stalled "
-         "Newton\"). >= 0; 0: never. Not in the update-limit retry (its short updates may take "
+         "Newton\"); so does one whose last five ||R|| alternate a, b, a, b, a to 1e-6 (a "
+         "cycle the cycling treatment did not break). >= 0; 0: never (neither test). Not in the "
+         "update-limit retry (its short updates may take "
          "long to descend). Driver: plain");
   p->set("Predictor", "automatic",
          "Start of a step whose prescribed displacements move: 'tangent' solves K(u_n) du = "
