@@ -4,7 +4,8 @@
 usage: check_pad.py CONTACTLAB SCENE WORKDIR MU
 
 Asserts what doc/algorithms.md reports: the generalized and partial Newton without treatment cycle
-(sub-cycling 1 detected) and stop with max-iterations, and so does the fixed point
+(sub-cycling 1 detected) and stop with 'diverged', "Newton cycles" (a residual that repeats a
+two-iterate cycle; before that test, max-iterations), and so does the fixed point
 (statuses-not-converged); 'automatic' saves the two Newton presets; 'forced' saves the fixed point
 and the two Newton presets (at mu = 0.45 these end with degraded-contact without the tangent
 predictor on the drag steps, doc/algorithms.md "Predictor": their forced state violates the contact
@@ -42,8 +43,10 @@ for method in ["generalized-newton", "partial-newton", "fixed-point"]:
                 f"Algorithm/Cycling Treatment={treatment}")
         label = f"mu={mu} {method} {treatment}: {s['failure'] or 'converged'} {s['cycling']}"
         if treatment == "none" or (method == "fixed-point" and treatment == "automatic"):
-            want = "statuses-not-converged" if method == "fixed-point" else "max-iterations"
+            want = "statuses-not-converged" if method == "fixed-point" else "diverged"
             check(label + f" (expected {want})", s["failure"] == want)
+            if method != "fixed-point":
+                check(label + " says Newton cycles", "Newton cycles" in (s["message"] or ""))
             if method != "fixed-point":
                 check(label + " detects sub-cycling-1", s["cycling"]["sub-cycling-1"] > 0)
         else:
