@@ -35,7 +35,7 @@ struct NewtonRequest {
 inline constexpr double kStallFactor = 100;
 
 // Whether the last five residual norms of a solve alternate a, b, a, b, a (each equal to the one
-// two iterates before to 1e-9 relative; a = b too): Newton on a piecewise law revisiting the
+// two iterates before to 1e-6 relative; a = b too): Newton on a piecewise law revisiting the
 // same two iterates, after the cycling treatment had its chance (it acts on the 4th
 // alternation of a point's statuses and changes the residual when it changes anything). The
 // frictional hex27 tube's unloading step cycled so between ||R|| = 50.35 and 54.10 for its last

@@ -13,7 +13,6 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -47,7 +46,7 @@ bool ContactProblem::updateGeometry(const Vector& x, double t) {
 }
 
 bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
-  const auto start = std::chrono::steady_clock::now();
+  PhaseTimer timer(&seconds_.pairing);
   state_->import(x);
   bool moved = false, repaired = false;
   std::vector<std::string> deep;
@@ -100,7 +99,6 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
   if (repaired || assembler_->matrix().is_null() || layoutChanged_)
     assembler_->buildGraph(*solid_.tangent(), points_);
   layoutChanged_ = false;
-  seconds_.pairing += secondsSince(start);
   return moved;
 }
 
