@@ -410,14 +410,18 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (uniqueness) record.possiblyNonUnique = uniqueness->possiblyNonUnique();
     record.totalSeconds = elapsed();
     const LinearSolverStats& work = solver->stats();
-    record.linearWork = JsonValue::object()
-                            .set("analyses", work.analyses)
-                            .set("factorizations", work.factorizations)
-                            .set("reused_factorizations", work.reusedFactorizations)
-                            .set("corrections", work.corrections)
-                            .set("factorization_seconds", work.factorizationSeconds)
-                            .set("correction_seconds", work.correctionSeconds)
-                            .set("solve_seconds", work.solveSeconds);
+    record.linearWork =
+        JsonValue::object()
+            .set("analyses", work.analyses)
+            .set("factorizations", work.factorizations)
+            .set("reused_factorizations", work.reusedFactorizations)
+            .set("corrections", work.corrections)
+            .set("single_precision_factorizations", work.singlePrecisionFactorizations)
+            .set("refinement_steps", work.refinementSteps)
+            .set("double_precision_fallbacks", work.doublePrecisionFallbacks)
+            .set("factorization_seconds", work.factorizationSeconds)
+            .set("correction_seconds", work.correctionSeconds)
+            .set("solve_seconds", work.solveSeconds);
     summary.build(report, record, materialState, comm->getSize()).write(outDir + "/summary.json");
     if (report.converged) {
       std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps

@@ -77,17 +77,24 @@ find_path(MUMPS_INCLUDE_DIR dmumps_c.h HINTS ${_contactlab_hint_MUMPS} ${_contac
 # build: linking them directly from contactlab_linear puts them first.
 find_library(MUMPS_LIBRARY NAMES dmumps_ptscotch dmumps HINTS ${_contactlab_hint_MUMPS}
              ${_contactlab_required})
+# The single-precision MUMPS of the same build factorizes large matrices whose solves are then
+# refined in double (Linear Solver/mumps/Precision, doc/performance.md).
 if(MUMPS_LIBRARY MATCHES "ptscotch")
+  find_library(MUMPS_SINGLE_LIBRARY smumps_ptscotch HINTS ${_contactlab_hint_MUMPS}
+               ${_contactlab_required})
   find_library(MUMPS_COMMON_LIBRARY mumps_common_ptscotch HINTS ${_contactlab_hint_MUMPS}
                ${_contactlab_required})
 else()
+  find_library(MUMPS_SINGLE_LIBRARY smumps HINTS ${_contactlab_hint_MUMPS}
+               ${_contactlab_required})
   find_library(MUMPS_COMMON_LIBRARY mumps_common HINTS ${_contactlab_hint_MUMPS}
                ${_contactlab_required})
 endif()
 
 if(_contactlab_in_config)
   foreach(_contactlab_var GMSH_INCLUDE_DIR GMSH_LIBRARY METIS_INCLUDE_DIR METIS_LIBRARY
-                          MUMPS_INCLUDE_DIR MUMPS_LIBRARY MUMPS_COMMON_LIBRARY)
+                          MUMPS_INCLUDE_DIR MUMPS_LIBRARY MUMPS_SINGLE_LIBRARY
+                          MUMPS_COMMON_LIBRARY)
     if(NOT ${_contactlab_var})
       string(CONCAT contactlab_NOT_FOUND_MESSAGE
         "contactlab needs ${_contactlab_var} (Debian: libgmsh-dev, libmetis-dev, libmumps-dev): "
@@ -103,7 +110,7 @@ foreach(lib GMSH METIS MUMPS)
     add_library(contactlab::${lib} INTERFACE IMPORTED)
     set(_libs ${${lib}_LIBRARY})
     if(lib STREQUAL "MUMPS")
-      list(APPEND _libs ${MUMPS_COMMON_LIBRARY})
+      list(APPEND _libs ${MUMPS_SINGLE_LIBRARY} ${MUMPS_COMMON_LIBRARY})
     endif()
     set_target_properties(contactlab::${lib} PROPERTIES
       INTERFACE_INCLUDE_DIRECTORIES "${${lib}_INCLUDE_DIR}"

@@ -67,6 +67,12 @@ struct LinearSolverStats {
   int reusedFactorizations = 0;
   int corrections = 0;
   int lastCorrectionRank = 0;  // rows and columns of the last correction
+  // Factorizations in single precision (of `factorizations`), and the refined solves' work:
+  // applications of the approximate inverse (single factors, or a correction) beyond one per
+  // right-hand side, and the matrices factorized again in double because a refinement failed.
+  int singlePrecisionFactorizations = 0;
+  int refinementSteps = 0;
+  int doublePrecisionFallbacks = 0;
   double analysisSeconds = 0;  // cumulated
   double factorizationSeconds = 0;
   double solveSeconds = 0;

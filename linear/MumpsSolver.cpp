@@ -28,13 +28,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// ICNTL(14) is raised this way after a workspace-too-small error, then the factorization is
-// retried once. Generous, because a second failure costs a whole factorization: matrices with
-// many delayed pivots need 100-200 % (measured on a 5-point pattern with tiny diagonal).
-int raisedRelaxation(int percent) {
-  return std::max(4 * percent, percent + 200);
-}
-
 MPI_Comm rawCommOf(const Comm& comm) {
   if (auto mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm)) return *mpi->getRawMpiComm();
   if (comm.getSize() == 1) return MPI_COMM_SELF;  // Teuchos::SerialComm
@@ -92,6 +85,21 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
          "Largest number of changed rows and columns a low-rank correction takes (its dense "
          "matrix is that size squared)",
          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20000)));
+  Teuchos::setStringToIntegralParameter<Precision>(
+      "Precision", "automatic", "Precision of the factors",
+      tuple<std::string>("automatic", "double", "single"),
+      tuple<std::string>(
+          "single when the first matrix's factorization is predicted to cost at least 1e10 "
+          "flops (a few tenths of a second: 3D quadratic elements from some 20 000 unknowns; "
+          "1.6-1.8 times faster there, in half the memory), double below",
+          "double-precision factors, one direct solve per right-hand side",
+          "single-precision factors (SMUMPS) for every matrix; each solve is refined in double "
+          "against the matrix by GMRES until its normwise backward error is below 1e-13, and a "
+          "matrix whose solve does not get there is factorized in double (the solver then stays "
+          "in double)"),
+      tuple<Precision>(Precision::automatic, Precision::doublePrecision,
+                       Precision::singlePrecision),
+      p.get());
   p->set("Determinant", false,
          "Compute the determinant at each factorization (ICNTL(33)), as mantissa and exponent");
   p->set("Condition Estimate", false,
@@ -116,6 +124,7 @@ MumpsSolver::Options MumpsSolver::optionsFrom(const Teuchos::ParameterList& para
   o.conditionEstimate = p.get<bool>("Condition Estimate");
   o.reuseFactorization = enumParameter<int>(p, *valid, "Factorization Reuse") == 1;
   o.maxCorrectionRank = p.get<int>("Max Correction Rank");
+  o.precision = enumParameter<Precision>(p, *valid, "Precision");
   return o;
 }
 
@@ -134,29 +143,14 @@ MumpsSolver::MumpsSolver(const Options& options, const Teuchos::RCP<const Comm>&
   Impl& m = *impl_;
   m.teuchosComm = comm;
   MPI_Comm_dup(rawCommOf(*comm), &m.comm);
-  m.id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(m.comm));
-  m.id.par = 1;  // rank 0 works too
-  m.id.sym = static_cast<MUMPS_INT>(options.mode);
-  m.run(-1);
-  m.initialized = true;
-  m.check("initialization");
-  // Silence MUMPS: errors, diagnostics, statistics, verbosity (ICNTL(1..4)).
-  m.icntl(1) = -1;
-  m.icntl(2) = -1;
-  m.icntl(3) = -1;
-  m.icntl(4) = 0;
-  m.icntl(5) = 0;   // assembled input
-  m.icntl(18) = 3;  // distributed assembled input: each rank passes its rows
-  m.icntl(20) = 0;  // dense right-hand side ...
-  m.icntl(21) = 0;  // ... and solution, centralized on the host
-  // ICNTL(7), the ordering, is set before each analysis (setMatrix): it depends on the size.
-  // Sequential analysis. The parallel one fails with PORD only (INFOG(1) = -38); with
-  // PT-SCOTCH (ICNTL(29) = 1) it runs, but measured no faster on 2 ranks (tet10 Hertz, 46 572
-  // dofs: linear solves 21.0 s against 19.2 s sequential; doc/performance.md).
-  m.icntl(28) = 1;
-  m.icntl(14) = options.memoryRelaxation;
-  m.icntl(33) = options.determinant ? 1 : 0;
-  m.icntl(11) = 0;
+  m.dbl.initialize(m.comm, static_cast<int>(options.mode), options.memoryRelaxation,
+                   options.determinant);
+  // The determinant and the error analysis describe the factors: double only.
+  if (options.determinant || options.conditionEstimate ||
+      options.precision == Precision::doublePrecision)
+    m.singleChosen = false;
+  else if (options.precision == Precision::singlePrecision)
+    m.singleChosen = true;
 }
 
 MumpsSolver::~MumpsSolver() = default;  // Impl's destructor frees MUMPS (collective)
@@ -217,14 +211,16 @@ void MumpsSolver::factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patt
   }
 
   // A new analysis when asked, or when the pattern differs from the analysed one on any rank.
-  int changed = (patternChanged || !m.analysed || irn != m.irn || jcn != m.jcn) ? 1 : 0;
+  const bool held = m.dbl.analysed || (m.sgl && m.sgl->analysed);
+  int changed = (patternChanged || !held || irn != m.irn || jcn != m.jcn) ? 1 : 0;
   int anyChanged = 0;
   Teuchos::reduceAll(*m.teuchosComm, Teuchos::REDUCE_MAX, changed, Teuchos::outArg(anyChanged));
   m.A = A;
   m.values = std::move(values);
-  m.id.a_loc = m.values.data();
   if (anyChanged) {
-    m.analysed = false;  // until analyse() succeeds: a failed check below forces a new one
+    // Until an analysis succeeds: a failed check below forces a new one.
+    m.dbl.analysed = m.dbl.factored = false;
+    if (m.sgl) m.sgl->analysed = m.sgl->factored = false;
     m.factored = false;
     // Global ids index MUMPS' unknowns: they must be 0-based, in [0, N), each row on one rank.
     const GO minId = std::min(rowMap->getMinAllGlobalIndex(), colMap->getMinAllGlobalIndex());
@@ -237,7 +233,6 @@ void MumpsSolver::factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patt
       throw LinearSolverError("MUMPS needs a row map where each row is owned by one rank");
     m.irn = std::move(irn);
     m.jcn = std::move(jcn);
-    m.id.n = static_cast<MUMPS_INT>(N);
     // PORD aborts the process on some tiny graphs ("orderMinPriority: no valid number of stages
     // in multisector", a one-element model); any ordering is as good as another there.
     constexpr std::int64_t kPordMinimumSize = 64;
@@ -253,63 +248,69 @@ void MumpsSolver::factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patt
                      : Ordering::pord;
     if (ordering == Ordering::pord && static_cast<std::int64_t>(N) < kPordMinimumSize)
       ordering = Ordering::amd;
-    m.icntl(7) = static_cast<MUMPS_INT>(ordering);
-    m.id.nnz_loc = static_cast<MUMPS_INT8>(m.irn.size());
-    m.id.irn_loc = m.irn.data();
-    m.id.jcn_loc = m.jcn.data();
-    analyse();
+    m.ordering = static_cast<MUMPS_INT>(ordering);
+    // The map that gathers every global index on rank 0, in order: MUMPS' centralized vectors.
+    m.rootMap = Teuchos::rcp(new Map(N, m.isRoot() ? N : 0, 0, A->getComm()));
+    m.rangeMap = Teuchos::null;
+    m.domainMap = Teuchos::null;
   }
   factorize();
   keepReference(*A);
 }
 
-void MumpsSolver::analyse() {
+void MumpsSolver::analyse(bool singlePrecision) {
   Impl& m = *impl_;
   const auto t0 = Clock::now();
-  m.analysed = false;
-  m.factored = false;
+  const auto analyseOn = [&](auto& mumps) {
+    mumps.analysed = mumps.factored = false;
+    mumps.id.n = static_cast<MUMPS_INT>(m.A->getGlobalNumRows());
+    mumps.id.nnz_loc = static_cast<MUMPS_INT8>(m.irn.size());
+    mumps.id.irn_loc = m.irn.data();
+    mumps.id.jcn_loc = m.jcn.data();
+    mumps.icntl(7) = m.ordering;
 #ifdef CONTACTLAB_MUMPS_HAS_SCOTCH
-  // SCOTCH's generator state carries over from one analysis to the next in a process, so a
-  // matrix's ordering (hence its round-off) would depend on how many analyses came before it
-  // (measured: the Cattaneo run below takes another path without the reset). Reset to the fixed
-  // seed, every analysis orders a given matrix the same way.
-  SCOTCH_randomReset();
+    // SCOTCH's generator state carries over from one analysis to the next in a process, so a
+    // matrix's ordering (hence its round-off) would depend on how many analyses came before it
+    // (measured: the Cattaneo run below takes another path without the reset). Reset to the
+    // fixed seed, every analysis orders a given matrix the same way.
+    SCOTCH_randomReset();
 #endif
-  m.run(1);
-  m.check("analysis");
-  m.analysed = true;
+    mumps.run(1);
+    mumps.check("analysis");
+    mumps.analysed = true;
+  };
+  if (singlePrecision)
+    analyseOn(*m.sgl);
+  else
+    analyseOn(m.dbl);
   ++stats_.analyses;
   stats_.analysisSeconds += secondsSince(t0);
-
-  // The map that gathers every global index on rank 0, in order: MUMPS' centralized vectors.
-  const auto N = m.A->getGlobalNumRows();
-  m.rootMap = Teuchos::rcp(new Map(N, m.isRoot() ? N : 0, 0, m.A->getComm()));
-  m.rangeMap = Teuchos::null;
-  m.domainMap = Teuchos::null;
 }
 
-void MumpsSolver::factorize() {
+void MumpsSolver::factorizeInDouble() {
   Impl& m = *impl_;
-  const auto t0 = Clock::now();
   m.factored = false;
-  m.run(2);
-  if (isWorkspaceTooSmall(m.infog(1))) {
-    m.icntl(14) = raisedRelaxation(m.icntl(14));
-    m.run(2);
-    if (isWorkspaceTooSmall(m.infog(1)))
-      throw LinearSolverError(
-          "MUMPS factorization failed: internal workspace too small even with Memory "
-          "Relaxation raised to " +
-          std::to_string(m.icntl(14)) + " % (INFOG(1) = " + std::to_string(m.infog(1)) +
-          "); raise Memory Relaxation");
+  m.singleFactors = false;
+  if (!m.dbl.analysed) analyse(false);
+  const auto t0 = Clock::now();
+  m.dbl.id.a_loc = m.values.data();
+  try {
+    m.dbl.factorize();
+  } catch (...) {
+    stats_.factorizationSeconds += secondsSince(t0);
+    throw;
   }
-  m.check("factorization");
   m.factored = true;
-  m.referenceFlops = m.rinfog(3);
+  m.referenceFlops = m.dbl.rinfog(3);
   // INFOG(29) < 0: -INFOG(29) million entries (32-bit overflow).
-  m.referenceEntries = m.infog(29) >= 0 ? m.infog(29) : -1e6 * m.infog(29);
+  m.referenceEntries = m.dbl.infog(29) >= 0 ? m.dbl.infog(29) : -1e6 * m.dbl.infog(29);
   ++stats_.factorizations;
   stats_.factorizationSeconds += secondsSince(t0);
+  prepareImporters();
+}
+
+void MumpsSolver::prepareImporters() {
+  Impl& m = *impl_;
   if (m.rangeMap != m.A->getRangeMap() || m.domainMap != m.A->getDomainMap()) {
     m.rangeMap = m.A->getRangeMap();
     m.domainMap = m.A->getDomainMap();
@@ -328,8 +329,8 @@ void MumpsSolver::solve(const MultiVector& b, MultiVector& x) {
   if (!b.getMap()->isSameAs(*m.rangeMap) || !x.getMap()->isSameAs(*m.domainMap))
     throw LinearSolverError("MUMPS solve: b and x must live on the matrix's range / domain map");
   if (nrhs == 0) return;
-  if (m.correcting) {
-    solveWithCorrection(b, x);
+  if (m.correcting || m.singleFactors) {
+    solveRefined(b, x);
     return;
   }
   const auto t0 = Clock::now();
@@ -340,28 +341,28 @@ void MumpsSolver::solve(const MultiVector& b, MultiVector& x) {
     Teuchos::ArrayRCP<double> data;
     if (m.isRoot()) {
       data = root.get1dViewNonConst();
-      m.id.rhs = data.getRawPtr();
-      m.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
+      m.dbl.id.rhs = data.getRawPtr();
+      m.dbl.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
     }
     // The error analysis works on one right-hand side: the first one gets it, alone.
     size_t first = 0;
     if (options_.conditionEstimate) {
-      m.id.nrhs = 1;
-      m.icntl(11) = 1;
-      m.run(3);
-      m.icntl(11) = 0;
-      m.check("solve");
-      m.lastErrorAnalysis =
-          ErrorAnalysis{m.rinfog(7), m.rinfog(8), m.rinfog(9), m.rinfog(10), m.rinfog(11)};
+      m.dbl.id.nrhs = 1;
+      m.dbl.icntl(11) = 1;
+      m.dbl.run(3);
+      m.dbl.icntl(11) = 0;
+      m.dbl.check("solve");
+      m.lastErrorAnalysis = ErrorAnalysis{m.dbl.rinfog(7), m.dbl.rinfog(8), m.dbl.rinfog(9),
+                                          m.dbl.rinfog(10), m.dbl.rinfog(11)};
       first = 1;
     }
     if (first < nrhs) {
-      if (m.isRoot()) m.id.rhs = data.getRawPtr() + first * m.id.lrhs;
-      m.id.nrhs = static_cast<MUMPS_INT>(nrhs - first);
-      m.run(3);
-      m.check("solve");
+      if (m.isRoot()) m.dbl.id.rhs = data.getRawPtr() + first * m.dbl.id.lrhs;
+      m.dbl.id.nrhs = static_cast<MUMPS_INT>(nrhs - first);
+      m.dbl.run(3);
+      m.dbl.check("solve");
     }
-    m.id.rhs = nullptr;
+    m.dbl.id.rhs = nullptr;
   }
   x.doImport(root, *m.fromRoot, Tpetra::INSERT);
   ++stats_.solves;
@@ -369,9 +370,10 @@ void MumpsSolver::solve(const MultiVector& b, MultiVector& x) {
 }
 
 std::optional<Determinant> MumpsSolver::determinant() const {
+  // Determinant asked: the factors are double (the constructor chose so).
   if (!options_.determinant || !impl_->factored) return std::nullopt;
   // RINFOG(12) * 2^INFOG(34); RINFOG(13) is the imaginary part (complex arithmetic only).
-  return Determinant::normalized(impl_->rinfog(12), impl_->infog(34));
+  return Determinant::normalized(impl_->dbl.rinfog(12), impl_->dbl.infog(34));
 }
 
 std::optional<double> MumpsSolver::conditionEstimate() const {
@@ -385,11 +387,11 @@ std::optional<MumpsSolver::ErrorAnalysis> MumpsSolver::errorAnalysis() const {
 
 std::optional<long> MumpsSolver::negativePivots() const {
   if (options_.mode == Mode::general || !impl_->factored) return std::nullopt;
-  return impl_->infog(12);
+  return impl_->withFactors([](const auto& mumps) -> long { return mumps.infog(12); });
 }
 
 int MumpsSolver::memoryRelaxation() const {
-  return impl_->icntl(14);
+  return impl_->withFactors([](const auto& mumps) { return mumps.id.icntl[13]; });
 }
 
 bool MumpsSolver::hasScotch() {
@@ -401,8 +403,9 @@ bool MumpsSolver::hasScotch() {
 }
 
 std::optional<MumpsSolver::Ordering> MumpsSolver::orderingUsed() const {
-  if (!impl_->analysed) return std::nullopt;
-  return static_cast<Ordering>(impl_->infog(7));
+  const Impl& m = *impl_;
+  if (m.singleFactors ? !m.sgl->analysed : !m.dbl.analysed) return std::nullopt;
+  return m.withFactors([](const auto& mumps) { return static_cast<Ordering>(mumps.infog(7)); });
 }
 
 }  // namespace contactlab

@@ -1,14 +1,14 @@
 #pragma once
-// MumpsSolver's state: private to linear/MumpsSolver*.cpp (it keeps dmumps_c.h and mpi.h out of
-// MumpsSolver.hpp). MumpsSolver.cpp factorizes and solves, MumpsSolverReuse.cpp answers a
-// matrix from the last factorization (CapacitanceCorrection).
+// MumpsSolver's state: private to linear/MumpsSolver*.cpp (it keeps the MUMPS headers and mpi.h
+// out of MumpsSolver.hpp). MumpsSolver.cpp factorizes and solves, MumpsSolverReuse.cpp answers a
+// matrix from the last factorization (CapacitanceCorrection), MumpsSolverPrecision.cpp factorizes
+// in single precision and refines the solves in double.
 #include "linear/CapacitanceCorrection.hpp"
 #include "linear/MatrixSnapshot.hpp"
-#include "linear/MumpsErrors.hpp"
+#include "linear/MumpsInstance.hpp"
 #include "linear/MumpsSolver.hpp"
 
 #include <Teuchos_Comm.hpp>
-#include <dmumps_c.h>
 #include <mpi.h>
 
 #include <memory>
@@ -19,17 +19,26 @@
 namespace contactlab {
 
 struct MumpsSolver::Impl {
-  DMUMPS_STRUC_C id{};
+  // The double-precision instance always exists; the single-precision one is created when a
+  // matrix is first factorized in single precision (MumpsSolverPrecision.cpp). Each keeps its own
+  // analysis of the pattern below; `singleFactors` says whose factors the solves use.
+  DoubleMumps dbl;
+  std::unique_ptr<SingleMumps> sgl;
+  bool singleFactors = false;
+  // Single precision is decided at the first analysis (Precision: automatic) and dropped for
+  // good after a matrix whose single factors failed (a refinement that did not converge, a
+  // pivot that vanished in single precision).
+  std::optional<bool> singleChosen;
   MPI_Comm comm = MPI_COMM_NULL;  // a duplicate, so MUMPS' messages never meet Tpetra's
   Teuchos::RCP<const Comm> teuchosComm;
-  bool initialized = false;
-  bool analysed = false;
-  bool factored = false;
+  bool factored = false;  // the active instance holds the factors of `A`
   Teuchos::RCP<const Matrix> A;
   // Distributed assembled input (1-based global indices); must outlive the factorization
   // because the error analysis of a solve reads A again.
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> values;
+  std::vector<float> singleValues;  // `values` rounded, for the single-precision instance
+  MUMPS_INT ordering = 0;           // ICNTL(7) for the analyses of this pattern
   // Right-hand side and solution are centralized on rank 0.
   Teuchos::RCP<const Map> rootMap;
   Teuchos::RCP<const Import> toRoot, fromRoot;
@@ -44,43 +53,30 @@ struct MumpsSolver::Impl {
   std::unique_ptr<CapacitanceCorrection> correction;  // on the host only
   bool correcting = false;
   Teuchos::RCP<const Matrix> current;  // the matrix solves are for
-  double currentNormInf = 0;           // ||A||_inf of `current` while correcting
+  double currentNormInf = 0;           // ||A||_inf of `current` when its solves are refined
 
   Impl() = default;
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
-  // Also runs when the constructor throws after MUMPS' initialization.
+  // Also runs when the constructor throws after MUMPS' initialization; the instances (members)
+  // are freed before the communicator they use.
   ~Impl() {
+    sgl.reset();
+    dbl.finalize();
     int finalized = 0;
     MPI_Finalized(&finalized);
-    if (finalized) return;  // too late to free anything collectively
-    if (initialized) run(-2);
-    if (comm != MPI_COMM_NULL) MPI_Comm_free(&comm);
+    if (comm != MPI_COMM_NULL && !finalized) MPI_Comm_free(&comm);
   }
 
-  MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }
-  MUMPS_INT infog(int i) const { return id.infog[i - 1]; }
-  double rinfog(int i) const { return id.rinfog[i - 1]; }
   bool isRoot() const { return teuchosComm->getRank() == 0; }
-
-  void run(int job) {
-    id.job = job;
-    dmumps_c(&id);
+  // The instance whose factors the solves use: f(dbl) or f(*sgl).
+  template <class F>
+  auto withFactors(F&& f) {
+    return singleFactors ? f(*sgl) : f(dbl);
   }
-  void check(const char* phase) const {
-    const int code = infog(1);
-    if (code >= 0) return;
-    // SYM = 1 does not pivot: a zero pivot may only mean the matrix is not positive definite.
-    const std::string hint = id.sym == 1 && code == -10
-                                 ? "; in Mode symmetric this may only mean that the matrix is "
-                                   "not positive definite: try Mode symmetric-indefinite"
-                                 : "";
-    const std::string message = std::string("MUMPS ") + phase +
-                                " failed: " + mumpsErrorMeaning(code, infog(2)) +
-                                " (INFOG(1) = " + std::to_string(code) + ")" + hint;
-    // With pivoting (SYM = 0, 2) a zero pivot is a singular matrix; without, it is ambiguous.
-    if (code == -10 && id.sym != 1) throw SingularMatrixError(message);
-    throw LinearSolverError(message);
+  template <class F>
+  auto withFactors(F&& f) const {
+    return singleFactors ? f(static_cast<const SingleMumps&>(*sgl)) : f(dbl);
   }
 };
 

@@ -1,7 +1,9 @@
 // MumpsSolver's factorization reuse: a matrix equal to the last factorized one is solved with
 // its factors; one that differs from it on few rows and columns, through a low-rank correction
-// of them (CapacitanceCorrection), when that is predicted cheaper than a factorization.
+// of them (CapacitanceCorrection), when that is predicted cheaper than a factorization. A
+// corrected solve is checked by A's residual and refined (MumpsSolverPrecision.cpp).
 #include "base/Elapsed.hpp"
+#include "linear/IterativeRefinement.hpp"
 #include "linear/MumpsSolverImpl.hpp"
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <iterator>
 #include <numeric>
+#include <type_traits>
 
 namespace contactlab {
 
@@ -34,12 +37,6 @@ constexpr MUMPS_INT kInverseColumnBlock = 256;
 // save nothing worth its bookkeeping, and the small models (the 2D scenes of the regression
 // gold) keep one factorization per matrix and its round-off.
 constexpr double kMinimumFactorizationFlops = 1e8;
-
-// A correction's solve is accepted when its normwise backward error
-// ||b - A x||_inf / (||A||_inf ||x||_inf + ||b||_inf) is below this (a direct solve's is of
-// order 1e-16); else it is refined, at most kMaxRefinements times, then A is factorized.
-constexpr double kCorrectionBackwardError = 1e-13;
-constexpr int kMaxRefinements = 2;
 
 // Whether solving through a correction of `rank` indices, `fresh` of them without entries of
 // the inverse yet, is predicted to pay: the new columns of the inverse, the dense LU and the
@@ -95,20 +92,6 @@ std::vector<MatrixSnapshot::Entry> gatherOnRoot(const std::vector<MatrixSnapshot
   return entries;
 }
 
-double normInf(const Matrix& A, MPI_Comm comm) {
-  const auto local = A.getLocalMatrixHost();
-  double norm = 0;
-  for (LO r = 0; r < static_cast<LO>(local.numRows()); ++r) {
-    double sum = 0;
-    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
-      sum += std::abs(local.values(k));
-    norm = std::max(norm, sum);
-  }
-  double global = 0;
-  MPI_Allreduce(&norm, &global, 1, MPI_DOUBLE, MPI_MAX, comm);
-  return global;
-}
-
 }  // namespace
 
 bool MumpsSolver::reusesFactorization() const {
@@ -145,6 +128,7 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   if (indices.empty()) {  // the factorized matrix itself
     m.correcting = false;
     m.current = A;
+    if (m.singleFactors) m.currentNormInf = normInf(*A);  // its solves are refined
     ++stats_.reusedFactorizations;
     stats_.correctionSeconds += secondsSince(t0);
     return true;
@@ -175,7 +159,7 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   MPI_Bcast(&factored, 1, MPI_INT, 0, m.comm);
   // A zero pivot: A is singular, or the correction cannot tell; the factorization will say.
   if (!factored) return false;
-  m.currentNormInf = normInf(*A, m.comm);
+  m.currentNormInf = normInf(*A);
   m.correcting = true;
   m.current = A;
   ++stats_.reusedFactorizations;
@@ -187,55 +171,89 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
 
 std::vector<double> MumpsSolver::inverseEntries(const std::vector<std::pair<GO, GO>>& entries) {
   Impl& m = *impl_;
-  std::vector<MUMPS_INT> pointers, rows;
-  std::vector<double> values;
-  if (m.isRoot()) {
-    // Compressed columns, 1-based, over all N columns (MUMPS asks NRHS = N).
-    const MUMPS_INT n = m.id.n;
-    pointers.assign(n + 1, 0);
-    for (const auto& entry : entries)
-      ++pointers[entry.first + 1];
-    std::partial_sum(pointers.begin(), pointers.end(), pointers.begin());
-    for (auto& p : pointers)
-      ++p;
-    rows.reserve(entries.size());
-    for (const auto& entry : entries)
-      rows.push_back(static_cast<MUMPS_INT>(entry.second + 1));
-    values.assign(entries.size(), 0.0);
-    m.id.nrhs = n;
-    m.id.nz_rhs = static_cast<MUMPS_INT>(entries.size());
-    m.id.irhs_ptr = pointers.data();
-    m.id.irhs_sparse = rows.data();
-    m.id.rhs_sparse = values.data();
-  }
-  m.icntl(30) = 1;
-  // Columns of the inverse in blocks of 256 (ICNTL(27)) rather than MUMPS' default of about
-  // 32: the 1 712 columns of the first correction of hertz-3d tet10 at 130 000 unknowns in
-  // 0.79 times the time (23.5 s against 29.8 s for the run's corrections), memory unchanged.
-  const MUMPS_INT blocking = m.icntl(27);
-  m.icntl(27) = kInverseColumnBlock;
-  m.run(3);
-  m.icntl(27) = blocking;
-  m.icntl(30) = 0;
-  m.id.irhs_ptr = nullptr;
-  m.id.irhs_sparse = nullptr;
-  m.id.rhs_sparse = nullptr;
-  m.check("computation of entries of the inverse");
-  return values;
+  return m.withFactors([&](auto& mumps) {
+    using Real = typename std::decay_t<decltype(mumps)>::Real;
+    std::vector<MUMPS_INT> pointers, rows;
+    std::vector<Real> values;
+    if (m.isRoot()) {
+      // Compressed columns, 1-based, over all N columns (MUMPS asks NRHS = N).
+      const MUMPS_INT n = mumps.id.n;
+      pointers.assign(n + 1, 0);
+      for (const auto& entry : entries)
+        ++pointers[entry.first + 1];
+      std::partial_sum(pointers.begin(), pointers.end(), pointers.begin());
+      for (auto& p : pointers)
+        ++p;
+      rows.reserve(entries.size());
+      for (const auto& entry : entries)
+        rows.push_back(static_cast<MUMPS_INT>(entry.second + 1));
+      values.assign(entries.size(), Real(0));
+      mumps.id.nrhs = n;
+      mumps.id.nz_rhs = static_cast<MUMPS_INT>(entries.size());
+      mumps.id.irhs_ptr = pointers.data();
+      mumps.id.irhs_sparse = rows.data();
+      mumps.id.rhs_sparse = values.data();
+    }
+    mumps.icntl(30) = 1;
+    // Columns of the inverse in blocks of 256 (ICNTL(27)) rather than MUMPS' default of about
+    // 32: the 1 712 columns of the first correction of hertz-3d tet10 at 130 000 unknowns in
+    // 0.79 times the time (23.5 s against 29.8 s for the run's corrections), memory unchanged.
+    const MUMPS_INT blocking = mumps.icntl(27);
+    mumps.icntl(27) = kInverseColumnBlock;
+    mumps.run(3);
+    mumps.icntl(27) = blocking;
+    mumps.icntl(30) = 0;
+    mumps.id.irhs_ptr = nullptr;
+    mumps.id.irhs_sparse = nullptr;
+    mumps.id.rhs_sparse = nullptr;
+    mumps.check("computation of entries of the inverse");
+    return std::vector<double>(values.begin(), values.end());
+  });
 }
 
 void MumpsSolver::solveCentralized(MultiVector& root) {
   Impl& m = *impl_;
-  Teuchos::ArrayRCP<double> data;
-  if (m.isRoot()) {
-    data = root.get1dViewNonConst();
-    m.id.rhs = data.getRawPtr();
-    m.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
+  const size_t nrhs = root.getNumVectors();
+  if (!m.singleFactors) {
+    Teuchos::ArrayRCP<double> data;
+    if (m.isRoot()) {
+      data = root.get1dViewNonConst();
+      m.dbl.id.rhs = data.getRawPtr();
+      m.dbl.id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(root.getStride(), 1));
+    }
+    m.dbl.id.nrhs = static_cast<MUMPS_INT>(nrhs);
+    m.dbl.run(3);
+    m.dbl.id.rhs = nullptr;
+    m.dbl.check("solve");
+    return;
   }
-  m.id.nrhs = static_cast<MUMPS_INT>(root.getNumVectors());
-  m.run(3);
-  m.id.rhs = nullptr;
-  m.check("solve");
+  // Single factors: each column scaled by its largest entry (the refinement's residuals
+  // shrink by decades, single precision's range does not follow), rounded, solved, scaled back.
+  const size_t n = m.isRoot() ? root.getLocalLength() : 0;
+  std::vector<float> buffer(n * nrhs);
+  std::vector<double> scales(nrhs, 1.0);
+  if (m.isRoot()) {
+    for (size_t j = 0; j < nrhs; ++j) {
+      const auto column = root.getData(j);
+      double largest = 0;
+      for (size_t i = 0; i < n; ++i)
+        largest = std::max(largest, std::abs(column[i]));
+      if (largest > 0) scales[j] = largest;
+      for (size_t i = 0; i < n; ++i)
+        buffer[j * n + i] = static_cast<float>(column[i] / scales[j]);
+    }
+    m.sgl->id.rhs = buffer.data();
+    m.sgl->id.lrhs = static_cast<MUMPS_INT>(std::max<size_t>(n, 1));
+  }
+  m.sgl->id.nrhs = static_cast<MUMPS_INT>(nrhs);
+  m.sgl->run(3);
+  m.sgl->id.rhs = nullptr;
+  m.sgl->check("solve");
+  for (size_t j = 0; j < nrhs && m.isRoot(); ++j) {
+    auto column = root.getDataNonConst(j);
+    for (size_t i = 0; i < n; ++i)
+      column[i] = scales[j] * static_cast<double>(buffer[j * n + i]);
+  }
 }
 
 void MumpsSolver::solveCorrected(const MultiVector& b, MultiVector& x) {
@@ -251,39 +269,6 @@ void MumpsSolver::solveCorrected(const MultiVector& b, MultiVector& x) {
       m.correction->correct(root.getData(j).getRawPtr(), corrected.getDataNonConst(j).getRawPtr());
   solveCentralized(corrected);  // A0^-1 (b - P D y)
   x.doImport(corrected, *m.fromRoot, Tpetra::INSERT);
-}
-
-void MumpsSolver::solveWithCorrection(const MultiVector& b, MultiVector& x) {
-  Impl& m = *impl_;
-  const auto t0 = Clock::now();
-  const size_t nrhs = b.getNumVectors();
-  solveCorrected(b, x);
-  MultiVector residual(b.getMap(), nrhs), dx(x.getMap(), nrhs);
-  std::vector<double> rNorm(nrhs), xNorm(nrhs), bNorm(nrhs);
-  b.normInf(bNorm);
-  for (int refinement = 0;; ++refinement) {
-    m.current->apply(x, residual);
-    residual.update(1.0, b, -1.0);
-    residual.normInf(rNorm);
-    x.normInf(xNorm);
-    double error = 0;
-    for (size_t j = 0; j < nrhs; ++j) {
-      const double scale = m.currentNormInf * xNorm[j] + bNorm[j];
-      if (scale > 0) error = std::max(error, rNorm[j] / scale);
-    }
-    if (!(error > kCorrectionBackwardError)) break;
-    if (refinement == kMaxRefinements) {
-      // The correction lost accuracy (an ill-conditioned I + G D): factorize A itself.
-      stats_.solveSeconds += secondsSince(t0);
-      factorizeMatrix(m.current, false);
-      solve(b, x);
-      return;
-    }
-    solveCorrected(residual, dx);
-    x.update(1.0, dx, 1.0);
-  }
-  ++stats_.solves;
-  stats_.solveSeconds += secondsSince(t0);
 }
 
 }  // namespace contactlab

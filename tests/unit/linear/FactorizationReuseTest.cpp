@@ -77,14 +77,6 @@ std::vector<Spring> contactSprings(double k) {
   return {{5, kSize - 7, k}, {1000, 4000, 2 * k}, {2500, 2600, 0.5 * k}};
 }
 
-Teuchos::RCP<MultiVector> solved(LinearSolver& solver, const Teuchos::RCP<Matrix>& A,
-                                 const MultiVector& b) {
-  solver.setMatrix(A, false);
-  auto x = Teuchos::rcp(new MultiVector(A->getDomainMap(), b.getNumVectors()));
-  solver.solve(b, *x);
-  return x;
-}
-
 MumpsSolver::Options withMode(Mode mode, bool reuse = true) {
   MumpsSolver::Options o;
   o.mode = mode;
@@ -128,11 +120,11 @@ TEST_P(FactorizationReuse, AFewChangedRowsAreSolvedThroughACorrection) {
   const auto A0 = modelMatrix({}, Layout::scattered, drift);
   const auto b = test::rightHandSide(*A0, 2);
   MumpsSolver solver(withMode(mode), world());
-  const auto x0 = solved(solver, A0, *b);
+  const auto x0 = test::solved(solver, A0, *b);
   EXPECT_EQ(solver.stats().factorizations, 1);
 
   // The same values again (a new matrix object): no factorization, the same solution.
-  const auto again = solved(solver, modelMatrix({}, Layout::scattered, drift), *b);
+  const auto again = test::solved(solver, modelMatrix({}, Layout::scattered, drift), *b);
   EXPECT_EQ(solver.stats().factorizations, 1);
   EXPECT_EQ(solver.stats().reusedFactorizations, 1);
   // Bitwise on one rank; on several, MUMPS' dynamic scheduling varies the last bits.
@@ -142,9 +134,9 @@ TEST_P(FactorizationReuse, AFewChangedRowsAreSolvedThroughACorrection) {
   // the entries outside the pattern, (p, q + 1)), as accurate as a factorization of A.
   for (double k : {1e4, 3e4}) {
     const auto A = modelMatrix(contactSprings(k), Layout::scattered, drift, outsidePattern);
-    const auto x = solved(solver, A, *b);
+    const auto x = test::solved(solver, A, *b);
     MumpsSolver direct(withMode(mode, false), world());
-    const auto reference = solved(direct, A, *b);
+    const auto reference = test::solved(direct, A, *b);
     // The solver's promise is the backward error (kCorrectionBackwardError = 1e-13; here
     // ~3e-17). The relative residual is that times ||A|| ||x|| / ||b|| ~ 1e4: ~3e-13 usually,
     // but on 2 ranks MUMPS' dynamic scheduling gave once in 25 loaded runs a factorization
@@ -158,7 +150,7 @@ TEST_P(FactorizationReuse, AFewChangedRowsAreSolvedThroughACorrection) {
 
   // Every row changed: factorized.
   const auto scaled = modelMatrix({}, Layout::scattered, drift, false, 2.0);
-  const auto x2 = solved(solver, scaled, *b);
+  const auto x2 = test::solved(solver, scaled, *b);
   EXPECT_EQ(solver.stats().factorizations, 2);
   x2->scale(2.0);
   EXPECT_LT(test::relativeDifference(*x2, *x0), 1e-12);
@@ -171,9 +163,9 @@ TEST(FactorizationReuse, NeverFactorizesEveryMatrix) {
   const auto A0 = modelMatrix({}, Layout::contiguous);
   const auto b = test::rightHandSide(*A0, 1);
   MumpsSolver solver(withMode(Mode::symmetricIndefinite, false), world());
-  solved(solver, A0, *b);
-  solved(solver, modelMatrix({}, Layout::contiguous), *b);
-  solved(solver, modelMatrix(contactSprings(1e4), Layout::contiguous), *b);
+  test::solved(solver, A0, *b);
+  test::solved(solver, modelMatrix({}, Layout::contiguous), *b);
+  test::solved(solver, modelMatrix(contactSprings(1e4), Layout::contiguous), *b);
   EXPECT_EQ(solver.stats().factorizations, 3);
   EXPECT_EQ(solver.stats().reusedFactorizations, 0);
 }
@@ -186,21 +178,13 @@ TEST(FactorizationReuse, ASingularChangeIsReportedAsWithoutReuse) {
   const auto A0 = modelMatrix({}, Layout::scattered);
   const auto b = test::rightHandSide(*A0, 1);
   MumpsSolver solver(withMode(Mode::general), world());
-  solved(solver, A0, *b);
+  test::solved(solver, A0, *b);
   const GO p = 100;
-  const auto singular =
-      test::makeMatrix(kSize, Layout::scattered, world(),
-                       [&](GO row, std::vector<GO>& cols, std::vector<double>& vals) {
-                         const auto local = A0->getRowMap()->getLocalElement(row);
-                         Matrix::local_inds_host_view_type indices;
-                         Matrix::values_host_view_type values;
-                         A0->getLocalRowView(local, indices, values);
-                         for (size_t k = 0; k < indices.extent(0); ++k) {
-                           const GO col = A0->getColMap()->getGlobalElement(indices(k));
-                           cols.push_back(col);
-                           vals.push_back(row == p || col == p ? 0.0 : values(k));
-                         }
-                       });
+  const auto singular = test::modifiedCopy(
+      *A0, Layout::scattered, [&](GO row, std::vector<GO>& cols, std::vector<double>& vals) {
+        for (size_t k = 0; k < cols.size(); ++k)
+          if (row == p || cols[k] == p) vals[k] = 0.0;
+      });
   MultiVector x(singular->getDomainMap(), 1);
   EXPECT_THROW(
       {
@@ -218,8 +202,8 @@ TEST(FactorizationReuse, IsOffWhenTheDeterminantIsAsked) {
   MumpsSolver solver(o, world());
   const auto A0 = modelMatrix({}, Layout::contiguous);
   const auto b = test::rightHandSide(*A0, 1);
-  solved(solver, A0, *b);
-  solved(solver, modelMatrix(contactSprings(1e4), Layout::contiguous), *b);
+  test::solved(solver, A0, *b);
+  test::solved(solver, modelMatrix(contactSprings(1e4), Layout::contiguous), *b);
   EXPECT_EQ(solver.stats().factorizations, 2);
 }
 

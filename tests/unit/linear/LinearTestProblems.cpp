@@ -42,6 +42,28 @@ Teuchos::RCP<Matrix> makeMatrix(GO n, Layout layout, const Teuchos::RCP<const Co
   return A;
 }
 
+Teuchos::RCP<Matrix> modifiedCopy(const Matrix& A, Layout layout, const RowFunction& change) {
+  return makeMatrix(static_cast<GO>(A.getGlobalNumRows()), layout, A.getComm(),
+                    [&](GO row, std::vector<GO>& cols, std::vector<double>& vals) {
+                      Matrix::local_inds_host_view_type indices;
+                      Matrix::values_host_view_type values;
+                      A.getLocalRowView(A.getRowMap()->getLocalElement(row), indices, values);
+                      for (size_t k = 0; k < indices.extent(0); ++k) {
+                        cols.push_back(A.getColMap()->getGlobalElement(indices(k)));
+                        vals.push_back(values(k));
+                      }
+                      change(row, cols, vals);
+                    });
+}
+
+Teuchos::RCP<MultiVector> solved(LinearSolver& solver, const Teuchos::RCP<Matrix>& A,
+                                 const MultiVector& b) {
+  solver.setMatrix(A, false);
+  auto x = Teuchos::rcp(new MultiVector(A->getDomainMap(), b.getNumVectors()));
+  solver.solve(b, *x);
+  return x;
+}
+
 namespace {
 
 // Adds the 5-point stencil of row g = i + nx*j.

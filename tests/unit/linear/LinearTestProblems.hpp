@@ -4,6 +4,7 @@
 // so the map is non-contiguous even on one rank). The matrix entry (i, j) is the same whatever
 // the layout: solutions compare by global id.
 #include "base/LinearAlgebra.hpp"
+#include "linear/LinearSolver.hpp"
 
 #include <Teuchos_RCP.hpp>
 
@@ -22,6 +23,9 @@ Teuchos::RCP<const Map> makeMap(GO n, Layout layout, const Teuchos::RCP<const Co
 using RowFunction = std::function<void(GO row, std::vector<GO>& cols, std::vector<double>& vals)>;
 Teuchos::RCP<Matrix> makeMatrix(GO n, Layout layout, const Teuchos::RCP<const Comm>& comm,
                                 const RowFunction& rowOf);
+// A copy of A (built with `layout`), each global row's columns and values then handed to
+// `change`, which may alter or add entries.
+Teuchos::RCP<Matrix> modifiedCopy(const Matrix& A, Layout layout, const RowFunction& change);
 
 // 5-point Laplacian on an nx x ny grid, Dirichlet boundary (SPD).
 Teuchos::RCP<Matrix> laplacian2D(int nx, int ny, Layout layout,
@@ -45,6 +49,9 @@ Teuchos::RCP<Matrix> tridiagonal(GO n, Layout layout, const Teuchos::RCP<const C
 Teuchos::RCP<Matrix> diagonal(GO n, const std::function<double(GO)>& d, Layout layout,
                               const Teuchos::RCP<const Comm>& comm);
 
+// x with solver.setMatrix(A, false) then solver.solve(b, x).
+Teuchos::RCP<MultiVector> solved(LinearSolver& solver, const Teuchos::RCP<Matrix>& A,
+                                 const MultiVector& b);
 // Right-hand side with `columns` columns, b(g, j) a smooth function of the global id g.
 Teuchos::RCP<MultiVector> rightHandSide(const Matrix& A, size_t columns);
 // Column `col` of v, on every rank, indexed by global id.
