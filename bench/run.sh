@@ -3,7 +3,7 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   blade-root, factorization-reuse, peers) run only
+#   blade-root, factorization-reuse, single-precision, peers) run only
 #   those tables,
 #   all by default (ironing3d and normal-field write doc/verification.md; peers installs GetFEM
 #   and CalculiX with apt-get when they are missing).
@@ -118,6 +118,14 @@ if want factorization-reuse; then
   # dofs on 1 and 2 ranks (~6 minutes).
   python3 bench/factorization_reuse.py "$BUILD/apps/contactlab" scenes \
     "$BUILD/bench-factorization-reuse" --doc doc/performance.md
+fi
+if want single-precision; then
+  # MUMPS' single-precision factors against double: tet10 Hertz at 46 572 and 129 780 dofs
+  # (~3 minutes); --large adds the seed-size frictional tube (about an hour).
+  cases=(hertz-46k hertz-130k)
+  if [[ $large == 1 ]]; then cases+=(tube-seed); fi
+  python3 bench/single_precision.py "$BUILD/apps/contactlab" scenes \
+    "$BUILD/bench-single-precision" --cases "${cases[@]}" --doc doc/performance.md
 fi
 if want peers; then
   # contactlab, GetFEM and CalculiX on the same tet10 quarter hemisphere, one program at a
