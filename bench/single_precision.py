@@ -20,14 +20,9 @@ import argparse, os, sys
 
 import docblock
 import runs
+import tube_sizes
 
-TUBE_SEED = ["Contact/joint/Friction=0.3",
-             "Mesh/tube-in-tubesheet/Tube Radial Divisions=4",
-             "Mesh/tube-in-tubesheet/Sheet Radial Divisions=10",
-             "Mesh/tube-in-tubesheet/Circumferential Divisions=6",
-             "Mesh/tube-in-tubesheet/Axial Divisions=[5,44,5]",
-             "Mesh/tube-in-tubesheet/Sheet Circumferential Divisions=8",
-             "Mesh/tube-in-tubesheet/Sheet Axial Divisions=42"]
+TUBE_SEED = ["Contact/joint/Friction=0.3"] + tube_sizes.SEED_MESH
 CASES = {
     "hertz-46k": ("hertz-3d.yaml", ["Mesh/half-sphere/Element=tet10",
                                     "Mesh/half-sphere/Size Contact=0.02"], True),

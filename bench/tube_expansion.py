@@ -11,18 +11,23 @@ mid-side rows along z, so a window's mean moves by tens of percent when the rows
 change, while the force, its integral, stays within a few percent.
 
 usage: tube_expansion.py CONTACTLAB OUTDIR [--element hex8|hex20|hex27]
-                         [--discretization node-to-segment|mortar] [--steps N] [--doc DOC]
+                         [--discretization node-to-segment|mortar] [--steps N]
+                         [--size default|seed] [--mu MU ...] [--methods PF NP NG] [--doc DOC]
 The residual depends on the load step (backward Euler through a non-proportional plastic path:
 first order; hex8 NTS frictionless, residual normal force 384 / 412 / 423 / 428 / 430 N at 8 /
 16 / 32 / 64 / 128 steps), so a preset whose steps are cut follows another path: the default 32
 steps keep that within ~2 %.
 The scene's own (hex27, mortar) takes ~30 s frictionless and ~6 min per frictional run on this
-machine; hex8 node-to-segment a few seconds. --doc writes the table into DOC's
-<!-- bench:tube-expansion-ELEMENT:start/end --> block."""
+machine; hex8 node-to-segment a few seconds. --size seed refines the mesh to the seed's 130 000
+dofs (bench/tube_sizes.py: hex27 mortar, 129 294 dofs + 4 251 multipliers; partial Newton at
+mu = 0.3 in the scene's 8 steps took 23 minutes, so the nine runs take hours; --mu and --methods
+pick a part). --doc writes the table into DOC's <!-- bench:tube-expansion-ELEMENT:start/end -->
+block (ELEMENT-seed at the seed's size)."""
 import argparse, csv, json, os
 
 import docblock
 import runs
+import tube_sizes
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "..", "scenes", "tube-expansion-3d.yaml")
@@ -43,6 +48,10 @@ def main():
     parser.add_argument("--discretization", default="mortar")
     parser.add_argument("--steps", type=int, default=32,
                         help="load steps (the scene's 8 leave the residual 11 % from converged)")
+    parser.add_argument("--size", choices=["default", "seed"], default="default")
+    parser.add_argument("--mu", type=float, nargs="+", default=[0.0, 0.1, 0.3])
+    parser.add_argument("--methods", nargs="+", default=[m for m, _ in METHODS],
+                        choices=[m for m, _ in METHODS])
     parser.add_argument("--reuse", action="store_true",
                         help="take the runs already in OUTDIR (their summary.json) instead of "
                              "running them again: a table from an earlier or interrupted bench; "
@@ -53,11 +62,15 @@ def main():
              "| residual normal force | force vs PF | mid-joint pressure |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     print("\n".join(lines), flush=True)
-    for mu in (0.0, 0.1, 0.3):
+    for mu in args.mu:
         reference = None
         for short, method in METHODS:
-            folder = os.path.join(args.out, f"mu{mu:g}-{method}")
-            sets = [f"Mesh/tube-in-tubesheet/Element={args.element}",
+            if short not in args.methods:
+                continue
+            folder = os.path.join(args.out, f"{args.size}-mu{mu:g}-{method}"
+                                  if args.size == "seed" else f"mu{mu:g}-{method}")
+            sets = (tube_sizes.SEED_MESH if args.size == "seed" else []) + [
+                    f"Mesh/tube-in-tubesheet/Element={args.element}",
                     f"Contact/joint/Discretization={args.discretization}",
                     f"Contact/joint/Friction={mu:g}", f"Algorithm/Method={method}",
                     f"Load Steps/Steps={args.steps}"]
@@ -66,7 +79,8 @@ def main():
                 summary = json.load(open(summary_file))
                 wall, done = summary["seconds"]["total"], None
             else:
-                summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True)
+                summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True,
+                                               timeout=6 * 3600)
             if summary is None:
                 line = f"| {mu:g} | {short} | no summary: {done.stderr.strip()[-200:] if done else ''} |"
             else:
@@ -86,9 +100,11 @@ def main():
             lines.append(line)
             print(line, flush=True)
     if args.doc:
-        docblock.write(args.doc, f"tube-expansion-{args.element}",
+        seed = args.size == "seed"
+        docblock.write(args.doc, f"tube-expansion-{args.element}" + ("-seed" if seed else ""),
                        f"bench/tube_expansion.py --element {args.element} --discretization "
-                       f"{args.discretization} --steps {args.steps}", "\n".join(lines) + "\n")
+                       f"{args.discretization} --steps {args.steps}"
+                       + (" --size seed" if seed else ""), "\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":
