@@ -413,6 +413,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     record.linearWork =
         JsonValue::object()
             .set("analyses", work.analyses)
+            .set("analysis_seconds", work.analysisSeconds)
             .set("factorizations", work.factorizations)
             .set("reused_factorizations", work.reusedFactorizations)
             .set("corrections", work.corrections)

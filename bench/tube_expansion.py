@@ -12,7 +12,8 @@ change, while the force, its integral, stays within a few percent.
 
 usage: tube_expansion.py CONTACTLAB OUTDIR [--element hex8|hex20|hex27]
                          [--discretization node-to-segment|mortar] [--steps N]
-                         [--size default|seed] [--mu MU ...] [--methods PF NP NG] [--doc DOC]
+                         [--size default|seed] [--mu MU ...] [--methods PF NP NG]
+                         [--reuse | --no-run] [--doc DOC]
 The residual depends on the load step (backward Euler through a non-proportional plastic path:
 first order; hex8 NTS frictionless, residual normal force 384 / 412 / 423 / 428 / 430 N at 8 /
 16 / 32 / 64 / 128 steps), so a preset whose steps are cut follows another path: the default 32
@@ -56,6 +57,9 @@ def main():
                         help="take the runs already in OUTDIR (their summary.json) instead of "
                              "running them again: a table from an earlier or interrupted bench; "
                              "wall is then the run's own total from summary.json")
+    parser.add_argument("--no-run", action="store_true",
+                        help="--reuse, and a run with no summary.json in OUTDIR is listed as not "
+                             "run instead of being run (a table of the parts run so far)")
     parser.add_argument("--doc")
     args = parser.parse_args()
     lines = ["| μ | method | outcome | steps | Newton | linear solves | wall | peak memory "
@@ -75,9 +79,14 @@ def main():
                     f"Contact/joint/Friction={mu:g}", f"Algorithm/Method={method}",
                     f"Load Steps/Steps={args.steps}"]
             summary_file = os.path.join(folder, "summary.json")
-            if args.reuse and os.path.exists(summary_file):
+            if (args.reuse or args.no_run) and os.path.exists(summary_file):
                 summary = json.load(open(summary_file))
                 wall, done = summary["seconds"]["total"], None
+            elif args.no_run:
+                line = f"| {mu:g} | {short} | not run | – | – | – | – | – | – | – | – |"
+                lines.append(line)
+                print(line, flush=True)
+                continue
             else:
                 summary, wall, done = runs.run(args.exe, "run", SCENE, folder, sets, quiet=True,
                                                timeout=6 * 3600)
