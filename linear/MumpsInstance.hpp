@@ -54,8 +54,12 @@ struct MumpsInstance {
   }
 
   MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }
+  MUMPS_INT icntl(int i) const { return id.icntl[i - 1]; }
   MUMPS_INT infog(int i) const { return id.infog[i - 1]; }
   double rinfog(int i) const { return id.rinfog[i - 1]; }
+  // Entries in the factors after a factorization (INFOG(29); negative: -INFOG(29) million,
+  // past 32 bits).
+  double factorEntries() const { return infog(29) >= 0 ? infog(29) : -1e6 * infog(29); }
   void run(int job) {
     id.job = job;
     MumpsEntryPoint<Struct>::call(&id);

@@ -300,17 +300,18 @@ void MumpsSolver::factorizeInDouble() {
     stats_.factorizationSeconds += secondsSince(t0);
     throw;
   }
-  m.factored = true;
-  m.referenceFlops = m.dbl.rinfog(3);
-  // INFOG(29) < 0: -INFOG(29) million entries (32-bit overflow).
-  m.referenceEntries = m.dbl.infog(29) >= 0 ? m.dbl.infog(29) : -1e6 * m.dbl.infog(29);
-  ++stats_.factorizations;
-  stats_.factorizationSeconds += secondsSince(t0);
-  prepareImporters();
+  recordFactorization(secondsSince(t0));
 }
 
-void MumpsSolver::prepareImporters() {
+void MumpsSolver::recordFactorization(double seconds) {
   Impl& m = *impl_;
+  m.factored = true;
+  m.withFactors([&m](const auto& mumps) {
+    m.referenceFlops = mumps.rinfog(3);
+    m.referenceEntries = mumps.factorEntries();
+  });
+  ++stats_.factorizations;
+  stats_.factorizationSeconds += seconds;
   if (m.rangeMap != m.A->getRangeMap() || m.domainMap != m.A->getDomainMap()) {
     m.rangeMap = m.A->getRangeMap();
     m.domainMap = m.A->getDomainMap();
@@ -391,7 +392,7 @@ std::optional<long> MumpsSolver::negativePivots() const {
 }
 
 int MumpsSolver::memoryRelaxation() const {
-  return impl_->withFactors([](const auto& mumps) { return mumps.id.icntl[13]; });
+  return impl_->withFactors([](const auto& mumps) { return mumps.icntl(14); });
 }
 
 bool MumpsSolver::hasScotch() {

@@ -112,8 +112,10 @@ class MumpsSolver : public LinearSolver {
   // Whether the next factorization is single precision (decides it at the first analysis under
   // Precision automatic).
   bool factorizesInSingle();
-  // The centralized importers for A's maps, after a factorization.
-  void prepareImporters();
+  // After a successful factorization (of the instance singleFactors names) that took
+  // `seconds`: the factors are held, their flops and size kept for the reuse rule, counted, and
+  // the centralized importers made for A's maps.
+  void recordFactorization(double seconds);
   bool reusesFactorization() const;
   // After a factorization of A: A becomes the reference later matrices are compared with, when
   // a correction could ever pay (none is kept for a cheap factorization).

@@ -75,15 +75,9 @@ void MumpsSolver::factorize() {
     stats_.factorizationSeconds += secondsSince(t0);
     throw;
   }
-  m.factored = true;
   m.singleFactors = true;
-  m.referenceFlops = m.sgl->rinfog(3);
-  // INFOG(29) < 0: -INFOG(29) million entries (32-bit overflow).
-  m.referenceEntries = m.sgl->infog(29) >= 0 ? m.sgl->infog(29) : -1e6 * m.sgl->infog(29);
-  ++stats_.factorizations;
   ++stats_.singlePrecisionFactorizations;
-  stats_.factorizationSeconds += secondsSince(t0);
-  prepareImporters();
+  recordFactorization(secondsSince(t0));
   m.currentNormInf = normInf(*m.A);
 }
 
