@@ -3,6 +3,7 @@
 #include "algorithms/RunStatic.hpp"
 #include "algorithms/SlowDynamics.hpp"
 #include "apps/DefaultScene.hpp"
+#include "apps/LinearSolverPool.hpp"
 #include "apps/RunCheckpoint.hpp"
 #include "apps/RunProgress.hpp"
 #include "apps/SceneModel.hpp"
@@ -26,19 +27,56 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <sys/resource.h>
 #include <unistd.h>
 
 namespace contactlab {
 namespace {
 
+// The process's resident-set high-water mark (VmHWM), which `contactlab batch` resets before
+// each run (resetPeakMemory) so that each run reports its own; getrusage's maximum where /proc
+// is not readable.
 double peakMemoryMB() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;  // Linux reports kB
+}
+
+// Gives the run's linear solver back to the pool (RunOptions::solverPool) when the run ends,
+// unless an exception is leaving the run: a solver interrupted inside its own work is dropped.
+class SolverGiveBack {
+ public:
+  SolverGiveBack(LinearSolverPool* pool, std::unique_ptr<LinearSolver>& solver)
+      : pool_(pool), solver_(solver), exceptions_(std::uncaught_exceptions()) {}
+  SolverGiveBack(const SolverGiveBack&) = delete;
+  SolverGiveBack& operator=(const SolverGiveBack&) = delete;
+  ~SolverGiveBack() {
+    if (pool_ && !key.empty() && std::uncaught_exceptions() == exceptions_)
+      pool_->giveBack(key, std::move(solver_));
+  }
+  std::string key;  // empty until the solver is built
+
+ private:
+  LinearSolverPool* pool_;
+  std::unique_ptr<LinearSolver>& solver_;
+  int exceptions_;
+};
+
+// The settings that make two runs' solvers interchangeable: the Linear Solver section (after
+// its Mode was resolved) and the communicator's size.
+std::string solverKey(const Teuchos::ParameterList& scene, int ranks) {
+  std::ostringstream key;
+  scene.sublist("Linear Solver").print(key);
+  return key.str() + "ranks " + std::to_string(ranks);
 }
 
 // Bad input: one sentence on stderr, exit code 2.
@@ -125,6 +163,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   std::unique_ptr<Problem> problem;
   std::unique_ptr<ContactProblem> contact;
   std::unique_ptr<LinearSolver> solver;
+  SolverGiveBack giveBack(options.solverPool, solver);
   try {
     if (!options.restartDirectory.empty()) {
       // --restart: the scene and overrides the checkpoint was written with.
@@ -215,7 +254,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                          numberText(sm.solverOptions.endTime) + ": nothing to run");
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
-    solver = buildLinearSolver(*sm.scene.params, comm);
+    const std::string key = solverKey(*sm.scene.params, comm->getSize());
+    if (options.solverPool) solver = options.solverPool->take(key);
+    if (!solver) solver = buildLinearSolver(*sm.scene.params, comm);
+    giveBack.key = key;
     checkSymmetry(*problem, *solver, sm.scene.path);
     // The uniqueness checks need the solver's determinants: a solver without them is refused
     // now, not after the run.

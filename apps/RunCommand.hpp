@@ -8,6 +8,8 @@
 
 namespace contactlab {
 
+class LinearSolverPool;
+
 struct RunOptions {
   std::string scenePath;               // empty: the embedded default scene
   std::string outputDirectory;         // empty: the scene's Output/Directory
@@ -23,6 +25,9 @@ struct RunOptions {
   // checkpoint's (scenePath, when given, replaces the path); a scene whose validated values
   // changed is refused (RunCheckpoint.hpp: sceneHash).
   std::string restartDirectory;
+  // Where the run takes its linear solver from and gives it back to (`contactlab batch`):
+  // null, a solver of its own.
+  LinearSolverPool* solverPool = nullptr;
 };
 
 // Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says

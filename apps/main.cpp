@@ -6,11 +6,14 @@
 //   contactlab validate SCENE [--set key=value ...]
 //   contactlab critical-mu SCENE [--out DIR] [--set key=value ...]
 //   contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]
+//   contactlab batch [--quiet] < RUNS
 //   contactlab list
 //   contactlab --version
 //   contactlab help [COMMAND], contactlab COMMAND --help
 #include "contactlab/Version.hpp"
 
+#include "apps/BatchCommand.hpp"
+#include "apps/CommandErrors.hpp"
 #include "apps/RunCommand.hpp"
 #include "apps/SceneSchema.hpp"
 #include "base/InputError.hpp"
@@ -41,9 +44,12 @@ const char* kUsage =
     "                      run SCENE, then the critical friction coefficient of the last\n"
     "                      converged state's contact statuses (also in summary.json)\n"
     "  study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
-    "                      run a scene over the product of a study's axes (each run its own\n"
-    "                      process, with a time limit; resumable), then study.csv, study.md\n"
-    "                      and plots, and prints the comparison table (doc/studies.md)\n"
+    "                      run a scene over the product of a study's axes (the runs in one\n"
+    "                      batch process, each with a time limit; resumable), then study.csv,\n"
+    "                      study.md and plots, and prints the comparison table (doc/studies.md)\n"
+    "  batch [--quiet]     run the scenes listed on stdin one after another in this\n"
+    "                      process (a line a run: OUT<tab>SCENE<tab>key=value...; what the\n"
+    "                      study runner uses)\n"
     "  list                every registry with its parameters, defaults and doc strings\n"
     "  --version           print the version\n"
     "  help [COMMAND]      this text, or a command's (also COMMAND --help)\n"
@@ -83,10 +89,23 @@ const char* commandHelp(const std::string& command) {
   if (command == "study")
     return "usage: contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
            "\n"
-           "Runs a scene over the product of a study's axes, each run its own process with a\n"
-           "time limit (resumable), then writes study.csv, study.md and plots and prints the\n"
-           "comparison table and where they are (doc/studies.md). `make run` runs\n"
-           "scenes/studies/quick-comparison.yaml.\n";
+           "Runs a scene over the product of a study's axes, each run with a time limit, all in\n"
+           "one `contactlab batch` process (a crash or a timeout ends only its run; the study\n"
+           "key Process Per Run: true gives each run a process of its own), resumable, then\n"
+           "writes study.csv, study.md and plots and prints the comparison table and where they\n"
+           "are (doc/studies.md). `make run` runs scenes/studies/quick-comparison.yaml.\n";
+  if (command == "batch")
+    return "usage: contactlab batch [--quiet] < RUNS\n"
+           "\n"
+           "Runs scenes one after another in this process: one run a line on stdin,\n"
+           "  OUT<tab>SCENE<tab>key/path=value<tab>...\n"
+           "(SCENE empty: the built-in scene; the values as run --set takes them). Each run\n"
+           "writes what `contactlab run SCENE --out OUT --set ...` writes, its output going to\n"
+           "OUT/run.log, then prints 'exit CODE' (that command's exit code) on stdout. The\n"
+           "start-up is paid once, and a run takes the linear solver the run before it left,\n"
+           "with its factors: on the same mesh, a later run corrects them where its matrices\n"
+           "differ instead of factorizing (the same results to the solver's tolerance). One\n"
+           "rank. `contactlab study` runs its cases through it (doc/studies.md).\n";
   if (command == "list")
     return "usage: contactlab list\n"
            "\n"
@@ -137,11 +156,11 @@ int answerBeforeStartup(int argc, char** argv) {
     std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
     return 0;
   }
-  return -1;  // run, validate, critical-mu, study
+  return -1;  // run, validate, critical-mu, study, batch
 }
 
-// `contactlab study`: the study scripts run each case as a `contactlab run` of its own, so
-// this process hands over before MPI starts (a forking MPI process is not portable).
+// `contactlab study`: the study scripts start `contactlab batch` (or a `contactlab run` per
+// case), so this process hands over before MPI starts (a forking MPI process is not portable).
 int study(int argc, char** argv) {
   char self[4096];
   const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -162,13 +181,22 @@ int study(int argc, char** argv) {
   return 1;
 }
 
-// run, validate or critical-mu: answerBeforeStartup has answered every other command (and
+// run, validate, critical-mu or batch: answerBeforeStartup has answered every other command (and
 // refused unknown ones) and `study` has handed over, before MPI started.
 int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char** argv) {
   const bool root = comm->getRank() == 0;
   const std::vector<std::string> args(argv + 1, argv + argc);
   const std::string& command = args[0];
   contactlab::installInterruptionHandlers();
+  if (command == "batch") {
+    bool quiet = false;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+      if (args[i] != "--quiet" && args[i] != "-q")
+        return root ? usageError("batch takes no argument but --quiet ('" + args[i] + "')") : 2;
+      quiet = true;
+    }
+    return contactlab::batchCommand(comm, quiet);
+  }
   contactlab::RunOptions options;
   options.validateOnly = command == "validate";
   options.criticalMu = command == "critical-mu";
@@ -198,14 +226,6 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
   return contactlab::runCommand(options, comm);
 }
 
-// An error that escaped a command: one sentence, exit code 2 for bad input and 1 otherwise.
-// Another rank may be waiting in a collective call, so a parallel run is aborted as a whole.
-int escaped(const Teuchos::Comm<int>& comm, const std::string& what, int code) {
-  std::cerr << "contactlab: error: " << what << "\n";
-  if (comm.getSize() > 1) MPI_Abort(MPI_COMM_WORLD, code);
-  return code;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -213,19 +233,5 @@ int main(int argc, char** argv) {
   if (std::string(argv[1]) == "study") return study(argc, argv);
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
-  try {
-    return dispatch(comm, argc, argv);
-  } catch (const contactlab::InputError& e) {
-    return escaped(*comm, e.what(), 2);
-  } catch (const std::bad_alloc&) {
-    return escaped(*comm, "out of memory (the model is too large for this machine)", 1);
-  } catch (const std::exception& e) {
-    return escaped(*comm, e.what(), 1);
-  } catch (const std::string& e) {  // gmsh throws strings
-    return escaped(*comm, "gmsh: " + e, 1);
-  } catch (const char* e) {
-    return escaped(*comm, std::string("gmsh: ") + e, 1);
-  } catch (...) {
-    return escaped(*comm, "an unknown error stopped the run", 1);
-  }
+  return contactlab::withErrorsReported(*comm, [&] { return dispatch(comm, argc, argv); });
 }

@@ -3,9 +3,10 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   blade-root, factorization-reuse, single-precision, peers) run only
+#   blade-root, factorization-reuse, single-precision, peers, study-process) run only
 #   those tables,
-#   all by default (ironing3d and normal-field write doc/verification.md; peers installs GetFEM
+#   all by default (ironing3d and normal-field write doc/verification.md, study-process
+#   doc/studies.md; peers installs GetFEM
 #   and CalculiX with apt-get when they are missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -127,10 +128,16 @@ if want single-precision; then
   python3 bench/single_precision.py "$BUILD/apps/contactlab" scenes \
     "$BUILD/bench-single-precision" --cases "${cases[@]}" --doc doc/performance.md
 fi
+if want study-process; then
+  # Studies with their runs in one `contactlab batch` process against a process per run, and
+  # against one run (issue 19's 100-run study): five studies, about 6 minutes.
+  python3 bench/study_process.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-study-process" \
+    --doc doc/studies.md
+fi
 if want peers; then
   # contactlab, GetFEM and CalculiX on the same tet10 quarter hemisphere, one program at a
   # time (issue 19): 125 730 dofs, several minutes per program; --size 0.02 for seconds.
   /usr/bin/python3 bench/peers/peers.py "$BUILD/apps/contactlab" "$BUILD/bench-peers" \
     --size 0.00713 --doc doc/performance.md
 fi
-echo "bench: doc/performance.md and doc/verification.md updated"
+echo "bench: doc/performance.md, doc/verification.md and doc/studies.md updated"

@@ -59,6 +59,7 @@ NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 BENCH = {"ironing3d-small": "bench/run.sh ironing3d",
          "ironing3d": "bench/run.sh --large ironing3d",
          "normal-field": "bench/run.sh normal-field",
+         "study-process": "bench/run.sh study-process",
          "fuzz:million": "bench/fuzz.sh"}
 STUDIES_FIRST = ("extremes", "quick-comparison", "hertz-2d-study")  # the long ones start first
 

@@ -11,9 +11,9 @@
 
 namespace contactlab {
 
-// The output pressure of each point: on tri6 node-to-segment slaves the field whose consistent
-// nodal forces are the points' forces (SurfacePressure.hpp), elsewhere NaN (the law's pressure
-// is the field). `points` are a converged state's, in the problem's order.
+// The output pressure of each point: on node-to-segment slaves of tri6, quad8 or quad9 facets
+// the linear field the points' forces represent (SurfacePressure.hpp), elsewhere NaN (the
+// law's pressure is the field). `points` are a converged state's, in the problem's order.
 std::vector<double> recoveredPressures(const Mesh& mesh, const std::vector<ContactZone>& zones,
                                        const std::vector<ContactPointResult>& points);
 

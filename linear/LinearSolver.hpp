@@ -101,6 +101,9 @@ class LinearSolver {
   virtual std::optional<double> conditionEstimate() const { return std::nullopt; }
   // Counts and times of this solver's work so far; every solver keeps them in stats_.
   const LinearSolverStats& stats() const { return stats_; }
+  // Counts from zero again (a solver kept for another run: apps/LinearSolverPool.hpp); what
+  // the solver holds (analysis, factors) is kept.
+  void resetStats() { stats_ = LinearSolverStats{}; }
 
  protected:
   LinearSolverStats stats_;

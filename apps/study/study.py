@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """contactlab study STUDY.yaml [--out DIR] [--retry-failed] [--no-plots]
 
-Runs one scene over the product of the study's axes (and its explicit cases), each run a
-separate `contactlab run` process with a time limit, then writes study.csv, study.md and PNG
+Runs one scene over the product of the study's axes (and its explicit cases), in one
+`contactlab batch` process (or each run its own process: Process Per Run), each run with a time
+limit, then writes study.csv, study.md and PNG
 plots (doc/studies.md). A failure, a timeout or a crash of one run is recorded with its reason
 and the study goes on. Studies resume: a run whose folder already holds the same case's result
 is not run again (--retry-failed runs the failed ones again). Started by `contactlab study`,
@@ -19,11 +20,13 @@ sys.dont_write_bytecode = True  # the scripts may run from the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import study_file  # noqa: E402
 import study_metrics as metrics  # noqa: E402
+import study_process as process  # noqa: E402
 import study_report as report  # noqa: E402
 
 
-def run_case(exe, scene, folder, sets, timeout, retry_failed):
-    """Runs one case in `folder` unless it is already there; returns its record."""
+def run_case(batch, exe, scene, folder, sets, timeout, retry_failed):
+    """Runs one case in `folder` unless it is already there; returns its record. `batch`: the
+    shared process (None: a process of its own)."""
     os.makedirs(folder, exist_ok=True)
     case_file, record_file = (os.path.join(folder, f) for f in ("case.json", "record.json"))
     try:
@@ -38,20 +41,11 @@ def run_case(exe, scene, folder, sets, timeout, retry_failed):
         if os.path.exists(os.path.join(folder, f)):
             os.remove(os.path.join(folder, f))
     json.dump({"scene": scene, "sets": sets}, open(case_file, "w"))
-    cmd = [exe, "run", scene, "--out", folder]
-    for s in sets:
-        cmd += ["--set", s]
     start = time.time()
-    with open(os.path.join(folder, "run.log"), "w") as log:
-        # A session of its own, so that a timeout stops the run and anything it started.
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
-                                start_new_session=True)
-        try:
-            code = proc.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-            code = None
+    if batch is not None and batch.accepts(scene, folder, sets):
+        code = batch.run(scene, folder, sets, timeout)
+    else:
+        code = process.run_own_process(exe, scene, folder, sets, timeout)
     record = {"wall_s": time.time() - start, "returncode": code}
     summary = metrics.load_summary(folder)
     non_finite = metrics.non_finite_outputs(folder)
@@ -98,6 +92,39 @@ def metrics_row(study, name, point, sets, folder, record, reference):
     return row
 
 
+def run_all(study, todo, out, args, batch):
+    """The reference run (if any), then every case in order, with progress; the rows."""
+    reference = {"points": None, "summary": None}
+    if study["Reference"]["Type"] == "run":
+        folder = os.path.join(out, "reference")
+        rec = run_case(batch, args.contactlab, study["Scene"], folder,
+                       study["Sets"] + [str(s) for s in study["Reference"]["Sets"]],
+                       study["Timeout"], args.retry_failed)
+        print(f"[reference] {rec['status']} {rec['reason']} ({rec['wall_s']:.1f} s)", flush=True)
+        if rec["status"] != "converged":
+            print("contactlab: warning: the reference run did not converge: no accuracy "
+                  "columns", file=sys.stderr)
+        else:
+            reference = {"points": metrics.read_contact(folder, study.get("Zone")),
+                         "summary": metrics.load_summary(folder)}
+
+    rows, spent, ran = [], 0.0, 0
+    for i, (name, point, sets, scene) in enumerate(todo):
+        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
+        print(f"[{i + 1}/{len(todo)}] {name} ...", end=" ", flush=True)
+        rec = run_case(batch, args.contactlab, scene, folder, study["Sets"] + sets,
+                       study["Timeout"], args.retry_failed)
+        if not rec.get("resumed"):
+            spent, ran = spent + rec["wall_s"], ran + 1
+        left = len(todo) - i - 1
+        eta = f", ETA {spent / ran * left:.0f} s" if ran and left else ""
+        print(f"{rec['status']}{' ' + rec['reason'] if rec['reason'] else ''} "
+              f"({rec['wall_s']:.1f} s{', done earlier' if rec.get('resumed') else ''}{eta})",
+              flush=True)
+        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, rec, reference))
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser(prog="contactlab study", description=__doc__.split("\n")[2])
     ap.add_argument("study")
@@ -118,34 +145,15 @@ def main():
     print(f"contactlab study {study['Name']}: {len(todo)} run(s) of {study['Scene']} "
           f"-> {out}", flush=True)
 
-    reference = {"points": None, "summary": None}
-    if study["Reference"]["Type"] == "run":
-        folder = os.path.join(out, "reference")
-        rec = run_case(args.contactlab, study["Scene"], folder,
-                       study["Sets"] + [str(s) for s in study["Reference"]["Sets"]],
-                       study["Timeout"], args.retry_failed)
-        print(f"[reference] {rec['status']} {rec['reason']} ({rec['wall_s']:.1f} s)", flush=True)
-        if rec["status"] != "converged":
-            print("contactlab: warning: the reference run did not converge: no accuracy "
-                  "columns", file=sys.stderr)
-        else:
-            reference = {"points": metrics.read_contact(folder, study.get("Zone")),
-                         "summary": metrics.load_summary(folder)}
-
-    rows, spent, ran = [], 0.0, 0
-    for i, (name, point, sets, scene) in enumerate(todo):
-        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
-        print(f"[{i + 1}/{len(todo)}] {name} ...", end=" ", flush=True)
-        rec = run_case(args.contactlab, scene, folder, study["Sets"] + sets, study["Timeout"],
-                       args.retry_failed)
-        if not rec.get("resumed"):
-            spent, ran = spent + rec["wall_s"], ran + 1
-        left = len(todo) - i - 1
-        eta = f", ETA {spent / ran * left:.0f} s" if ran and left else ""
-        print(f"{rec['status']}{' ' + rec['reason'] if rec['reason'] else ''} "
-              f"({rec['wall_s']:.1f} s{', done earlier' if rec.get('resumed') else ''}{eta})",
-              flush=True)
-        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, rec, reference))
+    batch = None if study["Process Per Run"] else process.BatchProcess(args.contactlab)
+    try:
+        rows = run_all(study, todo, out, args, batch)
+    except BaseException:
+        if batch:
+            batch.stop()
+        raise
+    if batch:
+        batch.close()
 
     report.write_csv(os.path.join(out, "study.csv"), rows, axes)
     plots = []

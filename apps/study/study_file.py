@@ -25,6 +25,11 @@ KEYS = {
                  "tightest settings) or {Type: none}",
     "Accuracy Target": "relative L2 pressure error the recommendation asks for (default 0.05)",
     "Zone": "contact zone whose pressure is compared (default: every zone)",
+    "Process Per Run": "true: each run is a `contactlab run` process of its own; default "
+                       "false: the runs share one `contactlab batch` process (the start-up "
+                       "paid once; a run takes the last run's linear solver, whose factors it "
+                       "corrects where its matrices differ: the same results to the solver's "
+                       "tolerance). A crash or a timeout ends only its run either way",
 }
 
 
@@ -70,6 +75,9 @@ def read_study(path):
     s.setdefault("Timeout", 600)
     if not isinstance(s["Timeout"], (int, float)) or s["Timeout"] <= 0:
         raise StudyError(f"{path}: Timeout must be a positive number of seconds")
+    s.setdefault("Process Per Run", False)
+    if not isinstance(s["Process Per Run"], bool):
+        raise StudyError(f"{path}: Process Per Run must be true or false")
     s.setdefault("Accuracy Target", 0.05)
     s.setdefault("Sets", [])
     s.setdefault("Axes", {})

@@ -5,70 +5,59 @@
 #include "core/fem/ReferenceElement.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace contactlab {
+namespace {
 
-std::map<std::int64_t, double> pressureFromNodalForces(
-    const Mesh& mesh, const std::string& group, const std::map<std::int64_t, double>& forces) {
-  // Surface nodes numbered 0..n-1, and the consistent mass M in rows of (column, value).
-  std::map<std::int64_t, int> index;
-  for (const CellGroup* g : mesh.findBoundaries(group))
-    for (std::int64_t node : g->nodes)
-      index.emplace(node, 0);
-  int n = 0;
-  for (auto& [node, i] : index)
-    i = n++;
-  std::vector<std::map<int, double>> M(n);
-  for (const CellGroup* g : mesh.findBoundaries(group)) {
-    const ReferenceElement& ref = ReferenceElement::get(g->type);
-    const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
-    const int k = g->nodesPerCell();
-    std::vector<double> x(3 * k), N(k), dN(k * ref.dim());
-    double normal[3];
-    for (std::size_t c = 0; c < g->size(); ++c) {
-      for (int a = 0; a < k; ++a)
-        for (int i = 0; i < 3; ++i)
-          x[3 * a + i] = mesh.coords[3 * g->nodes[c * k + a] + i];
-      for (int q = 0; q < rule.size(); ++q) {
-        const double* xi = &rule.points[q * rule.dim];
-        ref.shape(xi, N.data());
-        ref.shapeDerivatives(xi, dN.data());
-        const double dA = facetGeometry(mesh.dim, k, x.data(), dN.data(), normal) * rule.weights[q];
-        for (int a = 0; a < k; ++a)
-          for (int b = 0; b < k; ++b)
-            M[index[g->nodes[c * k + a]]][index[g->nodes[c * k + b]]] += N[a] * N[b] * dA;
-      }
-    }
+// The facet type whose nodes are `type`'s corners, on the same reference domain.
+ElementType linearFacetType(ElementType type) {
+  switch (type) {
+    case ElementType::Line2:
+    case ElementType::Line3:
+      return ElementType::Line2;
+    case ElementType::Tri3:
+    case ElementType::Tri6:
+      return ElementType::Tri3;
+    case ElementType::Quad4:
+    case ElementType::Quad8:
+    case ElementType::Quad9:
+      return ElementType::Quad4;
+    default:
+      throw std::invalid_argument(std::string("surface pressure: '") + info(type).name +
+                                  "' is not a facet type");
   }
-  std::vector<double> f(n, 0.0), p(n, 0.0), r(n), z(n), d(n), Md(n), diag(n);
-  for (const auto& [node, force] : forces)
-    if (auto it = index.find(node); it != index.end()) f[it->second] = force;
+}
+
+// Conjugate gradients with a diagonal preconditioner on the sparse symmetric positive definite
+// M (rows of column -> value), to 1e-12 relative. A surface mass matrix is well conditioned (a
+// few tens): tens of iterations.
+std::vector<double> solveMass(const std::vector<std::map<int, double>>& M,
+                              const std::vector<double>& g) {
+  const int n = static_cast<int>(M.size());
+  std::vector<double> p(n, 0.0), r = g, z(n), d(n), Md(n), diag(n);
   for (int i = 0; i < n; ++i)
-    diag[i] = M[i][i];
-  const auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {
-    for (int i = 0; i < n; ++i) {
-      out[i] = 0;
-      for (const auto& [j, m] : M[i])
-        out[i] += m * v[j];
-    }
-  };
-  double fNorm = 0;
-  for (double v : f)
-    fNorm += v * v;
-  r = f;
+    diag[i] = M[i].at(i);
+  double gNorm = 0;
+  for (double v : g)
+    gNorm += v * v;
   for (int i = 0; i < n; ++i)
     d[i] = z[i] = r[i] / diag[i];
   double rz = 0;
   for (int i = 0; i < n; ++i)
     rz += r[i] * z[i];
-  // A surface mass matrix is well conditioned (a few tens): CG converges in tens of iterations.
   for (int it = 0; it < 10 * n + 10 && rz > 0; ++it) {
     double rr = 0;
     for (double v : r)
       rr += v * v;
-    if (rr <= 1e-24 * fNorm) break;
-    apply(d, Md);
+    if (rr <= 1e-24 * gNorm) break;
+    for (int i = 0; i < n; ++i) {
+      Md[i] = 0;
+      for (const auto& [j, m] : M[i])
+        Md[i] += m * d[j];
+    }
     double dMd = 0;
     for (int i = 0; i < n; ++i)
       dMd += d[i] * Md[i];
@@ -85,9 +74,69 @@ std::map<std::int64_t, double> pressureFromNodalForces(
       d[i] = z[i] + rzNew / rz * d[i];
     rz = rzNew;
   }
+  return p;
+}
+
+}  // namespace
+
+std::map<std::int64_t, double> pressureFromNodalForces(
+    const Mesh& mesh, const std::string& group, const std::map<std::int64_t, double>& forces) {
+  const std::vector<const CellGroup*> facets = mesh.findBoundaries(group);
+  // The vertices numbered 0..n-1, and each surface node's hat-function values: phi_k(x_i) as
+  // (vertex, value) pairs (a vertex: itself with 1; a mid-edge node: its two ends with 1/2).
+  std::map<std::int64_t, int> vertex;
+  for (const CellGroup* g : facets)
+    for (std::size_t c = 0; c < g->size(); ++c)
+      for (int a = 0; a < cornerCount(g->type); ++a)
+        vertex.emplace(g->nodes[c * g->nodesPerCell() + a], 0);
+  int n = 0;
+  for (auto& [node, k] : vertex)
+    k = n++;
+  std::map<std::int64_t, std::vector<std::pair<int, double>>> hats;
+  std::vector<std::map<int, double>> M1(n);
+  for (const CellGroup* g : facets) {
+    const ReferenceElement& ref = ReferenceElement::get(g->type);
+    const ReferenceElement& linear = ReferenceElement::get(linearFacetType(g->type));
+    const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
+    const int k = g->nodesPerCell(), corners = linear.numNodes(), dim = ref.dim();
+    std::vector<double> x(3 * k), N(k), dN(k * dim), phi(corners);
+    double normal[3];
+    for (std::size_t c = 0; c < g->size(); ++c) {
+      const std::int64_t* nodes = &g->nodes[c * k];
+      for (int a = 0; a < k; ++a) {
+        for (int i = 0; i < 3; ++i)
+          x[3 * a + i] = mesh.coords[3 * nodes[a] + i];
+        if (hats.count(nodes[a])) continue;
+        linear.shape(&ref.nodeCoordinates()[a * dim], phi.data());
+        auto& hat = hats[nodes[a]];
+        for (int b = 0; b < corners; ++b)
+          if (std::abs(phi[b]) > 1e-12) hat.emplace_back(vertex.at(nodes[b]), phi[b]);
+      }
+      for (int q = 0; q < rule.size(); ++q) {
+        const double* xi = &rule.points[q * rule.dim];
+        ref.shapeDerivatives(xi, dN.data());
+        linear.shape(xi, phi.data());
+        const double dA = facetGeometry(mesh.dim, k, x.data(), dN.data(), normal) * rule.weights[q];
+        for (int a = 0; a < corners; ++a)
+          for (int b = 0; b < corners; ++b)
+            M1[vertex.at(nodes[a])][vertex.at(nodes[b])] += phi[a] * phi[b] * dA;
+      }
+    }
+  }
+  std::vector<double> g(n, 0.0);
+  for (const auto& [node, force] : forces)
+    if (auto it = hats.find(node); it != hats.end())
+      for (const auto& [k, value] : it->second)
+        g[k] += value * force;
+  const std::vector<double> p = solveMass(M1, g);
   std::map<std::int64_t, double> out;
   for (const auto& [node, force] : forces)
-    if (auto it = index.find(node); it != index.end()) out[node] = p[it->second];
+    if (auto it = hats.find(node); it != hats.end()) {
+      double value = 0;
+      for (const auto& [k, weight] : it->second)
+        value += weight * p[k];
+      out[node] = value;
+    }
   return out;
 }
 

@@ -4,10 +4,20 @@
 // pressure on linear facets (the row sums of the surface mass), but not on quadratic ones: a
 // tri6 corner's shape function integrates to zero, so a smooth pressure puts almost no force on
 // the corners and most on the mid-edge nodes, and f_i / w_i reads ~0 at corners and ~1.2 p at
-// mid-edge nodes (a 3D Hertz on tet10: 40 % RMS error against the analytic field). The field
-// p = sum_j N_j p_j whose consistent nodal forces are f, M p = f with M_ij = int N_i N_j dA, is
-// the pressure those forces represent (the L2 projection of the traction onto the surface's
-// field); it is exact for a uniform pressure on any facet type.
+// mid-edge nodes (a 3D Hertz on tet10: 40 % RMS error against the analytic field).
+//
+// The field reported is the L2 projection of the traction onto the facets' linear field (the
+// vertices' hat functions phi_k): g_k = sum_i phi_k(x_i) f_i (a mid-edge node's force shared
+// half and half by its edge's ends), M1 p = g with M1_kl = int phi_k phi_l dA, and a mid-edge
+// node's value interpolated from its vertices. When f are the consistent loads of a traction t,
+// f_i = int t N_i dA, then g_k = int t phi_k dA exactly (the quadratic basis reproduces the hat
+// functions), so a uniform or linear t is given back exactly on any facet type. Projecting onto
+// the quadratic field instead (M p = f with the tri6 mass) is exact too, but divides the
+// corners' forces, which a smooth pressure makes ~0, by the corners' ~0 integrals: it amplifies
+// their errors (the node-to-segment reactions at tri6 corners are short of the consistent load
+// by a near-constant amount), and on the 3D Hertz of bench/peers (tet10, 125 730 dofs) the
+// vertices read 0.77 % of p0 RMS off Hertz against 0.24 % with the linear field
+// (doc/verification.md).
 #include "core/mesh/Mesh.hpp"
 
 #include <cstdint>
@@ -16,9 +26,9 @@
 
 namespace contactlab {
 
-// M p = f over the facets of boundary group `group` (reference coordinates), for the nodes in
-// `forces` (the others carry no force); solved by conjugate gradients with a diagonal
-// preconditioner to 1e-12 relative. Returns p for the nodes of `forces`.
+// The field above over the facets of boundary group `group` (reference coordinates), for the
+// nodes in `forces` (the others carry no force); M1 p = g solved by conjugate gradients with a
+// diagonal preconditioner to 1e-12 relative. Returns p for the nodes of `forces`.
 std::map<std::int64_t, double> pressureFromNodalForces(
     const Mesh& mesh, const std::string& group, const std::map<std::int64_t, double>& forces);
 

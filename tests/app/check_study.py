@@ -4,7 +4,9 @@
 reference run. Checks that every run is recorded with its reason and the study goes on, that
 study.csv / study.md / the plots are written with the accuracy against the reference, that a
 second invocation resumes (runs nothing again), and that a bad study file is refused with a
-sentence.
+sentence. The runs share one `contactlab batch` process by default: the same study with
+Process Per Run gives the same table; a run that kills that process is recorded as a crash and
+the next run gets a new one; `contactlab batch` itself answers every line, a bad one too.
 
 usage: check_study.py CONTACTLAB SCENES_DIR WORKDIR"""
 import csv, os, shutil, subprocess, sys, time
@@ -72,6 +74,48 @@ again = subprocess.run([exe, "study", study, "--out", out, "--no-plots"], captur
                        text=True, timeout=600)
 check(f"a second invocation resumes: nothing run again ({time.time() - start:.1f} s, first "
       f"{first:.1f} s)", again.returncode == 0 and again.stdout.count("done earlier") == 7)
+
+# The same runs, each in a process of its own: the same outcomes, iterations and accuracy.
+own = os.path.join(work, "own.yaml")
+open(own, "w").write(open(study).read().replace("  Timeout: 8\n", "  Timeout: 8\n  Process Per "
+                                                "Run: true\n").split("  Cases:")[0] +
+                     "  Reference: {Type: run, Sets: [\"Load Steps/Steps=4\"]}\n")
+r = subprocess.run([exe, "study", own, "--out", os.path.join(work, "own"), "--no-plots"],
+                   capture_output=True, text=True, timeout=600)
+own_rows = {row["case"]: row for row in csv.DictReader(open(os.path.join(work, "own",
+                                                                         "study.csv")))}
+same = ["status", "newton", "linear_solves", "steps", "pressure_error_l2", "max_penetration"]
+differ = [(case, k) for case, row in own_rows.items() for k in same if row[k] != by[case][k]]
+check(f"a process per run: the same {len(own_rows)} rows as the shared process ({differ})",
+      r.returncode == 0 and len(own_rows) == 6 and not differ)
+
+# A run that kills the shared process (at the end of its step 1, as a crash would): recorded
+# as a crash, and the next run starts a new process, which is killed the same way.
+crash = os.path.join(work, "crash.yaml")
+open(crash, "w").write(open(own).read().replace("  Process Per Run: true\n", "").split(
+    "  Reference:")[0].replace("[lagrange, augmented-lagrangian, no-such-formulation]",
+                               "[lagrange, augmented-lagrangian]").replace("[1, 2]", "[1]"))
+r = subprocess.run([exe, "study", crash, "--out", os.path.join(work, "crash"), "--no-plots"],
+                   capture_output=True, text=True, timeout=600,
+                   env=dict(os.environ, CONTACTLAB_TEST_KILL_AFTER_STEP="1"))
+crashed = list(csv.DictReader(open(os.path.join(work, "crash", "study.csv"))))
+check(f"each run that kills the shared process is a crash, the study goes on "
+      f"({[(row['status'], row['reason']) for row in crashed]})",
+      r.returncode == 0 and len(crashed) == 2 and
+      all(row["status"] == "crash" and "SIGKILL" in row["reason"] for row in crashed))
+
+# `contactlab batch` itself: a line without a scene field, a scene that does not exist and a
+# run, each answered with the code `contactlab run` would exit with.
+patch = os.path.join(os.path.abspath(scenes), "patch-test-2d.yaml")
+lines = [os.path.join(work, "b0"), "\t".join([os.path.join(work, "b1"), "nowhere.yaml"]),
+         "\t".join([os.path.join(work, "b2"), patch, "Output/VTK=false"])]
+r = subprocess.run([exe, "batch"], input="\n".join(lines) + "\n", capture_output=True,
+                   text=True, timeout=120)
+log1 = open(os.path.join(work, "b1", "run.log")).read()
+check(f"batch answers each line: {r.stdout.split()}, {r.stderr.strip()}",
+      r.returncode == 0 and r.stdout.split() == ["exit", "2", "exit", "2", "exit", "0"] and
+      "OUT<tab>SCENE" in r.stderr and "nowhere.yaml" in log1 and
+      os.path.exists(os.path.join(work, "b2", "summary.json")))
 
 bad = os.path.join(work, "bad.yaml")
 open(bad, "w").write("contactlab-study:\n  Name: x\n  Scene: nowhere.yaml\n  Axes: {}\n")
