@@ -2,6 +2,7 @@
 
 #include "apps/CommandErrors.hpp"
 #include "apps/LinearSolverPool.hpp"
+#include "apps/MeshCache.hpp"
 #include "apps/RunCommand.hpp"
 
 #include <cstdio>
@@ -72,7 +73,7 @@ class OutputRedirection {
 
 // One request: its exit code (2 for a request the batch cannot run, said on stderr).
 int runRequest(const std::vector<std::string>& fields, const Teuchos::RCP<const Comm>& comm,
-               bool quiet, LinearSolverPool& solvers) {
+               bool quiet, LinearSolverPool& solvers, MeshCache& meshes) {
   if (fields.size() < 2 || fields[0].empty()) {
     std::cerr << "contactlab: error: batch: a line is OUT<tab>SCENE[<tab>key=value ...], with "
                  "OUT not empty\n";
@@ -84,6 +85,7 @@ int runRequest(const std::vector<std::string>& fields, const Teuchos::RCP<const 
   options.overrides.assign(fields.begin() + 2, fields.end());
   options.quiet = quiet;
   options.solverPool = &solvers;
+  options.meshCache = &meshes;
   std::error_code ec;
   std::filesystem::create_directories(options.outputDirectory, ec);
   const std::string log = options.outputDirectory + "/run.log";
@@ -107,10 +109,11 @@ int batchCommand(const Teuchos::RCP<const Comm>& comm, bool quiet) {
     return 2;
   }
   LinearSolverPool solvers;
+  MeshCache meshes;
   for (std::string line; std::getline(std::cin, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    const int code = runRequest(tabFields(line), comm, quiet, solvers);
+    const int code = runRequest(tabFields(line), comm, quiet, solvers, meshes);
     std::cout << "exit " << code << std::endl;
     if (code >= 128) return code;  // interrupted: the batch stops with the run
   }

@@ -180,7 +180,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     }
     SceneFile file = scenePath.empty() ? readSceneText(kDefaultScene, "<default scene>", overrides)
                                        : readSceneFile(scenePath, overrides);
-    sm = loadScene(std::move(file), comm);
+    sm = loadScene(std::move(file), comm, options.meshCache);
     hash = sceneHash(*sm.scene.params);
     if (from.restart && hash != from.info.sceneHash)
       throw InputError("--restart " + options.restartDirectory + ": the scene " + sm.scene.path +

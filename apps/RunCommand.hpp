@@ -9,6 +9,7 @@
 namespace contactlab {
 
 class LinearSolverPool;
+class MeshCache;
 
 struct RunOptions {
   std::string scenePath;               // empty: the embedded default scene
@@ -28,6 +29,8 @@ struct RunOptions {
   // Where the run takes its linear solver from and gives it back to (`contactlab batch`):
   // null, a solver of its own.
   LinearSolverPool* solverPool = nullptr;
+  // Where the run takes a generated mesh from and keeps it (`contactlab batch`); null: built.
+  MeshCache* meshCache = nullptr;
 };
 
 // Returns the process exit code: 0 converged, 1 the run failed numerically (summary.json says

@@ -1,6 +1,7 @@
 #include "apps/SceneModel.hpp"
 
 #include "apps/AutomaticAugmentation.hpp"
+#include "apps/MeshCache.hpp"
 #include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneSchema.hpp"
 #include "apps/SceneTemperatures.hpp"
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <tuple>
 #include <utility>
 
@@ -296,7 +298,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
 
 }  // namespace
 
-SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
+SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, MeshCache* meshes) {
   registerAll();
   const std::string& where = scene.path;
   ParameterList& p = *scene.params;
@@ -316,17 +318,27 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm) {
   const std::string meshType = meshSection.get<std::string>("Type");
   const auto& meshEntry = meshSourceRegistry().get(meshType);
   const std::string sceneDir = scene.directory;
-  auto mesh = buildMeshOnRoot(
-      [&] {
-        try {
-          return meshEntry.build(meshSection.sublist(meshType), sceneDir);
-        } catch (const InputError&) {
-          throw;
-        } catch (const std::exception& e) {
-          throw InputError(where + ": Mesh: " + e.what());
-        }
-      },
-      comm);
+  const auto buildMesh = [&] {
+    return buildMeshOnRoot(
+        [&] {
+          try {
+            return meshEntry.build(meshSection.sublist(meshType), sceneDir);
+          } catch (const InputError&) {
+            throw;
+          } catch (const std::exception& e) {
+            throw InputError(where + ": Mesh: " + e.what());
+          }
+        },
+        comm);
+  };
+  // `contactlab batch` keeps generated meshes by their Mesh section; a file is read again (it
+  // may have changed between runs).
+  std::ostringstream meshKey;
+  meshSection.print(meshKey);
+  meshKey << sceneDir;
+  auto mesh = meshes && meshType != "file" && comm->getSize() == 1
+                  ? meshes->meshFor(meshKey.str(), buildMesh)
+                  : buildMesh();
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
   sm.model.axisymmetric = p.sublist("Geometry").get<std::string>("Type") == "axisymmetric";

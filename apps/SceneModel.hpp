@@ -17,6 +17,8 @@
 
 namespace contactlab {
 
+class MeshCache;
+
 struct Probe {
   std::string name;
   std::string field;  // "displacement" or "stress"
@@ -66,8 +68,10 @@ struct SceneModel {
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.
-// Throws InputError (same message on every rank) for anything wrong in the input.
-SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm);
+// Throws InputError (same message on every rank) for anything wrong in the input. `meshes`
+// (one rank only; `contactlab batch`): a generated mesh is taken from, or kept in, it.
+SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm,
+                     MeshCache* meshes = nullptr);
 
 // Whether some contact zone has friction (mu > 0): the uniqueness checks have something to check.
 bool hasFriction(const SceneModel& sm);

@@ -102,10 +102,11 @@ const char* commandHelp(const std::string& command) {
            "(SCENE empty: the built-in scene; the values as run --set takes them). Each run\n"
            "writes what `contactlab run SCENE --out OUT --set ...` writes, its output going to\n"
            "OUT/run.log, then prints 'exit CODE' (that command's exit code) on stdout. The\n"
-           "start-up is paid once, and a run takes the linear solver the run before it left,\n"
-           "with its factors: on the same mesh, a later run corrects them where its matrices\n"
-           "differ instead of factorizing (the same results to the solver's tolerance). One\n"
-           "rank. `contactlab study` runs its cases through it (doc/studies.md).\n";
+           "start-up is paid once, a generated mesh is built once per Mesh section, and a run\n"
+           "takes the linear solver the run before it left, with its factors: on the same\n"
+           "mesh, a later run corrects them where its matrices differ instead of factorizing\n"
+           "(the same results to the solver's tolerance). One rank. `contactlab study` runs\n"
+           "its cases through it (doc/studies.md).\n";
   if (command == "list")
     return "usage: contactlab list\n"
            "\n"
