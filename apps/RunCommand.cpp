@@ -63,7 +63,7 @@ class SolverGiveBack {
     if (pool_ && !key.empty() && std::uncaught_exceptions() == exceptions_)
       pool_->giveBack(key, std::move(solver_));
   }
-  std::string key;  // empty until the solver is built
+  std::string key;  // the solver's settings (solverKey); empty without a pool
 
  private:
   LinearSolverPool* pool_;
@@ -254,10 +254,11 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                          numberText(sm.solverOptions.endTime) + ": nothing to run");
     }
     resolveSolverMode(*sm.scene.params, tangentIsSymmetric(sm, *problem));
-    const std::string key = solverKey(*sm.scene.params, comm->getSize());
-    if (options.solverPool) solver = options.solverPool->take(key);
+    if (options.solverPool) {
+      giveBack.key = solverKey(*sm.scene.params, comm->getSize());
+      solver = options.solverPool->take(giveBack.key);
+    }
     if (!solver) solver = buildLinearSolver(*sm.scene.params, comm);
-    giveBack.key = key;
     checkSymmetry(*problem, *solver, sm.scene.path);
     // The uniqueness checks need the solver's determinants: a solver without them is refused
     // now, not after the run.

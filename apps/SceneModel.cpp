@@ -333,12 +333,10 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   };
   // `contactlab batch` keeps generated meshes by their Mesh section; a file is read again (it
   // may have changed between runs).
+  const bool cached = meshes && meshType != "file" && comm->getSize() == 1;
   std::ostringstream meshKey;
-  meshSection.print(meshKey);
-  meshKey << sceneDir;
-  auto mesh = meshes && meshType != "file" && comm->getSize() == 1
-                  ? meshes->meshFor(meshKey.str(), buildMesh)
-                  : buildMesh();
+  if (cached) meshSection.print(meshKey) << sceneDir;
+  auto mesh = cached ? meshes->meshFor(meshKey.str(), buildMesh) : buildMesh();
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
   sm.model.axisymmetric = p.sublist("Geometry").get<std::string>("Type") == "axisymmetric";

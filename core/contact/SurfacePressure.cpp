@@ -12,25 +12,6 @@
 namespace contactlab {
 namespace {
 
-// The facet type whose nodes are `type`'s corners, on the same reference domain.
-ElementType linearFacetType(ElementType type) {
-  switch (type) {
-    case ElementType::Line2:
-    case ElementType::Line3:
-      return ElementType::Line2;
-    case ElementType::Tri3:
-    case ElementType::Tri6:
-      return ElementType::Tri3;
-    case ElementType::Quad4:
-    case ElementType::Quad8:
-    case ElementType::Quad9:
-      return ElementType::Quad4;
-    default:
-      throw std::invalid_argument(std::string("surface pressure: '") + info(type).name +
-                                  "' is not a facet type");
-  }
-}
-
 // Conjugate gradients with a diagonal preconditioner on the sparse symmetric positive definite
 // M (rows of column -> value), to 1e-12 relative. A surface mass matrix is well conditioned (a
 // few tens): tens of iterations.
@@ -95,11 +76,14 @@ std::map<std::int64_t, double> pressureFromNodalForces(
   std::map<std::int64_t, std::vector<std::pair<int, double>>> hats;
   std::vector<std::map<int, double>> M1(n);
   for (const CellGroup* g : facets) {
+    if (info(g->type).dim != mesh.dim - 1)
+      throw std::invalid_argument(std::string("surface pressure: '") + info(g->type).name +
+                                  "' is not a facet type");
     const ReferenceElement& ref = ReferenceElement::get(g->type);
-    const ReferenceElement& linear = ReferenceElement::get(linearFacetType(g->type));
+    const ReferenceElement& linear = ReferenceElement::get(info(g->type).linear);
     const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
     const int k = g->nodesPerCell(), corners = linear.numNodes(), dim = ref.dim();
-    std::vector<double> x(3 * k), N(k), dN(k * dim), phi(corners);
+    std::vector<double> x(3 * k), dN(k * dim), phi(corners);
     double normal[3];
     for (std::size_t c = 0; c < g->size(); ++c) {
       const std::int64_t* nodes = &g->nodes[c * k];

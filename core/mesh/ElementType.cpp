@@ -7,19 +7,19 @@ namespace {
 
 using ET = ElementType;
 const ElementTypeInfo kInfo[] = {
-    {ET::Point1, "point1", 0, 1, 0, 15, 1, ET::Point1},
-    {ET::Line2, "line2", 1, 2, 1, 1, 3, ET::Point1},
-    {ET::Line3, "line3", 1, 3, 2, 8, 21, ET::Point1},
-    {ET::Tri3, "tri3", 2, 3, 1, 2, 5, ET::Line2},
-    {ET::Tri6, "tri6", 2, 6, 2, 9, 22, ET::Line3},
-    {ET::Quad4, "quad4", 2, 4, 1, 3, 9, ET::Line2},
-    {ET::Quad8, "quad8", 2, 8, 2, 16, 23, ET::Line3},
-    {ET::Quad9, "quad9", 2, 9, 2, 10, 28, ET::Line3},
-    {ET::Tet4, "tet4", 3, 4, 1, 4, 10, ET::Tri3},
-    {ET::Tet10, "tet10", 3, 10, 2, 11, 24, ET::Tri6},
-    {ET::Hex8, "hex8", 3, 8, 1, 5, 12, ET::Quad4},
-    {ET::Hex20, "hex20", 3, 20, 2, 17, 25, ET::Quad8},
-    {ET::Hex27, "hex27", 3, 27, 2, 12, 29, ET::Quad9},
+    {ET::Point1, "point1", 0, 1, 0, 15, 1, ET::Point1, ET::Point1},
+    {ET::Line2, "line2", 1, 2, 1, 1, 3, ET::Point1, ET::Line2},
+    {ET::Line3, "line3", 1, 3, 2, 8, 21, ET::Point1, ET::Line2},
+    {ET::Tri3, "tri3", 2, 3, 1, 2, 5, ET::Line2, ET::Tri3},
+    {ET::Tri6, "tri6", 2, 6, 2, 9, 22, ET::Line3, ET::Tri3},
+    {ET::Quad4, "quad4", 2, 4, 1, 3, 9, ET::Line2, ET::Quad4},
+    {ET::Quad8, "quad8", 2, 8, 2, 16, 23, ET::Line3, ET::Quad4},
+    {ET::Quad9, "quad9", 2, 9, 2, 10, 28, ET::Line3, ET::Quad4},
+    {ET::Tet4, "tet4", 3, 4, 1, 4, 10, ET::Tri3, ET::Tet4},
+    {ET::Tet10, "tet10", 3, 10, 2, 11, 24, ET::Tri6, ET::Tet4},
+    {ET::Hex8, "hex8", 3, 8, 1, 5, 12, ET::Quad4, ET::Hex8},
+    {ET::Hex20, "hex20", 3, 20, 2, 17, 25, ET::Quad8, ET::Hex8},
+    {ET::Hex27, "hex27", 3, 27, 2, 12, 29, ET::Quad9, ET::Hex8},
 };
 
 }  // namespace
@@ -47,16 +47,7 @@ ElementType elementTypeFromGmsh(int gmshType) {
 }
 
 int cornerCount(ElementType type) {
-  switch (info(type).dim) {
-    case 0:
-      return 1;
-    case 1:
-      return 2;
-    case 2:
-      return (type == ElementType::Tri3 || type == ElementType::Tri6) ? 3 : 4;
-    default:
-      return (type == ElementType::Tet4 || type == ElementType::Tet10) ? 4 : 8;
-  }
+  return info(info(type).linear).nodes;
 }
 
 std::vector<std::string> solidElementTypeNames() {

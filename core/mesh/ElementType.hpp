@@ -25,18 +25,20 @@ enum class ElementType {
 
 struct ElementTypeInfo {
   ElementType type;
-  const char* name;   // contactlab's name, used in scene files: "quad8", "hex27", ...
-  int dim;            // topological dimension
-  int nodes;          // number of nodes
-  int order;          // polynomial order of the geometry (1 or 2)
-  int gmshType;       // gmsh element type id
-  int vtkType;        // VTK cell type id
-  ElementType facet;  // type of its facets (Point1 for lines, itself for points)
+  const char* name;    // contactlab's name, used in scene files: "quad8", "hex27", ...
+  int dim;             // topological dimension
+  int nodes;           // number of nodes
+  int order;           // polynomial order of the geometry (1 or 2)
+  int gmshType;        // gmsh element type id
+  int vtkType;         // VTK cell type id
+  ElementType facet;   // type of its facets (Point1 for lines, itself for points)
+  ElementType linear;  // the same shape on its corners only (itself for a linear type)
 };
 
 const ElementTypeInfo& info(ElementType type);
 
-// Number of corner (vertex) nodes; they come first in gmsh's node order.
+// Number of corner (vertex) nodes, those of info(type).linear; they come first in gmsh's node
+// order.
 int cornerCount(ElementType type);
 
 // Throws std::invalid_argument naming the valid choices when `name` is unknown.
