@@ -42,11 +42,14 @@ def run_case(batch, exe, scene, folder, sets, timeout, retry_failed):
             os.remove(os.path.join(folder, f))
     json.dump({"scene": scene, "sets": sets}, open(case_file, "w"))
     start = time.time()
-    if batch is not None and batch.accepts(scene, folder, sets):
+    shared = batch is not None and batch.accepts(scene, folder, sets)
+    if shared:
         code = batch.run(scene, folder, sets, timeout)
     else:
         code = process.run_own_process(exe, scene, folder, sets, timeout)
-    record = {"wall_s": time.time() - start, "returncode": code}
+    # record.json says which process ran the case: the shared batch one or its own.
+    record = {"wall_s": time.time() - start, "returncode": code,
+              "process": "batch" if shared else "own"}
     summary = metrics.load_summary(folder)
     non_finite = metrics.non_finite_outputs(folder)
     if code is None:

@@ -9,7 +9,7 @@ Process Per Run gives the same table; a run that kills that process is recorded 
 the next run gets a new one; `contactlab batch` itself answers every line, a bad one too.
 
 usage: check_study.py CONTACTLAB SCENES_DIR WORKDIR"""
-import csv, os, shutil, subprocess, sys, time
+import csv, json, os, shutil, subprocess, sys, time
 
 exe, scenes, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -86,6 +86,18 @@ own_rows = {row["case"]: row for row in csv.DictReader(open(os.path.join(work, "
                                                                          "study.csv")))}
 same = ["status", "newton", "linear_solves", "steps", "pressure_error_l2", "max_penetration"]
 differ = [(case, k) for case, row in own_rows.items() for k in same if row[k] != by[case][k]]
+
+
+def processes(folder):
+    """The process each run of a study's output folder ran in (record.json)."""
+    runs = os.path.join(folder, "runs")
+    return {json.load(open(os.path.join(runs, r, "record.json")))["process"]
+            for r in os.listdir(runs)}
+
+
+check(f"the runs share the batch process by default ({processes(out)}), each has its own with "
+      f"Process Per Run ({processes(os.path.join(work, 'own'))})",
+      processes(out) == {"batch"} and processes(os.path.join(work, "own")) == {"own"})
 check(f"a process per run: the same {len(own_rows)} rows as the shared process ({differ})",
       r.returncode == 0 and len(own_rows) == 6 and not differ)
 
