@@ -12,32 +12,18 @@ bool byColumn(const std::pair<GO, double>& a, const std::pair<GO, double>& b) {
 
 }  // namespace
 
-void MatrixSnapshot::rowOf(const Matrix::local_matrix_host_type& local, const Map& colMap, LO row,
-                           std::vector<std::pair<GO, double>>& out) {
-  out.clear();
-  for (auto k = local.graph.row_map(row); k < local.graph.row_map(row + 1); ++k)
-    out.emplace_back(colMap.getGlobalElement(local.graph.entries(k)), local.values(k));
-}
-
-MatrixSnapshot::MatrixSnapshot(const Matrix& A) : globalRows_(A.getGlobalNumRows()) {
+MatrixSnapshot::MatrixSnapshot(const Matrix& A)
+    : globalRows_(A.getGlobalNumRows()), colMap_(A.getColMap()) {
   const auto rowMap = A.getRowMap();
   const LO n = static_cast<LO>(A.getNodeNumRows());
-  rows_.resize(n);
-  rowStart_.assign(1, 0);
-  rowStart_.reserve(n + 1);
-  cols_.reserve(A.getNodeNumEntries());
-  values_.reserve(A.getNodeNumEntries());
   const auto local = A.getLocalMatrixHost();
-  std::vector<std::pair<GO, double>> row;
-  for (LO r = 0; r < n; ++r) {
+  rows_.resize(n);
+  for (LO r = 0; r < n; ++r)
     rows_[r] = rowMap->getGlobalElement(r);
-    rowOf(local, *A.getColMap(), r, row);
-    for (const auto& [col, value] : row) {
-      cols_.push_back(col);
-      values_.push_back(value);
-    }
-    rowStart_.push_back(cols_.size());
-  }
+  rowStart_.assign(local.graph.row_map.data(), local.graph.row_map.data() + n + 1);
+  const size_t entries = rowStart_.back();
+  cols_.assign(local.graph.entries.data(), local.graph.entries.data() + entries);
+  values_.assign(local.values.data(), local.values.data() + entries);
 }
 
 bool MatrixSnapshot::sameRowsAs(const Matrix& A) const {
@@ -50,30 +36,55 @@ bool MatrixSnapshot::sameRowsAs(const Matrix& A) const {
 }
 
 MatrixSnapshot::Difference MatrixSnapshot::differenceFrom(const Matrix& A,
-                                                          size_t maxChangedRows) const {
+                                                          size_t maxIndices) const {
   Difference d;
   const auto local = A.getLocalMatrixHost();
+  const Map& colMap = *A.getColMap();
+  // Local column indices mean the same columns on both sides (this rank's part only).
+  const bool sameColumns = colMap_.get() == &colMap || colMap_->locallySameAs(colMap);
+  // The distinct indices as they come, marked by A's local column (a row is a column of a
+  // square matrix; an index outside A's columns, an entry that left the pattern, is kept
+  // apart): the scan stops as soon as there are more than maxIndices of them.
+  std::vector<char> marked(colMap.getNodeNumElements(), 0);
+  std::vector<GO> outside;
+  auto mark = [&](GO gid, LO lid) {
+    if (lid == Teuchos::OrdinalTraits<LO>::invalid()) {
+      outside.push_back(gid);
+    } else if (!marked[lid]) {
+      marked[lid] = 1;
+      d.indices.push_back(gid);
+    }
+  };
   std::vector<std::pair<GO, double>> row, old;
-  size_t changedRows = 0;
   for (size_t r = 0; r < rows_.size(); ++r) {
-    rowOf(local, *A.getColMap(), static_cast<LO>(r), row);
     const size_t begin = rowStart_[r], end = rowStart_[r + 1];
+    const size_t aBegin = local.graph.row_map(r), aEnd = local.graph.row_map(r + 1);
     const size_t before = d.entries.size();
-    auto differs = [&](GO col, double delta) {
-      if (delta != 0.0) d.entries.push_back({rows_[r], col, delta});
-    };
-    bool samePattern = row.size() == end - begin;
-    for (size_t k = 0; samePattern && k < row.size(); ++k)
-      samePattern = row[k].first == cols_[begin + k];
+    bool samePattern = sameColumns && aEnd - aBegin == end - begin;
+    for (size_t k = 0; samePattern && k < end - begin; ++k)
+      samePattern = local.graph.entries(aBegin + k) == cols_[begin + k];
     if (samePattern) {  // the usual case: the entries side by side
-      for (size_t k = 0; k < row.size(); ++k)
-        differs(row[k].first, row[k].second - values_[begin + k]);
-    } else {  // a changed pattern: merge the rows sorted by column
+      for (size_t k = 0; k < end - begin; ++k) {
+        const double delta = local.values(aBegin + k) - values_[begin + k];
+        if (delta == 0.0) continue;
+        const GO col = colMap.getGlobalElement(cols_[begin + k]);
+        d.entries.push_back({rows_[r], col, delta});
+        mark(col, cols_[begin + k]);
+      }
+    } else {  // a changed pattern: merge the rows sorted by global column
+      row.clear();
+      for (size_t k = aBegin; k < aEnd; ++k)
+        row.emplace_back(colMap.getGlobalElement(local.graph.entries(k)), local.values(k));
       old.clear();
       for (size_t k = begin; k < end; ++k)
-        old.emplace_back(cols_[k], values_[k]);
+        old.emplace_back(colMap_->getGlobalElement(cols_[k]), values_[k]);
       std::sort(row.begin(), row.end(), byColumn);
       std::sort(old.begin(), old.end(), byColumn);
+      auto differs = [&](GO col, double delta) {
+        if (delta == 0.0) return;
+        d.entries.push_back({rows_[r], col, delta});
+        mark(col, colMap.getLocalElement(col));
+      };
       auto o = old.begin();
       for (const auto& [col, value] : row) {
         for (; o != old.end() && o->first < col; ++o)
@@ -88,16 +99,14 @@ MatrixSnapshot::Difference MatrixSnapshot::differenceFrom(const Matrix& A,
       for (; o != old.end(); ++o)
         differs(o->first, -o->second);
     }
-    if (d.entries.size() > before && ++changedRows > maxChangedRows) {
+    if (d.entries.size() == before) continue;
+    mark(rows_[r], colMap.getLocalElement(rows_[r]));
+    if (d.indices.size() + outside.size() > maxIndices) {
       d.exceeded = true;
       return d;
     }
   }
-  d.indices.reserve(2 * d.entries.size());
-  for (const auto& e : d.entries) {
-    d.indices.push_back(e.row);
-    d.indices.push_back(e.col);
-  }
+  d.indices.insert(d.indices.end(), outside.begin(), outside.end());
   std::sort(d.indices.begin(), d.indices.end());
   d.indices.erase(std::unique(d.indices.begin(), d.indices.end()), d.indices.end());
   return d;

@@ -1,10 +1,15 @@
 #pragma once
-// A copy of the values of a distributed matrix's local rows, indexed by global row and column,
-// and the difference of another matrix from it: the rows and columns where any entry differs
-// (exactly: an unchanged entry is bitwise equal when it was assembled from the same inputs)
-// and the entries of the difference on them. Entries absent from one pattern count as zero, so
-// two matrices with different patterns (contact terms added) compare entry by entry.
-// Local work only: the caller gathers the indices over the ranks.
+// A copy of the values of a distributed matrix's local rows, and the difference of another
+// matrix from it: the rows and columns where any entry differs (exactly: an unchanged entry is
+// bitwise equal when it was assembled from the same inputs) and the entries of the difference
+// on them. Entries absent from one pattern count as zero, so two matrices with different
+// patterns (contact terms added) compare entry by entry. Local work only: the caller gathers
+// the indices over the ranks.
+//
+// The copy keeps the local (CSR) indices with the column map: a snapshot and a comparison
+// against a matrix on the same column map and row pattern (every Newton iteration between two
+// pairings) are plain passes over the values; global column ids are looked up only for the
+// entries that differ, and for the rows whose pattern changed.
 #include "base/LinearAlgebra.hpp"
 
 #include <vector>
@@ -32,18 +37,16 @@ class MatrixSnapshot {
   // order (a collective answer is the caller's: reduce it over the ranks).
   bool sameRowsAs(const Matrix& A) const;
   // A - snapshot; A must have the same rows (sameRowsAs). Stops (exceeded) as soon as more than
-  // maxChangedRows rows differ: a matrix that changed everywhere (a plastic or finite-strain
-  // solid) costs a few rows' comparison, not a pass over A.
-  Difference differenceFrom(const Matrix& A, size_t maxChangedRows) const;
+  // maxIndices distinct rows and columns differ on this rank: a matrix that changed everywhere
+  // (a plastic or finite-strain solid) costs a few rows' comparison, not a pass over A.
+  Difference differenceFrom(const Matrix& A, size_t maxIndices) const;
 
  private:
-  // One local row's (column, value) pairs, in the local matrix's order.
-  static void rowOf(const Matrix::local_matrix_host_type& local, const Map& colMap, LO row,
-                    std::vector<std::pair<GO, double>>& out);
   Tpetra::global_size_t globalRows_ = 0;
-  std::vector<GO> rows_;          // global ids of the local rows, in local order
-  std::vector<size_t> rowStart_;  // CSR over rows_, each row in A's local order (unsorted)
-  std::vector<GO> cols_;
+  std::vector<GO> rows_;            // global ids of the local rows, in local order
+  Teuchos::RCP<const Map> colMap_;  // of the local column indices below
+  std::vector<size_t> rowStart_;    // CSR over rows_, each row in A's local order
+  std::vector<LO> cols_;            // local column indices
   std::vector<double> values_;
 };
 

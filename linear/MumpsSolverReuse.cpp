@@ -116,8 +116,8 @@ bool MumpsSolver::correctFrom(const Teuchos::RCP<const Matrix>& A) {
   int allSame = 0;
   MPI_Allreduce(&same, &allSame, 1, MPI_INT, MPI_MIN, m.comm);
   if (!allSame) return false;
-  // The changed rows alone bound the rank from below: past Max Correction Rank of them on a
-  // rank, the scan stops, and A is factorized.
+  // A rank's distinct changed rows and columns bound the rank from below: past Max Correction
+  // Rank of them on a rank, the scan stops, and A is factorized.
   const size_t maxRank = static_cast<size_t>(options_.maxCorrectionRank);
   const auto difference = m.reference.differenceFrom(*A, maxRank);
   int exceeded = difference.exceeded ? 1 : 0;

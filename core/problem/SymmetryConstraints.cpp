@@ -11,7 +11,7 @@
 #include <map>
 #include <set>
 #include <stdexcept>
-#include <unordered_map>
+#include <vector>
 
 namespace contactlab {
 namespace {
@@ -258,7 +258,9 @@ void SymmetryConstraints::reduce(Matrix* matrix, Vector* residual) const {
   const auto colMap = tangent.getColMap();
   // Columns first (K T), then rows (T^T K T): a dependent column's entries move to its
   // partners' columns in every row.
-  std::unordered_map<LO, const Dependent*> dependentColumn;
+  // By local column: a lookup per matrix entry (a hash lookup each cost 4.6 % of the hex27
+  // tube-expansion-3d run).
+  std::vector<const Dependent*> dependentColumn(tangent.getColMap()->getNodeNumElements(), nullptr);
   for (const Dependent& d : all_) {
     const LO col = colMap->getLocalElement(d.gid);
     if (col != Teuchos::OrdinalTraits<LO>::invalid()) dependentColumn[col] = &d;
@@ -271,11 +273,11 @@ void SymmetryConstraints::reduce(Matrix* matrix, Vector* residual) const {
     const LO *begin = entries + rowMap(row), *end = entries + rowMap(row + 1);
     double* rowValues = values + rowMap(row);
     for (const LO* e = begin; e != end; ++e) {
-      const auto it = dependentColumn.find(*e);
-      if (it == dependentColumn.end()) continue;
+      const Dependent* dependent = dependentColumn[*e];
+      if (!dependent) continue;
       const double v = rowValues[e - begin];
       if (v == 0) continue;
-      for (const Term& t : it->second->terms) {
+      for (const Term& t : dependent->terms) {
         if (t.prescribed) continue;
         const std::ptrdiff_t at = find(begin, end, colMap->getLocalElement(t.gid));
         if (at < 0) missing("a partner column of a symmetry node");

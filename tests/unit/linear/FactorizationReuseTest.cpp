@@ -105,6 +105,20 @@ TEST(MatrixSnapshot, DifferenceListsTheChangedEntriesAcrossPatterns) {
     EXPECT_NE(std::find(d.indices.begin(), d.indices.end(), 41), d.indices.end());
   }
   EXPECT_TRUE(snapshot.differenceFrom(*A0, kSize).entries.empty());
+  // The same pattern with other values (the positional comparison): every (r, r -+ 1) entry
+  // moves by -+ drift, under its global column.
+  const auto drifted = modelMatrix({}, Layout::scattered, 0.25);
+  const auto moved = snapshot.differenceFrom(*drifted, kSize);
+  size_t expected = 0;
+  for (LO r = 0; r < static_cast<LO>(A0->getNodeNumRows()); ++r) {
+    const int i = static_cast<int>(A0->getRowMap()->getGlobalElement(r) % kGrid);
+    expected += (i > 0 ? 1 : 0) + (i < kGrid - 1 ? 1 : 0);
+  }
+  EXPECT_EQ(moved.entries.size(), expected);
+  for (const auto& e : moved.entries) {
+    ASSERT_TRUE(e.col == e.row - 1 || e.col == e.row + 1) << e.row << ", " << e.col;
+    EXPECT_DOUBLE_EQ(e.value, e.col < e.row ? -0.25 : 0.25);
+  }
   // A matrix changed everywhere: the scan stops past the limit on every rank.
   const auto scaled = snapshot.differenceFrom(*modelMatrix({}, Layout::scattered, 0, false, 2), 10);
   EXPECT_TRUE(scaled.exceeded);
