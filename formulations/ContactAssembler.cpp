@@ -1,6 +1,9 @@
 #include "formulations/ContactAssembler.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include <algorithm>
+#include <unordered_map>
 
 namespace contactlab {
 
@@ -11,67 +14,133 @@ ContactAssembler::ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplace
 void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<ContactPoint>& points) {
   const auto kLocal = solidTangent.getLocalMatrixHost();
   const auto kCols = solidTangent.getColMap();
-  const std::size_t owned = map_->getNodeNumElements();
+  const LO owned = static_cast<LO>(map_->getNodeNumElements());
   const LO solidColumns = static_cast<LO>(kCols->getNodeNumElements());
-  std::vector<GO> solidGlobal(solidColumns);
-  for (LO c = 0; c < solidColumns; ++c)
-    solidGlobal[c] = kCols->getGlobalElement(c);
-  std::vector<std::vector<GO>> rows(owned);
-  for (LO r = 0; r < ownedDisplacements_; ++r)
-    for (auto j = kLocal.graph.row_map(r); j < kLocal.graph.row_map(r + 1); ++j)
-      rows[r].push_back(solidGlobal[kLocal.graph.entries(j)]);
-  std::vector<char> touched(owned, 0);  // rows that contact adds to (the others are unique)
-  for (ContactPoint& pt : points) {
-    pt.rows.assign(pt.dofs.size(), -1);
-    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
-      const LO row = map_->getLocalElement(pt.dofs[i]);
-      if (row == Teuchos::OrdinalTraits<LO>::invalid()) continue;
-      pt.rows[i] = row;
-      touched[row] = 1;
-      rows[row].insert(rows[row].end(), pt.dofs.begin(), pt.dofs.end());
-      rows[row].insert(rows[row].end(), pt.geometryDofs.begin(), pt.geometryDofs.end());
-    }
-  }
-  std::vector<size_t> lengths(owned);
-  for (std::size_t r = 0; r < owned; ++r) {
-    if (touched[r]) {
-      std::sort(rows[r].begin(), rows[r].end());
-      rows[r].erase(std::unique(rows[r].begin(), rows[r].end()), rows[r].end());
-    }
-    lengths[r] = rows[r].size();
-  }
-  auto graph = Teuchos::rcp(new Graph(map_, Teuchos::ArrayView<const size_t>(lengths)));
-  for (std::size_t r = 0; r < owned; ++r)
-    graph->insertGlobalIndices(map_->getGlobalElement(static_cast<LO>(r)),
-                               Teuchos::ArrayView<const GO>(rows[r]));
-  graph->fillComplete(map_, map_);
-  matrix_ = Teuchos::rcp(new Matrix(graph));
+  const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
+  layOutRows(points);
 
-  const auto local = matrix_->getLocalMatrixHost();
-  const auto cols = matrix_->getColMap();
-  // Where each solid entry sits in the new rows: the solid's local columns translated once,
-  // each new row's offsets scattered by column (a search per entry cost O(row length^2): 30 %
-  // of the graph's time on hex27, rows of ~375 entries).
-  std::vector<LO> newColumn(solidColumns);
+  // The column Map as Tpetra would make it, built here with the local rows (inserting global
+  // indices row by row cost 10 % of a generalized-Newton run on the hex27 tube, which builds a
+  // graph at most iterations): this rank's own ids in the monolithic Map's order, then the
+  // others grouped by owner, by id within an owner.
+  std::vector<GO> remote;
   for (LO c = 0; c < solidColumns; ++c)
-    newColumn[c] = cols->getLocalElement(solidGlobal[c]);
-  std::vector<std::size_t> offsetOf(cols->getNodeNumElements(), 0);
+    if (map_->getLocalElement(kCols->getGlobalElement(c)) == invalid)
+      remote.push_back(kCols->getGlobalElement(c));
+  for (const ContactPoint& pt : points)
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
+      if (pt.rows[i] < 0) continue;
+      for (const auto* ids : {&pt.dofs, &pt.geometryDofs})
+        for (const GO gid : *ids)
+          if (map_->getLocalElement(gid) == invalid) remote.push_back(gid);
+    }
+  std::sort(remote.begin(), remote.end());
+  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<int> owners(remote.size());
+  map_->getRemoteIndexList(Teuchos::ArrayView<const GO>(remote), Teuchos::ArrayView<int>(owners));
+  std::vector<std::pair<int, GO>> byOwner(remote.size());
+  for (std::size_t k = 0; k < remote.size(); ++k)
+    byOwner[k] = {owners[k], remote[k]};
+  std::sort(byOwner.begin(), byOwner.end());
+  std::vector<GO> columnIds(map_->getNodeElementList().begin(), map_->getNodeElementList().end());
+  std::unordered_map<GO, LO> remoteColumn;
+  for (const auto& [owner, gid] : byOwner) {
+    remoteColumn.emplace(gid, static_cast<LO>(columnIds.size()));
+    columnIds.push_back(gid);
+  }
+  const auto column = [&](GO gid) {
+    const LO lid = map_->getLocalElement(gid);
+    return lid != invalid ? lid : remoteColumn.at(gid);
+  };
+
+  // Each row's local columns, sorted: the solid's, then every point's on the rows it touches.
+  std::vector<LO> solidColumn(solidColumns);
+  for (LO c = 0; c < solidColumns; ++c)
+    solidColumn[c] = column(kCols->getGlobalElement(c));
+  std::vector<std::vector<LO>> added(owned);
+  for (const ContactPoint& pt : points)
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
+      if (pt.rows[i] < 0) continue;
+      auto& row = added[pt.rows[i]];
+      for (const auto* ids : {&pt.dofs, &pt.geometryDofs})
+        for (const GO gid : *ids)
+          row.push_back(column(gid));
+    }
+  Teuchos::ArrayRCP<size_t> rowStart(owned + 1, 0);
+  std::vector<LO> entries;
+  entries.reserve(kLocal.graph.entries.extent(0));
+  for (LO r = 0; r < owned; ++r) {
+    const std::size_t first = entries.size();
+    if (r < ownedDisplacements_)
+      for (auto j = kLocal.graph.row_map(r); j < kLocal.graph.row_map(r + 1); ++j)
+        entries.push_back(solidColumn[kLocal.graph.entries(j)]);
+    entries.insert(entries.end(), added[r].begin(), added[r].end());
+    const auto begin = entries.begin() + static_cast<std::ptrdiff_t>(first);
+    if (!std::is_sorted(begin, entries.end())) std::sort(begin, entries.end());
+    if (!added[r].empty()) entries.erase(std::unique(begin, entries.end()), entries.end());
+    rowStart[r + 1] = entries.size();
+  }
+
+  // The same graph as the matrix's (a re-pairing that kept every coupling): keep the matrix,
+  // and the direct solver its analysis. Decided together: the matrix is one object.
+  int same = 0;
+  if (!matrix_.is_null()) {
+    const auto local = matrix_->getLocalMatrixHost();
+    const auto ids = matrix_->getColMap()->getNodeElementList();
+    same = local.graph.entries.extent(0) == entries.size() &&
+           std::equal(ids.begin(), ids.end(), columnIds.begin(), columnIds.end()) &&
+           std::equal(rowStart.begin(), rowStart.end(), local.graph.row_map.data()) &&
+           std::equal(entries.begin(), entries.end(), local.graph.entries.data());
+  }
+  int allSame = 0;
+  Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(allSame));
+  if (!allSame) {
+    auto columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                          Teuchos::ArrayView<const GO>(columnIds),
+                                          map_->getIndexBase(), map_->getComm()));
+    Teuchos::ArrayRCP<LO> columns(entries.size());
+    std::copy(entries.begin(), entries.end(), columns.begin());
+    auto graph = Teuchos::rcp(new Graph(map_, columnMap, rowStart, columns));
+    graph->expertStaticFillComplete(map_, map_);
+    matrix_ = Teuchos::rcp(new Matrix(graph));
+    patternChanged_ = true;
+  }
+
+  // Where each solid entry sits in the new rows, by a scatter of each row's offsets by column
+  // (a search per entry cost O(row length^2)).
+  const auto local = matrix_->getLocalMatrixHost();
+  std::vector<std::size_t> offsetOf(columnIds.size(), 0);
   solidOffsets_.assign(kLocal.graph.entries.extent(0), 0);
   for (LO r = 0; r < ownedDisplacements_; ++r) {
     for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
       offsetOf[local.graph.entries(k)] = static_cast<std::size_t>(k);
     for (auto j = kLocal.graph.row_map(r); j < kLocal.graph.row_map(r + 1); ++j)
-      solidOffsets_[j] = offsetOf[newColumn[kLocal.graph.entries(j)]];
+      solidOffsets_[j] = offsetOf[solidColumn[kLocal.graph.entries(j)]];
   }
+  // A point with no row here has no column here either (-1, never used).
+  const auto columnIfAny = [&](GO gid) {
+    const LO lid = map_->getLocalElement(gid);
+    if (lid != invalid) return lid;
+    const auto it = remoteColumn.find(gid);
+    return it == remoteColumn.end() ? LO(-1) : it->second;
+  };
   for (ContactPoint& pt : points) {
-    pt.cols.assign(pt.dofs.size(), -1);
-    for (std::size_t i = 0; i < pt.dofs.size(); ++i)
-      pt.cols[i] = cols->getLocalElement(pt.dofs[i]);
-    pt.geometryCols.assign(pt.geometryDofs.size(), -1);
-    for (std::size_t i = 0; i < pt.geometryDofs.size(); ++i)
-      pt.geometryCols[i] = cols->getLocalElement(pt.geometryDofs[i]);
+    pt.cols.resize(pt.dofs.size());
+    std::transform(pt.dofs.begin(), pt.dofs.end(), pt.cols.begin(), columnIfAny);
+    pt.geometryCols.resize(pt.geometryDofs.size());
+    std::transform(pt.geometryDofs.begin(), pt.geometryDofs.end(), pt.geometryCols.begin(),
+                   columnIfAny);
   }
-  patternChanged_ = true;
+}
+
+void ContactAssembler::layOutRows(std::vector<ContactPoint>& points) const {
+  for (ContactPoint& pt : points) {
+    pt.rows.assign(pt.dofs.size(), -1);
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
+      const LO row = map_->getLocalElement(pt.dofs[i]);
+      if (row != Teuchos::OrdinalTraits<LO>::invalid()) pt.rows[i] = row;
+    }
+  }
 }
 
 bool ContactAssembler::takePatternChanged() {

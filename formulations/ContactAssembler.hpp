@@ -18,8 +18,11 @@ class ContactAssembler {
   ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplacements,
                    const ContactSurfaceState& state);
 
+  // Each point's local rows (what a residual needs), after a new pairing.
+  void layOutRows(std::vector<ContactPoint>& points) const;
   // The graph of the solid's tangent plus every point's dofs x (dofs, geometryDofs); sets each
-  // point's rows and column indices.
+  // point's rows and column indices. Only a tangent needs it: a residual-only evaluation at a
+  // new pairing (a line search's trial point under generalized Newton) does without.
   void buildGraph(const Matrix& solidTangent, std::vector<ContactPoint>& points);
   const Teuchos::RCP<Matrix>& matrix() const { return matrix_; }
   // Whether the graph changed since the last call.

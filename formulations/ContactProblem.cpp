@@ -377,6 +377,11 @@ bool ContactProblem::takePatternChanged() {
 
 void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool withTangent) {
   if (assembler_->matrix().is_null()) updateGeometry(x, t);
+  if (withTangent && graphStale_) {
+    PhaseTimer timer(&seconds_.pairing);  // the pairing's graph, built when a tangent needs it
+    assembler_->buildGraph(*solid_.tangent(), points_);
+    graphStale_ = false;
+  }
   if (!geometryFailure_.empty()) {
     // The NaN stops every Newton variant; assemblyFailure() says why.
     if (residual) residual->putScalar(std::numeric_limits<double>::quiet_NaN());

@@ -163,6 +163,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   ContactPhaseSeconds seconds_;
   int statusChanges_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
+  bool graphStale_ = false;  // re-paired since the graph was built: rebuild it for a tangent
   GeometricTerms geometricTerms_ = GeometricTerms::none;
 };
 

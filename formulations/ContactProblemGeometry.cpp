@@ -95,9 +95,15 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
         "and normal");
   frozenOnce_ = true;
   layOutPointDofs();
-  // Only a new pairing changes the couplings (and the direct solver's symbolic analysis).
-  if (repaired || assembler_->matrix().is_null() || layoutChanged_)
+  // Only a new pairing changes the couplings (and the direct solver's symbolic analysis); the
+  // graph waits for the next tangent (a line search's trial points need residuals only).
+  if (assembler_->matrix().is_null()) {
     assembler_->buildGraph(*solid_.tangent(), points_);
+    graphStale_ = false;
+  } else if (repaired || layoutChanged_) {
+    assembler_->layOutRows(points_);
+    graphStale_ = true;
+  }
   layoutChanged_ = false;
   return moved;
 }

@@ -294,6 +294,37 @@ TEST(ContactAssembler, InsertsThePointTermsOnFreeRowsAndColumnsOnly) {
       EXPECT_DOUBLE_EQ(values(j), 0.5);
     }
   EXPECT_TRUE(found);
+  // The graph again from the same pairing: the same matrix (and the solver keeps its
+  // analysis); from another (the last point dropped), a new one whose couplings say so.
+  const Matrix* before = assembler.matrix().get();
+  assembler.buildGraph(*s.solid->tangent(), points);
+  EXPECT_EQ(assembler.matrix().get(), before);
+  EXPECT_FALSE(assembler.takePatternChanged());
+  const std::size_t entries = before->getGlobalNumEntries();
+  points.pop_back();
+  assembler.buildGraph(*s.solid->tangent(), points);
+  EXPECT_NE(assembler.matrix().get(), before);
+  EXPECT_TRUE(assembler.takePatternChanged());
+  EXPECT_LT(assembler.matrix()->getGlobalNumEntries(), entries);
+  // Every solid entry has its place: the solid's tangent alone, assembled, is the solid's.
+  assembler.begin(nullptr, nullptr, s.solid->tangent().get());
+  assembler.end();
+  const Matrix& K = *s.solid->tangent();
+  const Matrix& B = *assembler.matrix();
+  for (LO r = 0; r < static_cast<LO>(K.getNodeNumRows()); ++r) {
+    typename Matrix::local_inds_host_view_type kCols, bCols;
+    typename Matrix::values_host_view_type kValues, bValues;
+    K.getLocalRowView(r, kCols, kValues);
+    B.getLocalRowView(r, bCols, bValues);
+    double kSum = 0, bSum = 0;
+    for (std::size_t j = 0; j < kValues.extent(0); ++j)
+      kSum +=
+          std::abs(kValues(j)) * static_cast<double>(K.getColMap()->getGlobalElement(kCols(j)) + 1);
+    for (std::size_t j = 0; j < bValues.extent(0); ++j)
+      bSum +=
+          std::abs(bValues(j)) * static_cast<double>(B.getColMap()->getGlobalElement(bCols(j)) + 1);
+    EXPECT_DOUBLE_EQ(bSum, kSum) << "row " << r;
+  }
 }
 
 }  // namespace
