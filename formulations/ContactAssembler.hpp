@@ -1,9 +1,10 @@
 #pragma once
 // The assembly stage of the contact pipeline: the monolithic tangent's graph (the solid's plus
-// each contact point's couplings, rebuilt only when a pairing changes, since the direct solver
-// redoes its symbolic analysis then), and the insertion of the solid's residual and tangent and
-// of each point's element terms on the rows this rank owns. Dirichlet-constrained rows get no
-// contact terms and constrained columns are zeroed (the solid's rows there are identity rows).
+// each contact point's couplings, rebuilt after a new pairing only, and kept when it comes out
+// the same, since the direct solver redoes its symbolic analysis on a new one), and the
+// insertion of the solid's residual and tangent and of each point's element terms on the rows
+// this rank owns. Dirichlet-constrained rows get no contact terms and constrained columns are
+// zeroed (the solid's rows there are identity rows).
 #include "base/LinearAlgebra.hpp"
 #include "formulations/ContactPoint.hpp"
 #include "formulations/ContactSurfaceState.hpp"
