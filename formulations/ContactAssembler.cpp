@@ -7,6 +7,46 @@
 
 namespace contactlab {
 
+namespace {
+
+// The column Map as Tpetra would make it: this rank's own ids in the monolithic Map's order,
+// then the others grouped by owner, by id within an owner. Built here with the local rows
+// (inserting global indices row by row cost 10 % of a generalized-Newton run on the hex27 tube,
+// which builds a graph at most iterations). Collective (the owners are looked up).
+class ColumnLayout {
+ public:
+  ColumnLayout(const Map& map, std::vector<GO> remote) : map_(map) {
+    std::sort(remote.begin(), remote.end());
+    remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+    std::vector<int> owners(remote.size());
+    map.getRemoteIndexList(Teuchos::ArrayView<const GO>(remote), Teuchos::ArrayView<int>(owners));
+    std::vector<std::pair<int, GO>> byOwner(remote.size());
+    for (std::size_t k = 0; k < remote.size(); ++k)
+      byOwner[k] = {owners[k], remote[k]};
+    std::sort(byOwner.begin(), byOwner.end());
+    ids_.assign(map.getNodeElementList().begin(), map.getNodeElementList().end());
+    for (const auto& [owner, gid] : byOwner) {
+      remote_.emplace(gid, static_cast<LO>(ids_.size()));
+      ids_.push_back(gid);
+    }
+  }
+  const std::vector<GO>& ids() const { return ids_; }
+  // The local column of gid; -1 when it is not a column here.
+  LO operator()(GO gid) const {
+    const LO lid = map_.getLocalElement(gid);
+    if (lid != Teuchos::OrdinalTraits<LO>::invalid()) return lid;
+    const auto it = remote_.find(gid);
+    return it == remote_.end() ? LO(-1) : it->second;
+  }
+
+ private:
+  const Map& map_;
+  std::vector<GO> ids_;
+  std::unordered_map<GO, LO> remote_;
+};
+
+}  // namespace
+
 ContactAssembler::ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplacements,
                                    const ContactSurfaceState& state)
     : map_(std::move(map)), ownedDisplacements_(ownedDisplacements), state_(state) {}
@@ -19,11 +59,7 @@ void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<Contac
   const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
   layOutRows(points);
 
-  // The column Map as Tpetra would make it, built here with the local rows (inserting global
-  // indices row by row cost 10 % of a generalized-Newton run on the hex27 tube, which builds a
-  // graph at most iterations): this rank's own ids in the monolithic Map's order, then the
-  // others grouped by owner, by id within an owner.
-  std::vector<GO> remote;
+  std::vector<GO> remote;  // the columns this rank does not own
   for (LO c = 0; c < solidColumns; ++c)
     if (map_->getLocalElement(kCols->getGlobalElement(c)) == invalid)
       remote.push_back(kCols->getGlobalElement(c));
@@ -34,24 +70,8 @@ void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<Contac
         for (const GO gid : *ids)
           if (map_->getLocalElement(gid) == invalid) remote.push_back(gid);
     }
-  std::sort(remote.begin(), remote.end());
-  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
-  std::vector<int> owners(remote.size());
-  map_->getRemoteIndexList(Teuchos::ArrayView<const GO>(remote), Teuchos::ArrayView<int>(owners));
-  std::vector<std::pair<int, GO>> byOwner(remote.size());
-  for (std::size_t k = 0; k < remote.size(); ++k)
-    byOwner[k] = {owners[k], remote[k]};
-  std::sort(byOwner.begin(), byOwner.end());
-  std::vector<GO> columnIds(map_->getNodeElementList().begin(), map_->getNodeElementList().end());
-  std::unordered_map<GO, LO> remoteColumn;
-  for (const auto& [owner, gid] : byOwner) {
-    remoteColumn.emplace(gid, static_cast<LO>(columnIds.size()));
-    columnIds.push_back(gid);
-  }
-  const auto column = [&](GO gid) {
-    const LO lid = map_->getLocalElement(gid);
-    return lid != invalid ? lid : remoteColumn.at(gid);
-  };
+  const ColumnLayout column(*map_, std::move(remote));
+  const std::vector<GO>& columnIds = column.ids();
 
   // Each row's local columns, sorted: the solid's, then every point's on the rows it touches.
   std::vector<LO> solidColumn(solidColumns);
@@ -118,18 +138,13 @@ void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<Contac
       solidOffsets_[j] = offsetOf[solidColumn[kLocal.graph.entries(j)]];
   }
   // A point with no row here has no column here either (-1, never used).
-  const auto columnIfAny = [&](GO gid) {
-    const LO lid = map_->getLocalElement(gid);
-    if (lid != invalid) return lid;
-    const auto it = remoteColumn.find(gid);
-    return it == remoteColumn.end() ? LO(-1) : it->second;
-  };
+  const auto columnOf = [&column](GO gid) { return column(gid); };  // no copy of the layout
   for (ContactPoint& pt : points) {
     pt.cols.resize(pt.dofs.size());
-    std::transform(pt.dofs.begin(), pt.dofs.end(), pt.cols.begin(), columnIfAny);
+    std::transform(pt.dofs.begin(), pt.dofs.end(), pt.cols.begin(), columnOf);
     pt.geometryCols.resize(pt.geometryDofs.size());
     std::transform(pt.geometryDofs.begin(), pt.geometryDofs.end(), pt.geometryCols.begin(),
-                   columnIfAny);
+                   columnOf);
   }
 }
 
