@@ -12,7 +12,7 @@ import datetime, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import runs
 
-exe, scenes, work = sys.argv[1:4]
+exe, scenes, work = runs.positional(__doc__, 3)
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
 quick = "--quick" in sys.argv
 

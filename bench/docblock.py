@@ -5,6 +5,8 @@ Markdown file by "Measured DATE by `SOURCE`:" and a table.
 usage: docblock.py DOC NAME SOURCE TABLE_FILE      (or import docblock.write)"""
 import datetime, re, sys
 
+import runs
+
 
 def write(doc, name, source, table):
     start, end = f"<!-- bench:{name}:start -->", f"<!-- bench:{name}:end -->"
@@ -17,5 +19,5 @@ def write(doc, name, source, table):
 
 
 if __name__ == "__main__":
-    doc, name, source, table = sys.argv[1:5]
+    doc, name, source, table = runs.positional(__doc__, 4)
     write(doc, name, source, open(table).read())

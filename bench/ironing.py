@@ -11,7 +11,7 @@ import csv, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import docblock, runs
 
-exe, scenes, work = sys.argv[1:4]
+exe, scenes, work = runs.positional(__doc__, 3)
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
 PRESS_END = 0.3  # the scene's press Stop Time
 

@@ -13,7 +13,7 @@ import csv, json, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import docblock, runs
 
-exe, scenes, work = sys.argv[1:4]
+exe, scenes, work = runs.positional(__doc__, 3)
 doc = sys.argv[sys.argv.index("--doc") + 1] if "--doc" in sys.argv else None
 NF = "normal-field-augmented-lagrangian"
 # scene, zone, the scene's own coefficients, extra --set arguments, what it shows

@@ -3,7 +3,19 @@
 wrote the same clear-run-time-read sequence).
 
 usage: import runs; summary, wall, done = runs.run(exe, "run", scene_yaml, out, sets)"""
-import json, os, shutil, subprocess, time
+import json, os, shutil, subprocess, sys, time
+
+
+def positional(doc, count):
+    """The first `count` command-line arguments; the script's doc (its usage) and exit status 0
+    on -h/--help, status 2 when fewer are given (instead of a traceback)."""
+    if "-h" in sys.argv[1:] or "--help" in sys.argv[1:]:
+        print(doc)
+        sys.exit(0)
+    if len(sys.argv) <= count:
+        print(doc, file=sys.stderr)
+        sys.exit(2)
+    return sys.argv[1:count + 1]
 
 
 def run(exe, command, scene, out, sets=(), quiet=False, timeout=3600, ranks=1, prefix=()):

@@ -48,7 +48,7 @@ def main():
     parser.add_argument("--element", default="hex27")
     parser.add_argument("--discretization", default="mortar")
     parser.add_argument("--steps", type=int, default=32,
-                        help="load steps (the scene's 8 leave the residual 11 % from converged)")
+                        help="load steps (the scene's 8 leave the residual 11 %% from converged)")
     parser.add_argument("--size", choices=["default", "seed"], default="default")
     parser.add_argument("--mu", type=float, nargs="+", default=[0.0, 0.1, 0.3])
     parser.add_argument("--methods", nargs="+", default=[m for m, _ in METHODS],
