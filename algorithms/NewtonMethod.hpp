@@ -55,8 +55,13 @@ struct NewtonOutcome {
 class NewtonMethod {
  public:
   // Called at every iterate once its residual is known (iteration 0: the starting point).
-  // This is where cycling is detected and treated; it may change the system's frozen state.
-  using Observer = std::function<void(int iteration, double residual)>;
+  // This is where cycling is detected and treated; it may change the system's frozen state,
+  // and returns true when it did (a status forced, coefficients scaled). The residual and
+  // tangent at the iterate are then those of the law before the change: the method evaluates
+  // them again, so that its step solves the law the next iterate is judged by (a step taken
+  // with the untreated law lands the hex8 frictional tube's forced points 1000 x off
+  // equilibrium, doc/algorithms.md "Cycling").
+  using Observer = std::function<bool(int iteration, double residual)>;
   virtual ~NewtonMethod() = default;
   // x: the start, on return the last iterate. Never throws on a numerical failure.
   virtual NewtonOutcome solve(Vector& x, const NewtonRequest& request,

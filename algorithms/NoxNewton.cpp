@@ -174,7 +174,15 @@ class IterateObserver : public NOX::Observer {
  public:
   explicit IterateObserver(const NewtonMethod::Observer& observer) : observer_(observer) {}
   void runPostIterate(const NOX::Solver::Generic& solver) override {
-    if (observer_) observer_(solver.getNumIterations(), solver.getSolutionGroup().getNormF());
+    if (!observer_ || !observer_(solver.getNumIterations(), solver.getSolutionGroup().getNormF()))
+      return;
+    // The observer changed the law at the iterate (a cycling treatment): its residual, which
+    // the status tests and the next line search read, and its Jacobian are evaluated again.
+    // NOX hands observers a const solver; the group is the solver's own working state.
+    auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
+    const Teuchos::RCP<NOX::Abstract::Vector> x = group.getX().clone();
+    group.setX(*x);
+    group.computeF();
   }
 
  private:

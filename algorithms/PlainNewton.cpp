@@ -58,7 +58,13 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       if (request.geometryInNewton && it > 0) system_.updateGeometry(x, request.time);
       system_.assemble(x, request.time, residual.get(), true);
     }
-    const double norm = residual->norm2();
+    double norm = residual->norm2();
+    if (std::isfinite(norm) && observer && observer(it, norm)) {
+      // The observer changed the law at x (a cycling treatment): the step solves the new one.
+      PhaseTimer timer(&out.assemblySeconds);
+      system_.assemble(x, request.time, residual.get(), true);
+      norm = residual->norm2();
+    }
     out.residual = norm;
     if (it == 0) start = norm;
     norms.push_back(norm);
@@ -68,7 +74,6 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.message = "the residual is not finite at iteration " + std::to_string(it);
       return out;
     }
-    if (observer) observer(it, norm);
     if (newtonConverged(norm, request, controls_, it)) return out;
     if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
       out.failure = "diverged";

@@ -290,7 +290,8 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
                                                            : GeometricTerms::none);
 }
 
-void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
+bool StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
+  bool changed = false;
   for (const CyclingEvent& e : events) {
     ++sr.cycling[static_cast<int>(e.kind)];
     controls_->markCycling(e.point, static_cast<int>(e.kind));
@@ -317,10 +318,12 @@ void StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
                                                                : kForcedClosed;
       controls_->forceStatus(e.point, status);
       detector_.forget(e.point);
+      changed = true;
     } else {
-      controls_->scaleCoefficients(e.point, 10.0);
+      changed = controls_->scaleCoefficients(e.point, 10.0) || changed;
     }
   }
+  return changed;
 }
 
 bool StaticSolver::forcedStateHolds(const Vector& x, double t, double target, Vector& residual) {
@@ -488,7 +491,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     if (const int signal = interruptionAgreed(mpiComm_)) throw Interrupted{signal};
     sr.residual = norm;
     if (onIteration) onIteration(sr.step, t, solves + iteration, norm);
-    if (controls_) treatCycling(detector_.observe(controls_->pointStates()), sr);
+    return controls_ && treatCycling(detector_.observe(controls_->pointStates()), sr);
   };
   NewtonRequest request;
   request.time = t;

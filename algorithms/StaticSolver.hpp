@@ -182,7 +182,8 @@ class StaticSolver {
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);
-  void treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
+  // Returns whether a treatment changed the law (a status forced, coefficients scaled).
+  bool treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
   bool forcedStateHolds(const Vector& x, double t, double target, Vector& residual);
