@@ -8,6 +8,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace contactlab {
 namespace {
@@ -73,7 +74,7 @@ class ScriptedNewton : public NewtonMethod {
     if (solves++ == 0)
       for (int zone : {1, 3, 1, 3}) {
         system_.zone = zone;
-        observer(++out.iterations, 1.0);
+        lawChanged.push_back(observer(++out.iterations, 1.0));
       }
     if (naturalFails_ && !system_.forced()) {
       out.failure = "max-iterations";
@@ -81,9 +82,10 @@ class ScriptedNewton : public NewtonMethod {
       return out;
     }
     x.getDataNonConst(0)[0] = system_.root();
-    observer(++out.iterations, 0.0);
+    lawChanged.push_back(observer(++out.iterations, 0.0));
     return out;
   }
+  std::vector<bool> lawChanged;  // what the observer returned at each iterate
 
  private:
   OnePointSystem& system_;
@@ -106,6 +108,16 @@ TEST(StaticSolverForcedTreatment, AStateThatTheModelsLawAcceptsConverges) {
   EXPECT_TRUE(report.converged) << report.failure << ": " << report.message;
   EXPECT_EQ(newton.solves, 1);
   EXPECT_EQ(report.cycling[static_cast<int>(CyclingKind::SubCycling1)], 1);
+}
+
+// The observer says when its treatment changed the law (Newton then evaluates the iterate
+// again): at the fourth iterate, where the cycle is detected and the point forced, only.
+TEST(StaticSolverForcedTreatment, TheObserverSaysWhenTheTreatmentChangedTheLaw) {
+  OnePointSystem system(/*natural=*/1.0);
+  ScriptedNewton newton(system, /*naturalFails=*/true);
+  auto u = system.createVector();
+  ASSERT_TRUE(runForced(system, newton, *u).converged);
+  EXPECT_EQ(newton.lawChanged, (std::vector<bool>{false, false, false, true, false}));
 }
 
 TEST(StaticSolverForcedTreatment, AViolatingStateIsSolvedAgainWithTheLawRestored) {
