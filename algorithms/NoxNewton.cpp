@@ -176,9 +176,10 @@ class IterateObserver : public NOX::Observer {
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     if (!observer_ || !observer_(solver.getNumIterations(), solver.getSolutionGroup().getNormF()))
       return;
-    // The observer changed the law at the iterate (a cycling treatment): its residual, which
-    // the status tests and the next line search read, and its Jacobian are evaluated again.
-    // NOX hands observers a const solver; the group is the solver's own working state.
+    // The observer changed the law at the iterate (a cycling treatment). NOX observes after
+    // its status tests, so the treatment acts from the next iteration, whose direction and
+    // line search read this residual: it is evaluated again (the Jacobian is invalidated with
+    // it). NOX hands observers a const solver; the group is the solver's own working state.
     auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
     const Teuchos::RCP<NOX::Abstract::Vector> x = group.getX().clone();
     group.setX(*x);
