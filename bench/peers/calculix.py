@@ -199,4 +199,6 @@ def check_tet10_order(work):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
+        sys.exit(__doc__)  # a folder named --help would be made and run in
     print("tet10 volume %.15g, patch-test stress error %.3g" % check_tet10_order(sys.argv[1]))
