@@ -199,6 +199,8 @@ def check_tet10_order(work):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
-        sys.exit(__doc__)  # a folder named --help would be made and run in
-    print("tet10 volume %.15g, patch-test stress error %.3g" % check_tet10_order(sys.argv[1]))
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import runs  # bench/: the scripts' shared usage check (a folder named --help was run in)
+
+    (work,) = runs.positional(__doc__, 1)
+    print("tet10 volume %.15g, patch-test stress error %.3g" % check_tet10_order(work))
