@@ -54,14 +54,21 @@ struct NewtonOutcome {
 
 class NewtonMethod {
  public:
-  // Called at every iterate once its residual is known (iteration 0: the starting point).
-  // This is where cycling is detected and treated; it may change the system's frozen state,
-  // and returns true when it did (a status forced, coefficients scaled). The residual and
-  // tangent at the iterate are then those of the law before the change: the method evaluates
-  // them again, so that its step solves the law the next iterate is judged by (a step taken
-  // with the untreated law lands the hex8 frictional tube's forced points 1000 x off
-  // equilibrium, doc/algorithms.md "Cycling").
-  using Observer = std::function<bool(int iteration, double residual)>;
+  // What a method tells its driver at every iterate whose residual and tangent are assembled
+  // (iteration 0: the starting point).
+  struct Observer {
+    // Cycling detection and treatment. It may change the system's frozen state (a status
+    // forced, coefficients scaled) and returns true when it did. The residual and tangent at
+    // the iterate are then those of the law before the change: the method evaluates them
+    // again, so that its step solves the law the next iterate is judged by (a step taken with
+    // the untreated law lands the hex8 frictional tube's forced points 1000 x off equilibrium,
+    // doc/algorithms.md "Cycling").
+    std::function<bool(int iteration)> treat;
+    // The iterate's residual norm as the method goes on with it (after the evaluation a
+    // treatment asked for): progress lines, the run's residual, a stop on a signal. Not called
+    // for a residual that is not finite.
+    std::function<void(int iteration, double residual)> report;
+  };
   virtual ~NewtonMethod() = default;
   // x: the start, on return the last iterate. Never throws on a numerical failure.
   virtual NewtonOutcome solve(Vector& x, const NewtonRequest& request,

@@ -174,16 +174,19 @@ class IterateObserver : public NOX::Observer {
  public:
   explicit IterateObserver(const NewtonMethod::Observer& observer) : observer_(observer) {}
   void runPostIterate(const NOX::Solver::Generic& solver) override {
-    if (!observer_ || !observer_(solver.getNumIterations(), solver.getSolutionGroup().getNormF()))
-      return;
-    // The observer changed the law at the iterate (a cycling treatment). NOX observes after
-    // its status tests, so the treatment acts from the next iteration, whose direction and
-    // line search read this residual: it is evaluated again (the Jacobian is invalidated with
-    // it). NOX hands observers a const solver; the group is the solver's own working state.
-    auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
-    const Teuchos::RCP<NOX::Abstract::Vector> x = group.getX().clone();
-    group.setX(*x);
-    group.computeF();
+    const int iteration = solver.getNumIterations();
+    if (observer_.treat && observer_.treat(iteration)) {
+      // The observer changed the law at the iterate (a cycling treatment). NOX observes after
+      // its status tests, so the treatment acts from the next iteration, whose direction and
+      // line search read this residual: it is evaluated again (the Jacobian is invalidated
+      // with it). NOX hands observers a const solver; the group is its own working state.
+      auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
+      const Teuchos::RCP<NOX::Abstract::Vector> x = group.getX().clone();
+      group.setX(*x);
+      group.computeF();
+    }
+    const double norm = solver.getSolutionGroup().getNormF();
+    if (observer_.report && std::isfinite(norm)) observer_.report(iteration, norm);
   }
 
  private:

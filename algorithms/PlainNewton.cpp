@@ -59,12 +59,13 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       system_.assemble(x, request.time, residual.get(), true);
     }
     double norm = residual->norm2();
-    if (std::isfinite(norm) && observer && observer(it, norm)) {
+    if (std::isfinite(norm) && observer.treat && observer.treat(it)) {
       // The observer changed the law at x (a cycling treatment): the step solves the new one.
       PhaseTimer timer(&out.assemblySeconds);
       system_.assemble(x, request.time, residual.get(), true);
       norm = residual->norm2();
     }
+    if (std::isfinite(norm) && observer.report) observer.report(it, norm);
     out.residual = norm;
     if (it == 0) start = norm;
     norms.push_back(norm);

@@ -487,11 +487,14 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   int solves = prediction.done || solidAlone ? 1 : 0;
   if (prediction.done && onIteration) onIteration(sr.step, t, 0, prediction.residual);
   if (solidAlone && onIteration) onIteration(sr.step, t, 0, reference);
-  const NewtonMethod::Observer observer = [&](int iteration, double norm) {
+  NewtonMethod::Observer observer;
+  observer.treat = [&](int) {
+    return controls_ && treatCycling(detector_.observe(controls_->pointStates()), sr);
+  };
+  observer.report = [&](int iteration, double norm) {
     if (const int signal = interruptionAgreed(mpiComm_)) throw Interrupted{signal};
     sr.residual = norm;
     if (onIteration) onIteration(sr.step, t, solves + iteration, norm);
-    return controls_ && treatCycling(detector_.observe(controls_->pointStates()), sr);
   };
   NewtonRequest request;
   request.time = t;

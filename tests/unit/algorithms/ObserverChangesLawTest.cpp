@@ -11,8 +11,11 @@
 #include "algorithms/PlainNewton.hpp"
 #include "linear/Klu2Solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <utility>
+#include <vector>
 
 namespace contactlab {
 namespace {
@@ -36,11 +39,13 @@ TEST(ObserverChangesLaw, PlainNewtonStepsWithTheChangedLaw) {
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(law.system, solver, nullptr);
   auto x = law.system.createVector();
-  const NewtonOutcome out = newton.solve(*x, request(), [&](int iteration, double) {
-    if (iteration != 0) return false;
-    law.root = 3.0;
-    return true;
-  });
+  const NewtonOutcome out = newton.solve(*x, request(),
+                                         {[&](int iteration) {
+                                            if (iteration != 0) return false;
+                                            law.root = 3.0;
+                                            return true;
+                                          },
+                                          {}});
   ASSERT_TRUE(out.failure.empty()) << out.message;
   EXPECT_DOUBLE_EQ(x->getData(0)[0], 3.0);
   // One step from the changed law's residual; with the old one's, a step to 1 and one more.
@@ -58,7 +63,7 @@ TEST(ObserverChangesLaw, AnObserverThatChangesNothingCostsNoEvaluation) {
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(counted, solver, nullptr);
   auto x = counted.createVector();
-  const NewtonOutcome out = newton.solve(*x, request(), [](int, double) { return false; });
+  const NewtonOutcome out = newton.solve(*x, request(), {[](int) { return false; }, {}});
   ASSERT_TRUE(out.failure.empty()) << out.message;
   EXPECT_EQ(out.iterations, 1);
   EXPECT_EQ(evaluations, 2);  // the start and the solution
@@ -72,11 +77,13 @@ TEST(ObserverChangesLaw, AnObserverThatChangesNothingCostsNoEvaluation) {
 TEST(ObserverChangesLaw, NoxStepsWithTheChangedLaw) {
   const auto solveWith = [](NewtonMethod& newton, test::ScalarSystem& system, double& root) {
     auto x = system.createVector();
-    const NewtonOutcome out = newton.solve(*x, request(), [&](int iteration, double) {
-      if (iteration != 1) return false;
-      root = 3.0;
-      return true;
-    });
+    const NewtonOutcome out = newton.solve(*x, request(),
+                                           {[&](int iteration) {
+                                              if (iteration != 1) return false;
+                                              root = 3.0;
+                                              return true;
+                                            },
+                                            {}});
     EXPECT_TRUE(out.failure.empty()) << out.message;
     EXPECT_NEAR(x->getData(0)[0], 3.0, 1e-12);
     return out.iterations;
@@ -90,6 +97,38 @@ TEST(ObserverChangesLaw, NoxStepsWithTheChangedLaw) {
   root = 1.0;
   NoxNewton nox(cubic, solver, nullptr, "Full Step");
   EXPECT_EQ(solveWith(nox, cubic, root), plainIterations);
+}
+
+// The residual reported at a treated iterate (progress lines, the step's residual) is the one
+// the method goes on with: the changed law's. Before, the progress line of a treated iterate
+// showed the residual of the law before the treatment. The cubic law above at x = 0.5: |R| =
+// 0.625 with the root at 1, 18.125 with the root moved to 3.
+TEST(ObserverChangesLaw, TheReportedResidualIsTheChangedLaws) {
+  double root = 1.0;
+  test::ScalarSystem cubic([&](double x, double) { return std::pow(x - root, 3) + (x - root); },
+                           [&](double x, double) { return 3 * std::pow(x - root, 2) + 1; }, 1.0);
+  Klu2Solver solver({}, Tpetra::getDefaultComm());
+  PlainNewton plain(cubic, solver, nullptr);
+  NoxNewton nox(cubic, solver, nullptr, "Full Step");
+  for (NewtonMethod* newton :
+       {static_cast<NewtonMethod*>(&plain), static_cast<NewtonMethod*>(&nox)}) {
+    root = 1.0;
+    std::vector<std::pair<int, double>> reported;
+    auto x = cubic.createVector();
+    const NewtonOutcome out = newton->solve(
+        *x, request(),
+        {[&](int iteration) {
+           if (iteration != 1) return false;
+           root = 3.0;
+           return true;
+         },
+         [&](int iteration, double residual) { reported.emplace_back(iteration, residual); }});
+    ASSERT_TRUE(out.failure.empty()) << out.message;
+    const auto first =
+        std::find_if(reported.begin(), reported.end(), [](const auto& r) { return r.first == 1; });
+    ASSERT_NE(first, reported.end());
+    EXPECT_NEAR(first->second, 18.125, 1e-12);
+  }
 }
 
 }  // namespace

@@ -74,7 +74,8 @@ class ScriptedNewton : public NewtonMethod {
     if (solves++ == 0)
       for (int zone : {1, 3, 1, 3}) {
         system_.zone = zone;
-        lawChanged.push_back(observer(++out.iterations, 1.0));
+        lawChanged.push_back(observer.treat(++out.iterations));
+        observer.report(out.iterations, 1.0);
       }
     if (naturalFails_ && !system_.forced()) {
       out.failure = "max-iterations";
@@ -82,7 +83,8 @@ class ScriptedNewton : public NewtonMethod {
       return out;
     }
     x.getDataNonConst(0)[0] = system_.root();
-    lawChanged.push_back(observer(++out.iterations, 0.0));
+    lawChanged.push_back(observer.treat(++out.iterations));
+    observer.report(out.iterations, 0.0);
     return out;
   }
   std::vector<bool> lawChanged;  // what the observer returned at each iterate
