@@ -88,7 +88,9 @@ class LinearSolver {
   // 'symmetric' reads only the lower triangle (Mode: general does not)"): a system whose
   // tangent is not symmetric must not be given to such a solver.
   virtual std::string symmetryAssumption() const { return {}; }
-  // Called after A's values changed. patternChanged = true forces a new symbolic analysis.
+  // Called after A's values changed. patternChanged = true: the pattern may differ from the
+  // last matrix's, so a solver that does not compare patterns analyses again (MUMPS compares
+  // them itself and keeps the analysis of an equal pattern).
   virtual void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) = 0;
   // Solves A x = b. b and x live on A's range / domain maps. x's input values are ignored.
   virtual void solve(const MultiVector& b, MultiVector& x) = 0;

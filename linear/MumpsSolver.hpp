@@ -102,7 +102,7 @@ class MumpsSolver : public LinearSolver {
 
  private:
   struct Impl;  // keeps the MUMPS headers and mpi.h out of this header
-  void factorizeMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged);
+  void factorizeMatrix(const Teuchos::RCP<const Matrix>& A);
   // Analyses the held pattern on the double or the single-precision instance.
   void analyse(bool singlePrecision);
   // Factorizes the held values in the precision chosen (MumpsSolverPrecision.cpp), analysing

@@ -117,7 +117,7 @@ void MumpsSolver::solveRefined(const MultiVector& b, MultiVector& x) {
     m.singleChosen = false;
     ++stats_.doublePrecisionFallbacks;
   }
-  factorizeMatrix(m.current, false);
+  factorizeMatrix(m.current);
   solve(b, x);
 }
 
