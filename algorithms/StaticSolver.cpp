@@ -290,8 +290,8 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
                                                            : GeometricTerms::none);
 }
 
-bool StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
-  bool changed = false;
+int StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr) {
+  int changed = 0;
   for (const CyclingEvent& e : events) {
     ++sr.cycling[static_cast<int>(e.kind)];
     controls_->markCycling(e.point, static_cast<int>(e.kind));
@@ -318,9 +318,9 @@ bool StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRep
                                                                : kForcedClosed;
       controls_->forceStatus(e.point, status);
       detector_.forget(e.point);
-      changed = true;
-    } else {
-      changed = controls_->scaleCoefficients(e.point, 10.0) || changed;
+      ++changed;
+    } else if (controls_->scaleCoefficients(e.point, 10.0)) {
+      ++changed;
     }
   }
   return changed;
@@ -485,16 +485,27 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
                           reference > options_.absoluteTolerance && stepSolidAlone(x, t, sr);
   if (solidAlone) ++report.linearSolves;
   int solves = prediction.done || solidAlone ? 1 : 0;
-  if (prediction.done && onIteration) onIteration(sr.step, t, 0, prediction.residual);
-  if (solidAlone && onIteration) onIteration(sr.step, t, 0, reference);
+  IterateProgress progress;
+  progress.step = sr.step;
+  progress.time = t;
+  progress.attempt = attempt_;
+  if (onIteration && (prediction.done || solidAlone)) {
+    progress.residual = prediction.done ? prediction.residual : reference;
+    onIteration(progress);
+  }
   NewtonMethod::Observer observer;
   observer.treat = [&](int) {
-    return controls_ && treatCycling(detector_.observe(controls_->pointStates()), sr);
+    progress.treatedPoints =
+        controls_ ? treatCycling(detector_.observe(controls_->pointStates()), sr) : 0;
+    return progress.treatedPoints > 0;
   };
   observer.report = [&](int iteration, double norm) {
     if (const int signal = interruptionAgreed(mpiComm_)) throw Interrupted{signal};
     sr.residual = norm;
-    if (onIteration) onIteration(sr.step, t, solves + iteration, norm);
+    progress.iteration = solves + iteration;
+    progress.residual = norm;
+    if (onIteration) onIteration(progress);
+    progress.treatedPoints = 0;
   };
   NewtonRequest request;
   request.time = t;
@@ -622,9 +633,13 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       // A failed step solved again another way from its start (sr counts every attempt); a
       // failed second try reports the first attempt's failure (the one a table of methods
       // compares), the second's in its message.
-      const auto solveAgain = [&](NewtonMethod& method, double maxUpdate, const std::string& how) {
+      const auto solveAgain = [&](NewtonMethod& method, double maxUpdate, const char* attempt,
+                                  const std::string& how) {
         const std::string failure = report.failure, message = report.message;
-        if (solveStep(method, u, *x, sr, report, onIteration, maxUpdate)) {
+        attempt_ = attempt;
+        const bool solved = solveStep(method, u, *x, sr, report, onIteration, maxUpdate);
+        attempt_ = "";
+        if (solved) {
           report.failure.clear();
           report.message.clear();
           return true;
@@ -641,7 +656,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       if (!ok && retry_ && (lastTry || options_.lineSearchRetry == "every-failure") &&
           iteratesFailedToConverge(report.failure)) {
         ++report.lineSearchRetries;
-        ok = sr.lineSearchRetry = solveAgain(*retry_, 0, "with the Backtrack line search");
+        ok = sr.lineSearchRetry =
+            solveAgain(*retry_, 0, "line-search retry", "with the Backtrack line search");
       }
       // Full steps that failed through an update longer than the limit: a tangent nearly
       // singular (a perfectly plastic tube at its limit load before it meets the hole) threw the
@@ -652,8 +668,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       // steps would fail again. After the line-search retry, so that what it saved is
       // unchanged.
       if (!ok && updateLimit > 0 && sr.longestUpdate > updateLimit)
-        ok = sr.updateLimitRetry =
-            solveAgain(newton_, updateLimit, "with updates limited to " + sci(updateLimit));
+        ok = sr.updateLimitRetry = solveAgain(newton_, updateLimit, "update-limit retry",
+                                              "with updates limited to " + sci(updateLimit));
     } catch (const Interrupted& i) {
       // The last converged step stays the result; the summary says why the run stopped.
       report.failure = "interrupted";

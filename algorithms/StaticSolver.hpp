@@ -144,8 +144,16 @@ struct RunStart {
 class StaticSolver {
  public:
   using StepCallback = std::function<void(const StepReport&, const Vector& u)>;
-  using IterationCallback =
-      std::function<void(int step, double time, int iteration, double residual)>;
+  // One Newton iterate, as a progress line shows it.
+  struct IterateProgress {
+    int step = 0;
+    double time = 0;           // the step's end (a cut step ends earlier than planned)
+    int iteration = 0;         // in this attempt at the step (0: its start)
+    double residual = 0;       // ||R|| as Newton goes on with it (after a cycling treatment)
+    int treatedPoints = 0;     // points whose law a cycling treatment changed at this iterate
+    const char* attempt = "";  // "" or how a failed step is being solved again
+  };
+  using IterationCallback = std::function<void(const IterateProgress&)>;
 
   // `controls` is the system's contact seam, or null for a system without contact. `solver`
   // solves the tangent predictor's system (null: no predictor, whatever the options say).
@@ -182,8 +190,9 @@ class StaticSolver {
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);
-  // Returns whether a treatment changed the law (a status forced, coefficients scaled).
-  bool treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
+  // The number of points whose law the treatment changed (a status forced, coefficients
+  // scaled): the Newton method evaluates the iterate again when it is not zero.
+  int treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
   bool forcedStateHolds(const Vector& x, double t, double target, Vector& residual);
@@ -205,6 +214,7 @@ class StaticSolver {
   bool treating_ = true;
   double forcedResidual_ = 0;
   MPI_Comm mpiComm_ = MPI_COMM_SELF;  // the system's ranks, which agree on an interruption
+  const char* attempt_ = "";          // IterateProgress::attempt of the step being solved
 };
 
 }  // namespace contactlab

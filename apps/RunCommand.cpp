@@ -400,8 +400,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state);
     killAfterStepForTests(s.step, *comm);
   };
-  auto onIteration = [&](int step, double time, int it, double residual) {
-    if (root) progress.iteration(step, time, it, residual, elapsed());
+  auto onIteration = [&](const StaticSolver::IterateProgress& p) {
+    if (root) progress.iteration(p, elapsed());
   };
   RunReport report = runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep,
                                onIteration, from.start);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <unistd.h>
 
 namespace contactlab {
@@ -15,19 +16,27 @@ class RunProgress {
  public:
   RunProgress(bool enabled, double endTime)
       : enabled_(enabled), tty_(isatty(STDERR_FILENO)), endTime_(endTime) {}
-  void iteration(int step, double time, int iteration, double residual, double elapsed) {
+  void iteration(const StaticSolver::IterateProgress& p, double elapsed) {
     if (!enabled_) return;
+    // How the step is being solved again, and the cycling treatment that changed the law at
+    // this iterate (its residual jumps then: the treated law's).
+    char notes[96] = "";
+    std::snprintf(notes, sizeof notes, "%s%s%s", *p.attempt ? "  (" : "", p.attempt,
+                  *p.attempt ? ")" : "");
+    if (p.treatedPoints > 0)
+      std::snprintf(notes + std::strlen(notes), sizeof notes - std::strlen(notes),
+                    "  cycling treatment at %d point(s)", p.treatedPoints);
     if (!tty_) {
-      std::fprintf(stderr, "    step %d  iteration %d  |R| = %.3e  elapsed %.1f s\n", step,
-                   iteration, residual, elapsed);
+      std::fprintf(stderr, "    step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s\n",
+                   p.step, p.time, p.iteration, p.residual, elapsed, notes);
       return;
     }
     char eta[48] = "";
     if (lastTime_ > 0 && endTime_ > lastTime_)
       std::snprintf(eta, sizeof eta, "  ETA %.0f s",
                     std::max(0.0, lastElapsed_ * endTime_ / lastTime_ - elapsed));
-    std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s   ", step,
-                 time, iteration, residual, elapsed, eta);
+    std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s%s   ",
+                 p.step, p.time, p.iteration, p.residual, elapsed, eta, notes);
     std::fflush(stderr);
   }
   void step(const StepReport& s, int steps, double elapsed) {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
+#include <string>
 #include <vector>
 
 namespace contactlab {
@@ -40,9 +41,10 @@ class ScriptedNewton : public NewtonMethod {
       : failure_(std::move(failure)), failAt_(std::move(failAt)), always_(failAt_.empty()) {}
   int solves = 0;
   std::vector<double> times;  // of the solves
-  NewtonOutcome solve(Vector& x, const NewtonRequest& request, const Observer&) override {
+  NewtonOutcome solve(Vector& x, const NewtonRequest& request, const Observer& observer) override {
     ++solves;
     times.push_back(request.time);
+    if (observer.report) observer.report(0, 1.0);  // the start, for the progress
     NewtonOutcome out;
     const auto at = std::find(failAt_.begin(), failAt_.end(), request.time);
     const bool succeed = failure_.empty() || (!always_ && at == failAt_.end());
@@ -72,15 +74,21 @@ StaticSolverOptions options(const std::string& retry, int maxCuts) {
   return o;
 }
 
-// `retried`, when given, gets each converged step's StepReport::lineSearchRetry.
+// `retried`, when given, gets each converged step's StepReport::lineSearchRetry; `attempts`
+// each iterate's IterateProgress::attempt.
 RunReport run(NewtonMethod& first, NewtonMethod& retry, const StaticSolverOptions& o,
-              std::vector<bool>* retried = nullptr) {
+              std::vector<bool>* retried = nullptr, std::vector<std::string>* attempts = nullptr) {
   RootAtTimeSystem system;
   auto u = system.createVector();
   return StaticSolver(system, nullptr, first, o, nullptr, &retry)
-      .run(*u, [&](const StepReport& sr, const Vector&) {
-        if (retried) retried->push_back(sr.lineSearchRetry);
-      });
+      .run(
+          *u,
+          [&](const StepReport& sr, const Vector&) {
+            if (retried) retried->push_back(sr.lineSearchRetry);
+          },
+          [&](const StaticSolver::IterateProgress& p) {
+            if (attempts) attempts->push_back(p.attempt);
+          });
 }
 
 TEST(LineSearchRetry, ALastResortSolvesTheStepTheFullStepsFailed) {
@@ -94,6 +102,14 @@ TEST(LineSearchRetry, ALastResortSolvesTheStepTheFullStepsFailed) {
   EXPECT_EQ(report.lineSearchRetries, 2);
   EXPECT_EQ(lineSearch.solves, 2);
   EXPECT_EQ(report.iterations, 2 * (3 + 1));  // both attempts count
+}
+
+// A progress line says which attempt at a step its iterate belongs to.
+TEST(LineSearchRetry, TheProgressNamesTheRetrysIterates) {
+  ScriptedNewton fullSteps("max-iterations"), lineSearch("");
+  std::vector<std::string> attempts;
+  ASSERT_TRUE(run(fullSteps, lineSearch, options("last-resort", 0), nullptr, &attempts).converged);
+  EXPECT_EQ(attempts, (std::vector<std::string>{"", "line-search retry", "", "line-search retry"}));
 }
 
 TEST(LineSearchRetry, ALastResortWaitsUntilTheStepCannotBeCut) {

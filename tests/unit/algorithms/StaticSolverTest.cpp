@@ -95,11 +95,12 @@ class ScriptedNewton : public NewtonMethod {
 };
 
 // One load step with the forced treatment from u = 0; u holds the converged state.
-RunReport runForced(OnePointSystem& system, ScriptedNewton& newton, Vector& u) {
+RunReport runForced(OnePointSystem& system, ScriptedNewton& newton, Vector& u,
+                    const StaticSolver::IterationCallback& onIteration = {}) {
   StaticSolverOptions options;
   options.cyclingTreatment = "forced";
   StaticSolver solver(system, &system, newton, options);
-  return solver.run(u, {});
+  return solver.run(u, {}, onIteration);
 }
 
 TEST(StaticSolverForcedTreatment, AStateThatTheModelsLawAcceptsConverges) {
@@ -120,6 +121,21 @@ TEST(StaticSolverForcedTreatment, TheObserverSaysWhenTheTreatmentChangedTheLaw) 
   auto u = system.createVector();
   ASSERT_TRUE(runForced(system, newton, *u).converged);
   EXPECT_EQ(newton.lawChanged, (std::vector<bool>{false, false, false, true, false}));
+}
+
+// The progress of each iterate says at which the treatment changed the law, and at how many
+// points (a progress line notes it: the residual jumps there).
+TEST(StaticSolverForcedTreatment, TheProgressNamesTheTreatedIterate) {
+  OnePointSystem system(/*natural=*/1.0);
+  ScriptedNewton newton(system, /*naturalFails=*/true);
+  auto u = system.createVector();
+  std::vector<int> treated;
+  ASSERT_TRUE(runForced(system, newton, *u, [&](const StaticSolver::IterateProgress& p) {
+                EXPECT_EQ(p.step, 1);
+                EXPECT_STREQ(p.attempt, "");
+                treated.push_back(p.treatedPoints);
+              }).converged);
+  EXPECT_EQ(treated, (std::vector<int>{0, 0, 0, 1, 0}));
 }
 
 TEST(StaticSolverForcedTreatment, AViolatingStateIsSolvedAgainWithTheLawRestored) {

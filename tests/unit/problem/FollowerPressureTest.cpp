@@ -90,11 +90,11 @@ Solution solveSteps(Problem& problem, int steps, double relativeTolerance = 1e-1
   options.relativeTolerance = relativeTolerance;
   options.absoluteTolerance = 1e-14;
   s.report = runStatic(problem, nullptr, *solver, options, *s.u, {},
-                       [&](int step, double, int iteration, double residual) {
-                         if (static_cast<int>(s.residuals.size()) < step)
+                       [&](const StaticSolver::IterateProgress& p) {
+                         if (static_cast<int>(s.residuals.size()) < p.step)
                            s.residuals.emplace_back();
-                         if (iteration == 0) s.residuals[step - 1].clear();
-                         s.residuals[step - 1].push_back(residual);
+                         if (p.iteration == 0) s.residuals[p.step - 1].clear();
+                         s.residuals[p.step - 1].push_back(p.residual);
                        });
   return s;
 }
