@@ -33,6 +33,8 @@ struct NewtonRequest {
 // point at nu = 0.499 spends 9 iterates at 10-16 x its start before it converges (10 x stalled
 // it), the frictional axisymmetric tube 3 in a row above 100 x.
 inline constexpr double kStallFactor = 100;
+// Halvings of an update whose iterate cannot be evaluated (PlainNewton), down to 1/1024 of it.
+inline constexpr int kUnevaluableHalvings = 10;
 
 // Whether the last five residual norms of a solve alternate a, b, a, b, a (each equal to the one
 // two iterates before to 1e-6 relative; a = b too): Newton on a piecewise law revisiting the
@@ -48,8 +50,9 @@ struct NewtonOutcome {
   std::string failure;  // empty, or a named reason (StaticSolver's list)
   std::string message;
   double assemblySeconds = 0, linearSolveSeconds = 0;
-  int limitedUpdates = 0;    // updates scaled down to NewtonRequest::maxUpdate
-  double longestUpdate = 0;  // the largest displacement an update made (before any scaling)
+  int limitedUpdates = 0;       // updates scaled down to NewtonRequest::maxUpdate
+  int unevaluableHalvings = 0;  // updates halved because their iterate could not be evaluated
+  double longestUpdate = 0;     // the largest displacement an update made (before any scaling)
 };
 
 class NewtonMethod {

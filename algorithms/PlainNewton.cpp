@@ -53,12 +53,25 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
   int farIterates = 0;
   std::vector<double> norms;  // this solve's ||R|| per iterate
   for (int it = 0;; ++it) {
-    {
+    const auto evaluate = [&] {
       PhaseTimer timer(&out.assemblySeconds);
       if (request.geometryInNewton && it > 0) system_.updateGeometry(x, request.time);
       system_.assemble(x, request.time, residual.get(), true);
+      return residual->norm2();
+    };
+    double norm = evaluate();
+    // An update that lands where the system cannot be evaluated (an element inverted, a mortar
+    // facet so distorted that its dual basis does not exist: a NaN residual) is halved until
+    // it can, as PETSc's SNES does after a function domain error, rather than failing the
+    // attempt: the seed-size tube under generalized Newton lost its step to t = 0.22 down to
+    // the smallest cut so (doc/algorithms.md "Unevaluable iterates").
+    for (int halving = 0; it > 0 && !std::isfinite(norm) && halving < kUnevaluableHalvings;
+         ++halving) {
+      increment->scale(0.5);
+      x.update(-1.0, *increment, 1.0);
+      ++out.unevaluableHalvings;
+      norm = evaluate();
     }
-    double norm = residual->norm2();
     if (std::isfinite(norm) && observer.treat && observer.treat(it)) {
       // The observer changed the law at x (a cycling treatment): the step solves the new one.
       PhaseTimer timer(&out.assemblySeconds);

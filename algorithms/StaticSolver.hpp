@@ -110,20 +110,29 @@ struct RunReport {
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
   int cuts = 0;
-  int lineSearchRetries = 0;  // failed steps the line-search Newton solved again (or not)
-  int limitedUpdates = 0;     // Newton updates scaled down to Newton/Max Update
+  int lineSearchRetries = 0;    // failed steps the line-search Newton solved again (or not)
+  int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
+  int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
   CyclingCounts cycling{};
   PhaseSeconds seconds;
 
   // The counts as a step's run totals, and the counts a continued run starts from.
   RunTotals totals() const {
-    return {iterations,          linearSolves,       cuts,
-            lineSearchRetries,   limitedUpdates,     statusIterations,
-            thresholdIterations, geometryIterations, cycling};
+    return {iterations,
+            linearSolves,
+            cuts,
+            lineSearchRetries,
+            limitedUpdates,
+            unevaluableHalvings,
+            statusIterations,
+            thresholdIterations,
+            geometryIterations,
+            cycling};
   }
   void startFrom(const RunTotals& t) {
     iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
     lineSearchRetries = t.lineSearchRetries, limitedUpdates = t.limitedUpdates;
+    unevaluableHalvings = t.unevaluableHalvings;
     statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
     geometryIterations = t.geometryIterations, cycling = t.cycling;
   }

@@ -17,8 +17,9 @@ using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind
 // restarted run's summary counts the whole run.
 struct RunTotals {
   int iterations = 0, linearSolves = 0, cuts = 0;
-  int lineSearchRetries = 0;  // failed steps solved again by the line-search Newton
-  int limitedUpdates = 0;     // Newton updates scaled down to Newton/Max Update
+  int lineSearchRetries = 0;    // failed steps solved again by the line-search Newton
+  int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
+  int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   CyclingCounts cycling{};
 };

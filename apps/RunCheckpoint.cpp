@@ -78,6 +78,10 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
     run.limitedUpdates = static_cast<int>(file.integerAttribute("limited_updates"));
   } catch (const InputError&) {
   }
+  try {  // absent from checkpoints written before the halving of unevaluable updates
+    run.unevaluableHalvings = static_cast<int>(file.integerAttribute("unevaluable_halvings"));
+  } catch (const InputError&) {
+  }
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
   run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
   run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));
@@ -157,6 +161,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("cuts", static_cast<std::int64_t>(run.cuts));
     file.writeAttribute("line_search_retries", static_cast<std::int64_t>(run.lineSearchRetries));
     file.writeAttribute("limited_updates", static_cast<std::int64_t>(run.limitedUpdates));
+    file.writeAttribute("unevaluable_halvings", static_cast<std::int64_t>(run.unevaluableHalvings));
     file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));
     file.writeAttribute("threshold_iterations", static_cast<std::int64_t>(run.thresholdIterations));
     file.writeAttribute("geometry_iterations", static_cast<std::int64_t>(run.geometryIterations));

@@ -178,6 +178,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
                              .set("cuts", report.cuts)
                              .set("line_search_retries", report.lineSearchRetries))
       .set("limited_updates", report.limitedUpdates)
+      .set("unevaluable_halvings", report.unevaluableHalvings)
       .set("iterations", JsonValue::object()
                              .set("newton", report.iterations)
                              .set("status", report.statusIterations)
