@@ -27,11 +27,7 @@ struct MovingRoot {
 };
 
 NewtonRequest request() {
-  NewtonRequest r;
-  r.time = 1;
-  r.target = 1e-12;
-  r.maxIterations = 10;
-  return r;
+  return test::newtonRequest(1e-12, 10);
 }
 
 TEST(ObserverChangesLaw, PlainNewtonStepsWithTheChangedLaw) {

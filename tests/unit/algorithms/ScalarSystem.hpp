@@ -2,6 +2,7 @@
 // A nonlinear system of one unknown, R(x, t) and dR/dx given as functions: the textbook cases
 // of Newton's failures (a tangent that flattens away from the root, a 2-cycle) for the tests of
 // the static solver's remedies.
+#include "algorithms/NewtonMethod.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 
 #include <Tpetra_Core.hpp>
@@ -46,5 +47,14 @@ class ScalarSystem : public NonlinearSystem {
   Teuchos::RCP<const Map> map_;
   Teuchos::RCP<Matrix> tangent_;
 };
+
+// A Newton solve's request at t = 1 (the scalar laws do not depend on t).
+inline NewtonRequest newtonRequest(double target, int maxIterations) {
+  NewtonRequest r;
+  r.time = 1;
+  r.target = target;
+  r.maxIterations = maxIterations;
+  return r;
+}
 
 }  // namespace contactlab::test

@@ -23,10 +23,7 @@ NewtonOutcome solveWithHistory(const std::vector<double>& history, int stallIter
       [](double, double) { return 1.0; }, 1.0);
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(system, solver, nullptr);
-  NewtonRequest request;
-  request.time = 1;
-  request.target = 1e-10;
-  request.maxIterations = 20;
+  NewtonRequest request = test::newtonRequest(1e-10, 20);
   request.stallIterations = stallIterations;
   auto x = system.createVector();
   return newton.solve(*x, request, {});

@@ -14,44 +14,38 @@
 namespace contactlab {
 namespace {
 
-NewtonRequest request() {
-  NewtonRequest r;
-  r.time = 1;
-  r.target = 1e-12;
-  r.maxIterations = 20;
-  return r;
-}
-
-double cubeMinusEight(double x, double bound) {
-  return x <= bound ? x * x * x - 8 : std::numeric_limits<double>::quiet_NaN();
+// Newton on R(x) = x^3 - 8 from x = 1, the law evaluable for x <= bound only; x: the last iterate.
+NewtonOutcome solveFromOne(double bound, double& x) {
+  test::ScalarSystem system(
+      [&](double y, double) {
+        return y <= bound ? y * y * y - 8 : std::numeric_limits<double>::quiet_NaN();
+      },
+      [](double y, double) { return 3 * y * y; }, 1.0);
+  Klu2Solver solver({}, Tpetra::getDefaultComm());
+  PlainNewton newton(system, solver, nullptr);
+  auto v = system.createVector();
+  v->putScalar(1.0);
+  const NewtonOutcome out = newton.solve(*v, test::newtonRequest(1e-12, 20), {});
+  x = v->getData(0)[0];
+  return out;
 }
 
 TEST(UnevaluableIterate, AnUpdateIntoTheUnevaluableRegionIsHalved) {
-  test::ScalarSystem system([](double x, double) { return cubeMinusEight(x, 3.0); },
-                            [](double x, double) { return 3 * x * x; }, 1.0);
-  Klu2Solver solver({}, Tpetra::getDefaultComm());
-  PlainNewton newton(system, solver, nullptr);
-  auto x = system.createVector();
-  x->putScalar(1.0);
-  const NewtonOutcome out = newton.solve(*x, request(), {});
+  double x = 0;
+  const NewtonOutcome out = solveFromOne(3.0, x);
   ASSERT_TRUE(out.failure.empty()) << out.failure << ": " << out.message;
-  EXPECT_NEAR(x->getData(0)[0], 2.0, 1e-12);
+  EXPECT_NEAR(x, 2.0, 1e-12);
   EXPECT_EQ(out.unevaluableHalvings, 1);  // 10/3, then 13/6
 }
 
 // Where no fraction of the update down to 1/1024 can be evaluated, the solve fails as before,
 // at the last halving's iterate.
 TEST(UnevaluableIterate, AnUpdateThatNoHalvingSavesFails) {
-  test::ScalarSystem system([](double x, double) { return cubeMinusEight(x, 1.0); },
-                            [](double x, double) { return 3 * x * x; }, 1.0);
-  Klu2Solver solver({}, Tpetra::getDefaultComm());
-  PlainNewton newton(system, solver, nullptr);
-  auto x = system.createVector();
-  x->putScalar(1.0);
-  const NewtonOutcome out = newton.solve(*x, request(), {});
+  double x = 0;
+  const NewtonOutcome out = solveFromOne(1.0, x);
   EXPECT_EQ(out.failure, "nan-detected");
   EXPECT_EQ(out.unevaluableHalvings, kUnevaluableHalvings);
-  EXPECT_NEAR(x->getData(0)[0], 1.0 + (7.0 / 3.0) / 1024, 1e-12);
+  EXPECT_NEAR(x, 1.0 + (7.0 / 3.0) / 1024, 1e-12);
 }
 
 }  // namespace
