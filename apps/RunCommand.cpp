@@ -427,7 +427,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                                            t) == contactTimesWritten.end())
         std::cerr << "contactlab: warning: Output/Contact Times: no converged step at t = "
                   << numberText(t) << ": contact_t" << numberText(t) << ".csv was not written\n";
-  if (contact && root && report.steps > 0 && !contact->everInContact())
+  // Only for a run that reached its end: a failed one may have failed where the surfaces met
+  // (the seed-size tube under generalized Newton, at the joint's closing), and the warning
+  // would send its user to check a geometry that is right.
+  if (contact && root && report.converged && report.steps > 0 && !contact->everInContact())
     std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
                  "contact surfaces never met (check the geometry, the loads and the "
                  "search distance)\n";
