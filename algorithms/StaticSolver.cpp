@@ -560,13 +560,15 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
 }
 
 namespace {
-// Whether a step failed because its iterates did not settle, which a line search may change;
-// not a singular tangent or an iterate the solid or the pairing cannot evaluate (a
-// backtracking search takes a non-finite ||R|| as a decrease).
+// Whether a step failed because its iterates did not settle or went where the system cannot be
+// evaluated (an element inverted, a contact facet without a dual basis: NOX's backtracking
+// rejects such a trial point and halves the step, UnevaluableIterate.NoxBacktracking...), which
+// a line search may change; not a singular tangent.
 bool iteratesFailedToConverge(const std::string& failure) {
   for (const char* name :
        {"max-iterations", "diverged", "degraded-contact", "statuses-not-converged",
-        "thresholds-not-converged", "geometry-not-converged"})
+        "thresholds-not-converged", "geometry-not-converged", "nan-detected",
+        "contact-geometry-failed", "inverted-element", "material-update-failed"})
     if (failure == name) return true;
   return false;
 }

@@ -151,6 +151,19 @@ TEST(LineSearchRetry, ASingularTangentIsNotRetried) {
   EXPECT_EQ(lineSearch.solves, 0);
 }
 
+// An iterate the system could not evaluate (an element inverted, a mortar facet without a dual
+// basis) is retried: NOX's backtracking shortens a step into such a point
+// (UnevaluableIterate.NoxBacktrackingShortensAStepIntoTheUnevaluableRegion).
+TEST(LineSearchRetry, AnUnevaluableIterateIsRetried) {
+  for (const char* failure :
+       {"nan-detected", "contact-geometry-failed", "inverted-element", "material-update-failed"}) {
+    ScriptedNewton fullSteps(failure), lineSearch("");
+    const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
+    EXPECT_TRUE(report.converged) << failure;
+    EXPECT_EQ(lineSearch.solves, 2) << failure;
+  }
+}
+
 TEST(LineSearchRetry, AFailedRetryNamesBothAttempts) {
   ScriptedNewton fullSteps("max-iterations"), lineSearch("diverged");
   const RunReport report = run(fullSteps, lineSearch, options("last-resort", 0));
