@@ -85,6 +85,11 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "scenes (doc/algorithms.md \"Line search retry\"). Not with Driver: nox and a line "
          "search already",
          choices({"every-failure", "last-resort", "never"}));
+  p->set("Line Search Retry Max Iterations", 0,
+         "Newton iterations the line-search retry may take per Newton solve; 0: twice Max "
+         "Iterations. Its halved steps take more iterations than full steps, and the cut it "
+         "saves costs the whole step again: with Max Iterations the hex8 tube's retries "
+         "stopped at 2e-4 from converging and cut (doc/algorithms.md \"Line search retry\")");
   p->set("Max Update", 0.05,
          "A step whose full Newton steps failed through an update that moved a node by more "
          "than this fraction of the model's size (twice the largest distance of a node from the "
@@ -209,6 +214,11 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.driver = newton.get<std::string>("Driver");
   o.lineSearch = newton.get<std::string>("Line Search");
   o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
+  o.retryMaxIterations = newton.get<int>("Line Search Retry Max Iterations");
+  if (o.retryMaxIterations < 0)
+    throw std::invalid_argument(
+        "Newton/Line Search Retry Max Iterations must be >= 0 (0: twice Max Iterations)");
+  if (o.retryMaxIterations == 0) o.retryMaxIterations = 2 * o.maxIterations;
   o.maxUpdate = newton.get<double>("Max Update");
   if (!(o.maxUpdate >= 0))
     throw std::invalid_argument("Newton/Max Update must be >= 0 (0: no such retry)");
@@ -510,7 +520,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   NewtonRequest request;
   request.time = t;
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
-  request.maxIterations = options_.maxIterations;
+  request.maxIterations = &newton == retry_ ? options_.retryMaxIterations : options_.maxIterations;
   request.geometryInNewton = options_.geometryInNewton;
   request.maxUpdate = maxUpdate;
   request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;

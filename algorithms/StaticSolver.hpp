@@ -59,6 +59,7 @@ struct StaticSolverOptions {
   // constructor): "every-failure" (before each cut, and before the run fails), "last-resort"
   // (only when the step cannot be cut any more), "never".
   std::string lineSearchRetry = "every-failure";
+  int retryMaxIterations = 40;  // Newton iterations per solve of the line-search retry
   // The largest displacement a plain Newton update may make when a step whose full steps failed
   // is solved again, as a fraction of the model's size (NonlinearSystem::modelSize); 0: no
   // such retry.

@@ -40,10 +40,12 @@ class ScriptedNewton : public NewtonMethod {
   explicit ScriptedNewton(std::string failure, std::vector<double> failAt = {})
       : failure_(std::move(failure)), failAt_(std::move(failAt)), always_(failAt_.empty()) {}
   int solves = 0;
-  std::vector<double> times;  // of the solves
+  std::vector<double> times;       // of the solves
+  std::vector<int> maxIterations;  // of the solves' requests
   NewtonOutcome solve(Vector& x, const NewtonRequest& request, const Observer& observer) override {
     ++solves;
     times.push_back(request.time);
+    maxIterations.push_back(request.maxIterations);
     if (observer.report) observer.report(0, 1.0);  // the start, for the progress
     NewtonOutcome out;
     const auto at = std::find(failAt_.begin(), failAt_.end(), request.time);
@@ -110,6 +112,31 @@ TEST(LineSearchRetry, TheProgressNamesTheRetrysIterates) {
   std::vector<std::string> attempts;
   ASSERT_TRUE(run(fullSteps, lineSearch, options("last-resort", 0), nullptr, &attempts).converged);
   EXPECT_EQ(attempts, (std::vector<std::string>{"", "line-search retry", "", "line-search retry"}));
+}
+
+// The retry's halved steps take more iterations than full steps, and the cut it saves costs the
+// whole step again: it may take Line Search Retry Max Iterations, twice Max Iterations by
+// default (with Max Iterations, the hex8 tube's retries stopped 2e-4 from converging and cut).
+TEST(LineSearchRetry, TheRetryMayTakeTwiceMaxIterations) {
+  Teuchos::ParameterList newton = *StaticSolverOptions::validNewton();
+  newton.set("Max Iterations", 12);
+  const auto from = [&] {
+    return StaticSolverOptions::from(*StaticSolverOptions::validLoadSteps(), newton,
+                                     *StaticSolverOptions::validAlgorithm());
+  };
+  StaticSolverOptions o = from();
+  EXPECT_EQ(o.retryMaxIterations, 24);
+  newton.set("Line Search Retry Max Iterations", 30);
+  EXPECT_EQ(from().retryMaxIterations, 30);
+  newton.set("Line Search Retry Max Iterations", -1);
+  EXPECT_THROW(from(), std::invalid_argument);
+
+  ScriptedNewton fullSteps("max-iterations"), lineSearch("");
+  o.steps = 1;
+  o.maxCuts = 0;
+  ASSERT_TRUE(run(fullSteps, lineSearch, o).converged);
+  EXPECT_EQ(fullSteps.maxIterations, (std::vector<int>{12}));
+  EXPECT_EQ(lineSearch.maxIterations, (std::vector<int>{24}));
 }
 
 TEST(LineSearchRetry, ALastResortWaitsUntilTheStepCannotBeCut) {
