@@ -48,6 +48,15 @@ std::vector<std::string> splitLines(const std::string& text) {
   return lines;
 }
 
+// A count attribute that older checkpoints lack: 0 there.
+int countOrZero(const Hdf5Reader& file, const std::string& name) {
+  try {
+    return static_cast<int>(file.integerAttribute(name));
+  } catch (const InputError&) {
+    return 0;
+  }
+}
+
 CheckpointInfo readInfo(const Hdf5Reader& file) {
   std::string format;
   try {
@@ -70,18 +79,11 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   run.iterations = static_cast<int>(file.integerAttribute("newton_iterations"));
   run.linearSolves = static_cast<int>(file.integerAttribute("linear_solves"));
   run.cuts = static_cast<int>(file.integerAttribute("cuts"));
-  try {  // absent from checkpoints written before Newton/Line Search Retry
-    run.lineSearchRetries = static_cast<int>(file.integerAttribute("line_search_retries"));
-  } catch (const InputError&) {
-  }
-  try {  // absent from checkpoints written before Newton/Max Update
-    run.limitedUpdates = static_cast<int>(file.integerAttribute("limited_updates"));
-  } catch (const InputError&) {
-  }
-  try {  // absent from checkpoints written before the halving of unevaluable updates
-    run.unevaluableHalvings = static_cast<int>(file.integerAttribute("unevaluable_halvings"));
-  } catch (const InputError&) {
-  }
+  // Absent from checkpoints written before Newton/Line Search Retry, Newton/Max Update and the
+  // halving of unevaluable updates: such a count starts at 0.
+  run.lineSearchRetries = countOrZero(file, "line_search_retries");
+  run.limitedUpdates = countOrZero(file, "limited_updates");
+  run.unevaluableHalvings = countOrZero(file, "unevaluable_halvings");
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
   run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
   run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
+#include <string>
 #include <unistd.h>
 
 namespace contactlab {
@@ -20,15 +20,12 @@ class RunProgress {
     if (!enabled_) return;
     // How the step is being solved again, and the cycling treatment that changed the law at
     // this iterate (its residual jumps then: the treated law's).
-    char notes[96] = "";
-    std::snprintf(notes, sizeof notes, "%s%s%s", *p.attempt ? "  (" : "", p.attempt,
-                  *p.attempt ? ")" : "");
+    std::string notes = *p.attempt ? std::string("  (") + p.attempt + ")" : std::string();
     if (p.treatedPoints > 0)
-      std::snprintf(notes + std::strlen(notes), sizeof notes - std::strlen(notes),
-                    "  cycling treatment at %d point(s)", p.treatedPoints);
+      notes += "  cycling treatment at " + std::to_string(p.treatedPoints) + " point(s)";
     if (!tty_) {
       std::fprintf(stderr, "    step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s\n",
-                   p.step, p.time, p.iteration, p.residual, elapsed, notes);
+                   p.step, p.time, p.iteration, p.residual, elapsed, notes.c_str());
       return;
     }
     char eta[48] = "";
@@ -36,7 +33,7 @@ class RunProgress {
       std::snprintf(eta, sizeof eta, "  ETA %.0f s",
                     std::max(0.0, lastElapsed_ * endTime_ / lastTime_ - elapsed));
     std::fprintf(stderr, "\r  step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s%s%s   ",
-                 p.step, p.time, p.iteration, p.residual, elapsed, eta, notes);
+                 p.step, p.time, p.iteration, p.residual, elapsed, eta, notes.c_str());
     std::fflush(stderr);
   }
   void step(const StepReport& s, int steps, double elapsed) {
