@@ -147,16 +147,19 @@ class TangentOperator : public Tpetra::Operator<Scalar, LO, GO, Node> {
   const NonlinearSystem& system_;
 };
 
-// Converged only when no contact status changed at the last evaluation.
+// Converged only when no contact status changed at the last evaluation and the contact
+// equations hold within the target as forces (ContactControls::constraintResidual).
 class ContactStatusTest : public NOX::StatusTest::Generic {
  public:
-  explicit ContactStatusTest(const ContactControls* controls) : controls_(controls) {}
+  ContactStatusTest(const ContactControls* controls, double target)
+      : controls_(controls), target_(target) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType) override {
-    status_ =
-        (controls_ == nullptr || solver.getNumIterations() == 0 || controls_->statusChanges() == 0)
-            ? NOX::StatusTest::Converged
-            : NOX::StatusTest::Unconverged;
+    status_ = (controls_ == nullptr ||
+               ((solver.getNumIterations() == 0 || controls_->statusChanges() == 0) &&
+                controls_->constraintResidual() <= target_))
+                  ? NOX::StatusTest::Converged
+                  : NOX::StatusTest::Unconverged;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
@@ -166,6 +169,7 @@ class ContactStatusTest : public NOX::StatusTest::Generic {
 
  private:
   const ContactControls* controls_;
+  double target_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -289,7 +293,7 @@ NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Ob
   auto normF = rcp(new NOX::StatusTest::NormF(request.target, NOX::StatusTest::NormF::Unscaled));
   auto converged = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::AND));
   converged->addStatusTest(normF);
-  converged->addStatusTest(rcp(new ContactStatusTest(controls_)));
+  converged->addStatusTest(rcp(new ContactStatusTest(controls_, request.target)));
   auto maxIters = rcp(new NOX::StatusTest::MaxIters(request.maxIterations));
   auto finite = rcp(new NOX::StatusTest::FiniteValue);
   auto tests = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));

@@ -20,7 +20,9 @@ std::string sci(double v) {
 bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
                      int iteration) {
   if (!(norm <= request.target)) return false;
-  return iteration == 0 || controls == nullptr || controls->statusChanges() == 0;
+  if (controls == nullptr) return true;
+  return (iteration == 0 || controls->statusChanges() == 0) &&
+         controls->constraintResidual() <= request.target;
 }
 
 bool newtonCycles(const std::vector<double>& norms) {
@@ -110,7 +112,11 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     if (out.iterations == request.maxIterations) {
       out.failure = "max-iterations";
       out.message = "Newton did not converge in " + std::to_string(out.iterations) +
-                    " iterations (||R|| = " + sci(norm) + ", target " + sci(request.target) + ")";
+                    " iterations (||R|| = " + sci(norm) + ", target " + sci(request.target);
+      if (controls_ != nullptr && norm <= request.target)
+        out.message +=
+            "; the contact equations' residual as forces " + sci(controls_->constraintResidual());
+      out.message += ")";
       return out;
     }
     try {

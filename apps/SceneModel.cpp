@@ -20,6 +20,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -163,7 +164,8 @@ std::string joined(const std::vector<std::string>& names) {
 ContactZone contactZone(const ParameterList& z, const std::string& name, const Mesh& mesh,
                         const SolidModel& model, double endTime, const std::string& where,
                         std::vector<std::string>& notes,
-                        std::map<std::string, double>& automaticNormalAugmentation) {
+                        std::map<std::string, double>& automaticNormalAugmentation,
+                        std::map<std::string, double>& automaticTangentialAugmentation) {
   const std::string path = where + ": Contact/" + name;
   ContactZone zone;
   zone.name = name;
@@ -255,12 +257,22 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   const ParameterList& f = z.sublist("Formulation");
   zone.formulation = f.get<std::string>("Type");
   ParameterList params = f.sublist(zone.formulation);
+  // The contact stiffness E / h, the scale of the contact equations' residual as forces
+  // (LawOutput::constraintResidual); unknown (0) where no block bounded by the surfaces has a
+  // material, which the automatic r_n below then reports.
+  std::optional<AugmentationScale> stiffness;
+  try {
+    stiffness = automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
+    zone.stiffnessScale = stiffness->normalAugmentation();
+  } catch (const std::invalid_argument&) {
+  }
   // Normal Augmentation 0 (its default): E / h from the model (AutomaticAugmentation.hpp).
   if (params.isParameter("Normal Augmentation") &&
       params.get<double>("Normal Augmentation") == 0.0) {
     try {
       const AugmentationScale scale =
-          automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
+          stiffness ? *stiffness
+                    : automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
       params.set("Normal Augmentation", scale.normalAugmentation());
       automaticNormalAugmentation[name] = scale.normalAugmentation();
       notes.push_back("Contact/" + name + ": Normal Augmentation r_n = E / h = " +
@@ -273,6 +285,17 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
                        "/Normal Augmentation: automatic (0) cannot be computed: " + e.what() +
                        "; give a value (start near E/h)");
     }
+  }
+  // Tangential Augmentation 0 (its default) with friction: from the model too.
+  if (zone.friction > 0 && stiffness && params.isParameter("Tangential Augmentation") &&
+      params.get<double>("Tangential Augmentation") == 0.0) {
+    const double rt = stiffness->tangentialAugmentation(zone.friction);
+    params.set("Tangential Augmentation", rt);
+    automaticTangentialAugmentation[name] = rt;
+    notes.push_back("Contact/" + name + ": Tangential Augmentation r_t = 1 / (" +
+                    numberText(kAutomaticContactStrain) + " mu h) = " + numberText(rt) +
+                    " (automatic: mu = " + numberText(zone.friction) +
+                    ", h = " + numberText(stiffness->facetSize) + ")");
   }
   try {
     zone.law = formulationRegistry().get(zone.formulation).build(params);
@@ -458,9 +481,9 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   // Contact zones.
   const ParameterList& contact = p.sublist("Contact");
   for (auto it = contact.begin(); it != contact.end(); ++it)
-    sm.contact.push_back(contactZone(contact.sublist(contact.name(it)), contact.name(it), *mesh,
-                                     sm.model, endTime, where, sm.notes,
-                                     sm.automaticNormalAugmentation));
+    sm.contact.push_back(contactZone(
+        contact.sublist(contact.name(it)), contact.name(it), *mesh, sm.model, endTime, where,
+        sm.notes, sm.automaticNormalAugmentation, sm.automaticTangentialAugmentation));
   // Node-to-segment collocates at the slave nodes, and tri6/quad8 corners carry no (or a
   // negative) share of a smooth pressure: it runs, its forces are not consistent loads.
   for (const ContactZone& zone : sm.contact)

@@ -62,9 +62,10 @@ struct SceneModel {
   std::vector<std::string> advice;
   // Sentences for the log about values the scene left to contactlab (automatic coefficients).
   std::vector<std::string> notes;
-  // Per contact zone whose Normal Augmentation the scene left at 0: the r_n computed for it
-  // (AutomaticAugmentation.hpp), reported in summary.json.
+  // Per contact zone whose Normal (Tangential) Augmentation the scene left at 0: the r_n (r_t)
+  // computed for it (AutomaticAugmentation.hpp), reported in summary.json.
   std::map<std::string, double> automaticNormalAugmentation;
+  std::map<std::string, double> automaticTangentialAugmentation;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

@@ -57,6 +57,10 @@ class ContactControls {
   virtual double updateThresholds(const Vector& x, double t) = 0;
   // Points whose status changed between the last two evaluations.
   virtual int statusChanges() const = 0;
+  // The norm over the points of LawOutput::constraintResidual at the last evaluation: how far
+  // the multiplier rows' equations are from holding, as forces (Newton converges only when it
+  // is within the target too).
+  virtual double constraintResidual() const { return 0.0; }
 
   virtual std::vector<ContactPointState> pointStates() const = 0;
   // Cycling treatments at one point, for the rest of the load step (releaseTreatments ends

@@ -51,6 +51,9 @@ struct LawInput {
   // cycling treatment; 1 elsewhere. Laws whose coefficients are part of the model (penalty)
   // ignore it.
   double coefficientScale = 1.0;
+  // The zone's contact stiffness E / h (pressure per length; 0: unknown), which turns the
+  // multiplier rows' residuals into forces for LawOutput::constraintResidual.
+  double stiffnessScale = 0.0;
 };
 
 struct LawOutput {
@@ -70,6 +73,16 @@ struct LawOutput {
   // transmits no friction, so it neither sticks nor slips, whatever status the algorithms use
   // (the results write it as closed without friction).
   bool frictionlessClosed = false;
+  // The factors that make the multiplier rows' residuals forces (laws with multipliers; 0
+  // otherwise), for ContactPoint::constraintResidual: the normal row (w g closed: times the
+  // contact stiffness LawInput::stiffnessScale; (w / c) p open: times c) and the friction rows
+  // (w c_t v at stick: times the stiffness over c_t; a direction error w dLambda at slip: times
+  // the threshold). The rows themselves are lengths and numbers, whose norm next to the forces'
+  // does not see a violation: code_aster SSNV128 with lagrange at c_t = 800 converged to a
+  // state whose stick points had slipped 40 um without friction (rows 4e-5 against a target of
+  // 1e-2; 5e6 N as a force).
+  double normalRowForce = 0.0;
+  double frictionRowForce = 0.0;
 };
 
 // Friction thresholds at or below the pressure of a penetration of kTouchingGap times the

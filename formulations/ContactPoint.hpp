@@ -37,9 +37,10 @@ struct ContactPoint {
   // Frozen by an algorithm (-1: follows the iterate).
   int frozenStatus = -1;
   double frozenThreshold = -1.0;
-  double threshold = 0.0;          // of the last evaluation
-  double indicator = 0.0;          // of the last evaluation (closed when >= 0)
-  double frictionIndicator = 0.0;  // of the last evaluation (slip when > 0)
+  double threshold = 0.0;           // of the last evaluation
+  double constraintResidual = 0.0;  // of the last evaluation (LawOutput::constraintResidual)
+  double indicator = 0.0;           // of the last evaluation (closed when >= 0)
+  double frictionIndicator = 0.0;   // of the last evaluation (slip when > 0)
   // Cycling treatments for the current step (-1 / 1: none).
   int forcedStatus = -1;
   double forcedThreshold = -1.0;

@@ -80,6 +80,7 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   if (!pt.paired) in.frozenStatus = 0;
   in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
   in.coefficientScale = pt.coefficientScale;
+  in.stiffnessScale = zone.stiffnessScale;
   LawOutput out;
   law.evaluate(in, out);
   pt.prescribedSlip = 0;
@@ -93,6 +94,15 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
     dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
   }
   pt.threshold = out.threshold;
+  // The multiplier rows as forces (LawOutput::normalRowForce), after any friction direction
+  // was dropped (its row then holds its multiplier at 0): the rotation keeps the rows' norm.
+  double constraint2 = 0;
+  if (law.hasMultipliers()) {
+    constraint2 = std::pow(out.r[1 + nt] * out.normalRowForce, 2);
+    for (int k = 0; k < nt; ++k)
+      constraint2 += std::pow(out.r[2 + nt + k] * out.frictionRowForce, 2);
+  }
+  pt.constraintResidual = std::sqrt(constraint2);
   pt.indicator = out.indicator;
   pt.frictionIndicator = out.frictionIndicator;
 

@@ -81,6 +81,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   int updateStatuses(const Vector& x, double t) override;
   double updateThresholds(const Vector& x, double t) override;
   int statusChanges() const override { return statusChanges_; }
+  double constraintResidual() const override { return constraintResidual_; }
   std::vector<ContactPointState> pointStates() const override;
   void forceStatus(std::size_t point, int status) override;
   bool scaleCoefficients(std::size_t point, double factor) override;
@@ -162,6 +163,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   std::string geometryFailure_;
   ContactPhaseSeconds seconds_;
   int statusChanges_ = 0;
+  double constraintResidual_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
   bool graphStale_ = false;  // re-paired since the graph was built: rebuild it for a tangent
   GeometricTerms geometricTerms_ = GeometricTerms::none;

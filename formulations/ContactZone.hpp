@@ -40,6 +40,9 @@ struct ContactZone {
   std::string noFrictionGroup;
   std::string formulation;  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
+  // The contact stiffness E / h of the zone (AutomaticAugmentation.hpp; 0: unknown), the scale
+  // of LawOutput::constraintResidual.
+  double stiffnessScale = 0.0;
   // The surfaces' measure weight (SurfaceWeight.hpp): 2 pi r in an axisymmetric model, set by
   // ContactProblem from the solid model; empty: 1.
   SurfaceWeight areaWeight;

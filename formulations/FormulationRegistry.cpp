@@ -33,7 +33,10 @@ Teuchos::RCP<ParameterList> augmentation() {
       "at rest, h the median edge of the slave facets (printed in the log). It changes the "
       "Newton path, not the converged state",
       "Tangential Augmentation", 0.0,
-      "r_t > 0 (inverse length; required with friction, unused without). Start near 1/h")));
+      "r_t > 0 (inverse length; unused without friction); 0 = automatic: 1 / (0.01 mu h), h as "
+      "for r_n (printed in the log): the stick stiffness mu p r_t equals r_n at a contact "
+      "pressure p of 1 % of E. Its natural scale is E / (mu p h). It changes the Newton path, "
+      "not the converged state (where the solution is unique)")));
 }
 
 // r_n and r_t as given; r_t, unused without friction, is 1 when left at its default 0.

@@ -1,5 +1,6 @@
 #include "formulations/MultiplierLaw.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace contactlab {
@@ -29,6 +30,8 @@ void MultiplierLaw::evaluate(const LawInput& in, LawOutput& out) const {
   J(p, p) = -(w / s.cn) * (1 - s.SR);
   J(p, g) = -w * s.SR;
   out.status = s.closed ? ContactStatus::Stick : ContactStatus::Free;
+  // r_p = -w g closed, -(w / c_n) p open (LawOutput::normalRowForce).
+  out.normalRowForce = s.closed ? in.stiffnessScale : s.cn;
   if (nt == 0) return;
 
   std::array<double, 2> LamHat{};
@@ -50,7 +53,7 @@ void MultiplierLaw::evaluate(const LawInput& in, LawOutput& out) const {
     out.frictionlessClosed = s.closed;
     if (s.closed && (in.frozenStatus == 2 || in.frozenStatus == kSlipOnset))
       out.status = ContactStatus::Slip;  // as frozen
-    return;
+    return;                              // Lambda carries no force here (frictionRowForce 0)
   }
   for (int k = 0; k < nt; ++k) {
     writeFrictionRow(in, s, k, out);
@@ -64,6 +67,11 @@ void MultiplierLaw::evaluate(const LawInput& in, LawOutput& out) const {
   }
   out.threshold = transmittedThreshold(s);
   if (s.closed) out.status = s.ball.inside ? ContactStatus::Stick : ContactStatus::Slip;
+  // Stick: r = -w c_t v, a slip whose force is E / h times it; slip: a direction error, whose
+  // force is the threshold times it; open: no force.
+  out.frictionRowForce = !s.closed       ? 0.0
+                         : s.ball.inside ? in.stiffnessScale / s.ct
+                                         : std::abs(s.tau);
 }
 
 }  // namespace contactlab

@@ -81,6 +81,9 @@ JsonValue SummaryJson::formulations() const {
     const auto automatic = sm_.automaticNormalAugmentation.find(zone.name);
     if (automatic != sm_.automaticNormalAugmentation.end())
       formulation.set("automatic_normal_augmentation", automatic->second);
+    const auto tangential = sm_.automaticTangentialAugmentation.find(zone.name);
+    if (tangential != sm_.automaticTangentialAugmentation.end())
+      formulation.set("automatic_tangential_augmentation", tangential->second);
     zones.set(zone.name, formulation);
   }
   return zones;

@@ -153,9 +153,12 @@ cases = [
     ("contact: negative augmentation",
      contact_with("{Normal Augmentation: 100.0}", "{Normal Augmentation: -100.0}"), [],
      ["Contact/floor/Formulation/augmented-lagrangian", "r_n", "Normal Augmentation"]),
+    # The augmented Lagrangian's r_t is automatic (from the model's h); penalty's is the model.
     ("contact: friction without tangential coefficient",
-     contact_with("Slave: bottom", "Slave: bottom\n      Friction: 0.3"), [],
-     ["Tangential Augmentation", "Friction > 0"]),
+     contact_with("Slave: bottom", "Slave: bottom\n      Friction: 0.3").replace(
+         "Type: augmented-lagrangian\n        augmented-lagrangian: {Normal Augmentation: 100.0}",
+         "Type: penalty\n        penalty: {Normal Penalty: 100.0}"), [],
+     ["Tangential Penalty", "Friction > 0"]),
     ("contact: unknown formulation", contact_with("Type: augmented-lagrangian", "Type: mortar-magic"),
      [], ["'mortar-magic'", "Contact/floor/Formulation/Type", "penalty", "lagrange"]),
     ("contact: misspelt key", contact_with("Slave: bottom", "Slave: bottom\n      Frction: 0.3"), [],
