@@ -258,7 +258,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   zone.formulation = f.get<std::string>("Type");
   ParameterList params = f.sublist(zone.formulation);
   // The contact stiffness E / h, the scale of the contact equations' residual as forces
-  // (LawOutput::constraintResidual); unknown (0) where no block bounded by the surfaces has a
+  // (LawOutput::normalRowForce); unknown (0) where no block bounded by the surfaces has a
   // material, which the automatic r_n below then reports.
   std::optional<AugmentationScale> stiffness;
   try {
@@ -266,23 +266,26 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
     zone.stiffnessScale = stiffness->normalAugmentation();
   } catch (const std::invalid_argument&) {
   }
-  // Normal Augmentation 0 (its default): E / h from the model (AutomaticAugmentation.hpp).
-  if (params.isParameter("Normal Augmentation") &&
-      params.get<double>("Normal Augmentation") == 0.0) {
+  // The augmented Lagrangian's Normal Augmentation or Lagrange's Normal Complementarity Constant
+  // at 0 (their default): E / h from the model (AutomaticAugmentation.hpp).
+  const bool lagrangeConstant = params.isParameter("Normal Complementarity Constant");
+  const std::string normalKey =
+      lagrangeConstant ? "Normal Complementarity Constant" : "Normal Augmentation";
+  if (params.isParameter(normalKey) && params.get<double>(normalKey) == 0.0) {
     try {
       const AugmentationScale scale =
           stiffness ? *stiffness
                     : automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
-      params.set("Normal Augmentation", scale.normalAugmentation());
+      params.set(normalKey, scale.normalAugmentation());
       automaticNormalAugmentation[name] = scale.normalAugmentation();
-      notes.push_back("Contact/" + name + ": Normal Augmentation r_n = E / h = " +
-                      numberText(scale.normalAugmentation()) +
+      notes.push_back("Contact/" + name + ": " + normalKey + (lagrangeConstant ? " c_n" : " r_n") +
+                      " = E / h = " + numberText(scale.normalAugmentation()) +
                       " (automatic: E = " + numberText(scale.youngModulus) +
                       ", the softer body's; h = " + numberText(scale.facetSize) +
                       ", the slave facets' median edge)");
     } catch (const std::invalid_argument& e) {
-      throw InputError(path + "/Formulation/" + zone.formulation +
-                       "/Normal Augmentation: automatic (0) cannot be computed: " + e.what() +
+      throw InputError(path + "/Formulation/" + zone.formulation + "/" + normalKey +
+                       ": automatic (0) cannot be computed: " + e.what() +
                        "; give a value (start near E/h)");
     }
   }

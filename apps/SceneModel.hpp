@@ -63,7 +63,8 @@ struct SceneModel {
   // Sentences for the log about values the scene left to contactlab (automatic coefficients).
   std::vector<std::string> notes;
   // Per contact zone whose Normal (Tangential) Augmentation the scene left at 0: the r_n (r_t)
-  // computed for it (AutomaticAugmentation.hpp), reported in summary.json.
+  // computed for it (AutomaticAugmentation.hpp), reported in summary.json; Lagrange's Normal
+  // Complementarity Constant c_n in the first map.
   std::map<std::string, double> automaticNormalAugmentation;
   std::map<std::string, double> automaticTangentialAugmentation;
 };

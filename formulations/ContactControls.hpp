@@ -57,7 +57,7 @@ class ContactControls {
   virtual double updateThresholds(const Vector& x, double t) = 0;
   // Points whose status changed between the last two evaluations.
   virtual int statusChanges() const = 0;
-  // The norm over the points of LawOutput::constraintResidual at the last evaluation: how far
+  // The norm over the points of ContactPoint::constraintResidual at the last evaluation: how far
   // the multiplier rows' equations are from holding, as forces (Newton converges only when it
   // is within the target too).
   virtual double constraintResidual() const { return 0.0; }

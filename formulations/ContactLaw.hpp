@@ -52,7 +52,7 @@ struct LawInput {
   // ignore it.
   double coefficientScale = 1.0;
   // The zone's contact stiffness E / h (pressure per length; 0: unknown), which turns the
-  // multiplier rows' residuals into forces for LawOutput::constraintResidual.
+  // multiplier rows' residuals into forces (LawOutput::normalRowForce).
   double stiffnessScale = 0.0;
 };
 

@@ -38,7 +38,7 @@ struct ContactPoint {
   int frozenStatus = -1;
   double frozenThreshold = -1.0;
   double threshold = 0.0;           // of the last evaluation
-  double constraintResidual = 0.0;  // of the last evaluation (LawOutput::constraintResidual)
+  double constraintResidual = 0.0;  // of the last evaluation: its multiplier rows as forces
   double indicator = 0.0;           // of the last evaluation (closed when >= 0)
   double frictionIndicator = 0.0;   // of the last evaluation (slip when > 0)
   // Cycling treatments for the current step (-1 / 1: none).

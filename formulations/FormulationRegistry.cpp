@@ -85,9 +85,10 @@ void registerFormulations() {
          "point) with a primal-dual active set for contact and stick/slip",
          [] {
            return coefficients(
-               "Normal Complementarity Constant", 1.0,
+               "Normal Complementarity Constant", 0.0,
                "c_n > 0: weighs the gap against the pressure when choosing the active set "
-               "(p - c_n g >= 0); does not change the solution. E/h is a good scale",
+               "(p - c_n g >= 0); does not change the solution. 0 = automatic: E/h as the "
+               "augmented Lagrangian's r_n (printed in the log)",
                "Tangential Complementarity Constant", 1.0,
                "c_t > 0 (inverse length): same role for stick/slip (||Lambda + c_t v|| < 1)");
          },

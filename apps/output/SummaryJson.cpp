@@ -80,7 +80,9 @@ JsonValue SummaryJson::formulations() const {
     // The r_n a scene left at 0 (its parameters above say 0).
     const auto automatic = sm_.automaticNormalAugmentation.find(zone.name);
     if (automatic != sm_.automaticNormalAugmentation.end())
-      formulation.set("automatic_normal_augmentation", automatic->second);
+      formulation.set(zone.formulation == "lagrange" ? "automatic_normal_complementarity_constant"
+                                                     : "automatic_normal_augmentation",
+                      automatic->second);
     const auto tangential = sm_.automaticTangentialAugmentation.find(zone.name);
     if (tangential != sm_.automaticTangentialAugmentation.end())
       formulation.set("automatic_tangential_augmentation", tangential->second);

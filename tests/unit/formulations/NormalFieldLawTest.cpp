@@ -31,7 +31,8 @@ TEST(PointUnknowns, EveryFormulationNamesEachOfItsUnknowns) {
   registerFormulations();
   for (const std::string& type : formulationRegistry().names()) {
     Teuchos::ParameterList p = *formulationRegistry().get(type).validParameters();
-    for (const char* required : {"Normal Augmentation", "Normal Penalty"})
+    for (const char* required :
+         {"Normal Augmentation", "Normal Penalty", "Normal Complementarity Constant"})
       if (p.isParameter(required)) p.set(required, 100.0);
     const auto law = formulationRegistry().get(type).build(p);
     for (int dim : {2, 3})
