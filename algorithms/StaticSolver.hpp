@@ -200,6 +200,9 @@ class StaticSolver {
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);
+  // Whether a status fixed point freezes the contact statuses between Newton solves (the fixed
+  // point preset), where scaling a cycling point's coefficients cannot change the frozen status.
+  bool statusLoopOutsideNewton() const;
   // The number of points whose law the treatment changed (a status forced, coefficients
   // scaled): the Newton method evaluates the iterate again when it is not zero.
   int treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
