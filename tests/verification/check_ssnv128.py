@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """code_aster SSNV128 (scenes/ssnv128-2d.yaml) under contactlab's algorithms and formulations.
 
-usage: check_ssnv128.py CONTACTLAB SCENE WORKDIR
+usage: check_ssnv128.py CONTACTLAB SCENE WORKDIR [SET ...]   (each SET a --set for every run)
 
 Every run below that converges must converge to the same state, and that state must be a
 solution: the tangential displacements of the contact face at A-E within 5 % of code_aster's
@@ -18,7 +18,7 @@ c_n = 1 gave stick points that had slipped up to 3 um (u_x 1.1-5.1 % above the r
 A-E), c_t = 2e6 a point slipping at 2.4 mu p (its forced cycling status was accepted)."""
 import csv, os, sys
 
-exe, scene, work = sys.argv[1:4]
+exe, scene, work, common = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
 from contactlab_run import fresh_run  # noqa: E402
@@ -45,7 +45,7 @@ runs = [
 ]
 states = {}
 for name, sets, must_converge in runs:
-    summary, r = fresh_run(exe, scene, os.path.join(work, name), ["Output/VTK=false", *sets])
+    summary, r = fresh_run(exe, scene, os.path.join(work, name), ["Output/VTK=false", *common, *sets])
     if summary is None:
         sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
     outcome = (f"{name}: {summary['failure'] or 'converged'} in "
