@@ -78,9 +78,15 @@ class NewtonMethod {
                               const Observer& observer) = 0;
 };
 
-// Whether Newton may stop at an iterate with residual `norm`: below the target, and with the
-// contact statuses unchanged since the previous iterate (a residual that is small only because
-// statuses just moved is not a solution yet). Iterate 0 has no previous iterate in this solve.
+// Whether the contact part of an iterate allows Newton to stop (both drivers): the contact
+// statuses unchanged since the previous iterate (a residual that is small only because statuses
+// just moved is not a solution yet; iterate 0 has no previous iterate in this solve), and the
+// contact equations within `target` as forces (ContactControls::constraintResidual). True
+// without contact (controls null).
+bool contactSettled(const ContactControls* controls, double target, int iteration);
+
+// Whether Newton may stop at an iterate with residual `norm`: below the target, and
+// contactSettled.
 bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
                      int iteration);
 

@@ -147,17 +147,14 @@ class TangentOperator : public Tpetra::Operator<Scalar, LO, GO, Node> {
   const NonlinearSystem& system_;
 };
 
-// Converged only when no contact status changed at the last evaluation and the contact
-// equations hold within the target as forces (ContactControls::constraintResidual).
+// NOX's side of contactSettled (NormF checks the residual).
 class ContactStatusTest : public NOX::StatusTest::Generic {
  public:
   ContactStatusTest(const ContactControls* controls, double target)
       : controls_(controls), target_(target) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType) override {
-    status_ = (controls_ == nullptr ||
-               ((solver.getNumIterations() == 0 || controls_->statusChanges() == 0) &&
-                controls_->constraintResidual() <= target_))
+    status_ = contactSettled(controls_, target_, solver.getNumIterations())
                   ? NOX::StatusTest::Converged
                   : NOX::StatusTest::Unconverged;
     return status_;

@@ -17,12 +17,15 @@ std::string sci(double v) {
 
 }  // namespace
 
-bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
-                     int iteration) {
-  if (!(norm <= request.target)) return false;
+bool contactSettled(const ContactControls* controls, double target, int iteration) {
   if (controls == nullptr) return true;
   return (iteration == 0 || controls->statusChanges() == 0) &&
-         controls->constraintResidual() <= request.target;
+         controls->constraintResidual() <= target;
+}
+
+bool newtonConverged(double norm, const NewtonRequest& request, const ContactControls* controls,
+                     int iteration) {
+  return norm <= request.target && contactSettled(controls, request.target, iteration);
 }
 
 bool newtonCycles(const std::vector<double>& norms) {

@@ -261,10 +261,12 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   // (LawOutput::normalRowForce); unknown (0) where no block bounded by the surfaces has a
   // material, which the automatic r_n below then reports.
   std::optional<AugmentationScale> stiffness;
+  std::string noStiffness;  // why, when there is none
   try {
     stiffness = automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
     zone.stiffnessScale = stiffness->normalAugmentation();
-  } catch (const std::invalid_argument&) {
+  } catch (const std::invalid_argument& e) {
+    noStiffness = e.what();
   }
   // The augmented Lagrangian's Normal Augmentation or Lagrange's Normal Complementarity Constant
   // at 0 (their default): E / h from the model (AutomaticAugmentation.hpp).
@@ -272,22 +274,17 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   const std::string normalKey =
       lagrangeConstant ? "Normal Complementarity Constant" : "Normal Augmentation";
   if (params.isParameter(normalKey) && params.get<double>(normalKey) == 0.0) {
-    try {
-      const AugmentationScale scale =
-          stiffness ? *stiffness
-                    : automaticAugmentation(mesh, model.materials, zone.slave, zone.master);
-      params.set(normalKey, scale.normalAugmentation());
-      automaticNormalAugmentation[name] = scale.normalAugmentation();
-      notes.push_back("Contact/" + name + ": " + normalKey + (lagrangeConstant ? " c_n" : " r_n") +
-                      " = E / h = " + numberText(scale.normalAugmentation()) +
-                      " (automatic: E = " + numberText(scale.youngModulus) +
-                      ", the softer body's; h = " + numberText(scale.facetSize) +
-                      ", the slave facets' median edge)");
-    } catch (const std::invalid_argument& e) {
+    if (!stiffness)
       throw InputError(path + "/Formulation/" + zone.formulation + "/" + normalKey +
-                       ": automatic (0) cannot be computed: " + e.what() +
+                       ": automatic (0) cannot be computed: " + noStiffness +
                        "; give a value (start near E/h)");
-    }
+    params.set(normalKey, stiffness->normalAugmentation());
+    automaticNormalAugmentation[name] = stiffness->normalAugmentation();
+    notes.push_back("Contact/" + name + ": " + normalKey + (lagrangeConstant ? " c_n" : " r_n") +
+                    " = E / h = " + numberText(stiffness->normalAugmentation()) +
+                    " (automatic: E = " + numberText(stiffness->youngModulus) +
+                    ", the softer body's; h = " + numberText(stiffness->facetSize) +
+                    ", the slave facets' median edge)");
   }
   // Tangential Augmentation 0 (its default) with friction: from the model too.
   if (zone.friction > 0 && stiffness && params.isParameter("Tangential Augmentation") &&
