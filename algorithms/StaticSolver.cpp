@@ -719,6 +719,11 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                    ? "after " + std::to_string(cuts) + " cuts (Load Steps/Max Cuts)"
                    : "at dt = " + sci(dt) + ", the smallest step (End Time / Steps / 2^Max Cuts)") +
               "; last: " + report.message;
+        } else if (iteratesFailedToConverge(report.failure)) {
+          // A failed step is not cut by default (studies count failures); say how to cut it.
+          report.message +=
+              " (Load Steps/Max Cuts = 0: the step was not cut; a shorter step "
+              "may pass, e.g. Max Cuts: 4)";
         }
         return report;
       }

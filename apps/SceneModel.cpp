@@ -362,7 +362,9 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   auto mesh = cached ? meshes->meshFor(meshKey.str(), buildMesh) : buildMesh();
   addPointGroups(p.sublist("Point Groups"), *mesh, where);
   sm.model.mesh = mesh;
-  sm.model.axisymmetric = p.sublist("Geometry").get<std::string>("Type") == "axisymmetric";
+  const std::string geometry = p.sublist("Geometry").get<std::string>("Type");
+  sm.model.axisymmetric = geometry == "axisymmetric";
+  sm.model.planeStress = geometry == "plane-stress";
   const int dim = mesh->dim;
 
   // Materials, one per block.

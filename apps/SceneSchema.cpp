@@ -300,13 +300,17 @@ ParameterList geometrySection() {
   ParameterList p("Geometry");
   p.set("Type", "plane-strain",
         "What a 2D mesh stands for: 'plane-strain' (a slice of unit thickness, out-of-plane "
-        "strains zero; ignored in 3D) or 'axisymmetric' (the solid of revolution about the y "
+        "strains zero; ignored in 3D), 'plane-stress' (a thin plate of unit thickness loaded "
+        "in its plane, sigma_zz = 0, as Abaqus CPS and code_aster C_PLAN; every material law, "
+        "its thickness strain solved at each point; forces per unit reference thickness; "
+        "pressures dead (Follower: false); 2D only) or 'axisymmetric' (the solid of "
+        "revolution about the y "
         "axis: x = r >= 0 the radius, y the axial coordinate, as Abaqus CAX and code_aster "
         "AXIS; small- and finite-strain materials, pressures dead (Follower: false); the zz "
         "stress is the hoop stress sigma_tt; every "
         "force, reaction, spring and point load is per full 360 degree ring, so a point load "
         "is a ring load; nodes on the axis need a Dirichlet condition on x; doc/scenes.md)",
-        choices({"plane-strain", "axisymmetric"}));
+        choices({"plane-strain", "plane-stress", "axisymmetric"}));
   return p;
 }
 

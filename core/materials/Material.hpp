@@ -5,7 +5,8 @@
 //  - Voigt order xx, yy, zz, xy, yz, xz; strains use engineering shears (gamma = 2 eps).
 //  - Plane strain is the 3D law with eps_zz = eps_yz = eps_xz = 0 (finite strain: F_zz = 1,
 //    F_xz = F_zx = F_yz = F_zy = 0); the 2D kernels pick the in-plane components and still
-//    report sigma_zz.
+//    report sigma_zz. Plane stress is the law wrapped in PlaneStress.hpp, which takes that same
+//    input and solves for the eps_zz (F_zz) that makes sigma_zz vanish.
 //  - Small-strain laws take the linearized strain and return the Cauchy stress and
 //    d stress / d strain. Finite-strain laws take the deformation gradient F and return the
 //    first Piola-Kirchhoff stress P (row major, P[i * 3 + J]) and its derivative
@@ -45,6 +46,9 @@ struct MaterialOutput {
   std::array<double, 9> P{};         // first Piola-Kirchhoff (finite strain only)
   std::array<double, 81> dPdF{};     // (finite strain only)
   double* stateNew = nullptr;
+  // Plane stress (PlaneStress.hpp): the out-of-plane strain eps_zz (small strain) or stretch
+  // F_zz (finite strain) the law solved for; empty otherwise (0 and 1 as the input said).
+  std::optional<double> outOfPlane;
   bool failed = false;  // the law could not be evaluated; `failure` says why
   std::string failure;
 };

@@ -125,17 +125,23 @@ void ElementKernel::evaluateFiniteStrainPoint(int q, double w, const Material& m
   const int ss = material.stateSize();
   in.stateOld = ss ? stateOld + q * ss : nullptr;
   out.stateNew = ss ? stateNew + q * ss : nullptr;
+  out.outOfPlane.reset();
   material.evaluate(in, out);
   if (out.failed) throw ElementUpdateError("material-update-failed", q, out.failure);
   if (!pointStress && !averageStress) return;
+  // In plane stress the law solved for F_zz: the Cauchy stress takes that F, whose J is
+  // det F_2D F_zz (the thickness changed).
+  std::array<double, 9> F = in.F;
+  if (out.outOfPlane) F[8] = *out.outOfPlane;
+  const double J = out.outOfPlane ? detF * *out.outOfPlane : detF;
   constexpr int kVoigt3[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
   double sigma[6] = {};
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) {
       double s = 0.0;
       for (int K = 0; K < 3; ++K)
-        s += out.P[i * 3 + K] * in.F[j * 3 + K];
-      sigma[kVoigt3[i][j]] = s / detF;
+        s += out.P[i * 3 + K] * F[j * 3 + K];
+      sigma[kVoigt3[i][j]] = s / J;
     }
   for (int k = 0; k < 6; ++k) {
     if (pointStress) pointStress[6 * q + k] = sigma[k];

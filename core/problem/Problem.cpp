@@ -4,6 +4,7 @@
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
+#include "core/materials/PlaneStress.hpp"
 #include "core/problem/AxisymmetricModel.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/ElementKernel.hpp"
@@ -11,6 +12,7 @@
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/NodalAssembler.hpp"
+#include "core/problem/PlaneStressModel.hpp"
 #include "core/problem/SurfaceLoadAssembler.hpp"
 #include "core/problem/SymmetryConstraints.hpp"
 
@@ -76,8 +78,15 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   dofs_ = std::make_unique<DofMap>(mesh, partition, comm);
 
   blockMaterial_.resize(mesh.blocks.size());
-  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
-    blockMaterial_[b] = model_.materials.at(mesh.blocks[b].name).get();
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const auto& law = model_.materials.at(mesh.blocks[b].name);
+    if (model_.planeStress) {
+      planeStressLaws_.push_back(std::make_shared<PlaneStress>(law));
+      blockMaterial_[b] = planeStressLaws_.back().get();
+    } else {
+      blockMaterial_[b] = law.get();
+    }
+  }
   blockTemperature_.assign(mesh.blocks.size(), nullptr);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
     for (const auto& temperature : model_.temperatures)
@@ -254,6 +263,7 @@ void Problem::checkModel() const {
       throw InputError("two temperatures given for block '" + temperature.block + "'");
   }
   checkAxisymmetricModel(model_);
+  checkPlaneStressModel(model_);
 }
 
 std::optional<double> Problem::blockTemperature(int block, double t) const {

@@ -200,7 +200,8 @@ class Problem : public NonlinearSystem {
     Teuchos::RCP<Vector> reference;
   } inertia_;
   std::vector<const Material*> blockMaterial_;
-  std::vector<const BlockTemperature*> blockTemperature_;  // per mesh block, nullptr: none
+  std::vector<std::shared_ptr<const Material>> planeStressLaws_;  // the wrappers, if planeStress
+  std::vector<const BlockTemperature*> blockTemperature_;         // per mesh block, nullptr: none
   // Dofs (overlap LIDs) constrained, and per owned constrained dof its condition.
   std::vector<char> constrained_;
   struct Constraint {

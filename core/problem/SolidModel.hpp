@@ -34,12 +34,31 @@ struct SolidModel {
   // and spring is then per full ring (a point load is a ring load: its force on the whole circle);
   // checkAxisymmetricModel.
   bool axisymmetric = false;
+  // A 2D model of a plate of unit reference thickness loaded in its plane: sigma_zz = 0, each
+  // block's law wrapped in PlaneStress (PlaneStress.hpp) by the Problem; every force is per unit
+  // reference thickness; checkPlaneStressModel.
+  bool planeStress = false;
 
   // Some block's material carries internal variables (plasticity): outputs add its fields.
   bool hasInternalVariables() const {
     for (const auto& [block, material] : materials)
       if (material->stateSize() > 0) return true;
     return false;
+  }
+
+  // The first pressure that follows the deformation (Follower: true, or automatic in a model
+  // with a finite-strain block), nullptr if none: the 2D models whose current facets are not
+  // known in full (the ring of an axisymmetric model, a plate's thickness) refuse it.
+  const SurfaceLoad* followerPressure() const {
+    bool finiteStrain = false;
+    for (const auto& [block, material] : materials)
+      finiteStrain |= material->kinematics() == Kinematics::FiniteStrain;
+    for (const auto& load : surfaceLoads)
+      if (load.kind == SurfaceLoad::Kind::Pressure &&
+          (load.follower == SurfaceLoad::Follower::Yes ||
+           (load.follower == SurfaceLoad::Follower::Automatic && finiteStrain)))
+        return &load;
+    return nullptr;
   }
 };
 

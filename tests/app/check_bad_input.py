@@ -122,6 +122,16 @@ cases = [
         "Type: box\n    box: {Origin: [1, 0, 0], nx: 1, ny: 1, nz: 1, Element: hex8}").replace(
         "Group: top", "Group: zmax").replace("Group: bottom", "Group: zmin") + "  Geometry: {Type: axisymmetric}\n", [],
      ["needs a 2D mesh", "3D"]),
+    # Plane stress (Geometry/Type: plane-stress): 2D, pressures dead.
+    ("plane-stress follower pressure",
+     GOOD.replace("Type: linear-elastic\n      linear-elastic:", "Type: neo-hookean\n      neo-hookean:")
+     + "  Geometry: {Type: plane-stress}\n",
+     [], ["load 'p'", "plane-stress model has no follower pressure", "Follower: false"]),
+    ("plane-stress 3D", GOOD.replace(
+        "Type: rectangle\n    rectangle: {Lx: 2.0, Ly: 1.0, nx: 4, ny: 2, Element: quad4}",
+        "Type: box\n    box: {nx: 1, ny: 1, nz: 1, Element: hex8}").replace(
+        "Group: top", "Group: zmax").replace("Group: bottom", "Group: zmin") + "  Geometry: {Type: plane-stress}\n", [],
+     ["plane-stress model needs a 2D mesh", "3D"]),
     ("axisymmetric spin axis", AXI.replace(
         "    p: {Type: pressure, Group: top, Value: 1.0}\n",
         "    p: {Type: pressure, Group: top, Value: 1.0}\n"

@@ -2,6 +2,7 @@
 #include "ProblemTestSupport.hpp"
 
 #include "base/InputError.hpp"
+#include "core/materials/NeoHookean.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -65,6 +66,38 @@ TEST(ModelCheck, SmallStrainBlocksKeepTheDeadPressureAndRefuseAFollower) {
   EXPECT_NE(m.find("Follower: true"), std::string::npos) << m;
   EXPECT_NE(m.find("block 'body'"), std::string::npos) << m;
   EXPECT_NE(m.find("small-strain"), std::string::npos) << m;
+}
+
+// Axisymmetric and plane-stress models have no follower pressure; a traction is a dead load, so
+// a finite-strain model with one is not refused (it was, as a 'follower pressure', with advice
+// to set a Follower option that a traction does not take).
+TEST(ModelCheck, AxisymmetricAndPlaneStressModelsRefuseFollowerPressuresOnly) {
+  auto model = elasticModel(unitMesh("quad4", 2), 1.0, 0.3, zero, {});
+  model.dirichlet.pop_back();
+  model.materials["body"] = std::make_shared<NeoHookean>(0.2, 1.0);
+  SurfaceLoad traction;
+  traction.name = "t";
+  traction.group = "top";
+  traction.kind = SurfaceLoad::Kind::Traction;
+  traction.traction = {0.0, 1.0, 0.0};
+  model.surfaceLoads.push_back(traction);
+  SolidModel pressed = model;
+  SurfaceLoad pressure;
+  pressure.name = "p";
+  pressure.group = "top";
+  pressure.pressure = 1.0;
+  pressed.surfaceLoads.push_back(pressure);
+  for (bool axisymmetric : {true, false}) {
+    model.axisymmetric = pressed.axisymmetric = axisymmetric;
+    model.planeStress = pressed.planeStress = !axisymmetric;
+    EXPECT_EQ(messageOf(model), "") << axisymmetric;
+    const std::string m = messageOf(pressed);
+    EXPECT_NE(m.find("load 'p'"), std::string::npos) << m;
+    EXPECT_NE(m.find("no follower pressure"), std::string::npos) << m;
+    pressed.surfaceLoads.back().follower = SurfaceLoad::Follower::No;
+    EXPECT_EQ(messageOf(pressed), "") << axisymmetric;
+    pressed.surfaceLoads.back().follower = SurfaceLoad::Follower::Automatic;
+  }
 }
 
 TEST(ModelCheck, LinearElasticRejectsBadConstants) {
