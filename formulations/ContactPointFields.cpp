@@ -17,18 +17,21 @@ std::vector<double> recoveredPressures(const Mesh& mesh, const std::vector<Conta
     // corner integrals are negative, and on quad9 f / w is a lumped projection with a small
     // corner share; the linear field of SurfacePressure.hpp is the traction there (3D Hertz,
     // hertz-3d's sizes, RMS off Hertz: tet10 40 % -> 1.9 %, hex20 46 % -> 3.8 %, hex27 6.1 % ->
-    // 1.8 %). Line3 facets (2D) keep f / w, which is a lumped projection there and measured
-    // the same (hertz-2d quad8: 1.04 % against 1.07 %). doc/verification.md.
-    bool quadratic3d = false;
+    // 1.8 %). Plane line2 and line3 facets keep f / w, a lumped projection there (hertz-2d
+    // quad8: 1.04 % against 1.07 %). Axisymmetric rings do not: their lumped (HRZ) areas with
+    // the weight 2 pi r are not the row sums of the weighted mass, and at the axis f / w read
+    // 4/3 p (line2) and 0 (line3, whose corner there integrates r to 0). doc/verification.md.
+    bool projected = static_cast<bool>(zones[z].areaWeight);
     for (const CellGroup* g : mesh.findBoundaries(zones[z].slave))
-      quadratic3d |= g->type == ElementType::Tri6 || g->type == ElementType::Quad8 ||
-                     g->type == ElementType::Quad9;
-    if (!quadratic3d) continue;
+      projected |= g->type == ElementType::Tri6 || g->type == ElementType::Quad8 ||
+                   g->type == ElementType::Quad9;
+    if (!projected) continue;
     std::map<std::int64_t, double> forces;
     for (const ContactPointResult& p : points)
       if (p.zone == static_cast<int>(z))
         forces[p.node] = p.status == ContactStatus::Free ? 0.0 : p.weight * p.pressure;
-    const auto pressure = pressureFromNodalForces(mesh, zones[z].slave, forces);
+    const auto pressure =
+        pressureFromNodalForces(mesh, zones[z].slave, forces, zones[z].areaWeight);
     for (std::size_t i = 0; i < points.size(); ++i)
       if (points[i].zone == static_cast<int>(z))
         // A field value, also at a node whose own force is ~0 (a tri6 corner, often open in

@@ -185,6 +185,13 @@ bool hasTransformedBasis(ElementType type) {
   return type == ElementType::Tri6 || type == ElementType::Quad8;
 }
 
+bool isIdentity(const std::vector<double>& T, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (T[i * n + j] != (i == j ? 1.0 : 0.0)) return false;
+  return true;
+}
+
 // Row-major product of two n x n matrices, and A B^T.
 std::vector<double> multiply(int n, const std::vector<double>& A, const std::vector<double>& B,
                              bool transposeB = false) {
@@ -197,12 +204,12 @@ std::vector<double> multiply(int n, const std::vector<double>& A, const std::vec
 }
 
 // The whole facet's dual basis Phi = A T N from its integrals (wholeFacetIntegrals): the dual of
-// the transformed basis T N (T the identity but on tri6/quad8), biorthogonal to T N. Throws
+// the transformed basis T N (T = facetBasisTransform), biorthogonal to T N. Throws
 // std::invalid_argument where it does not exist.
 std::vector<double> wholeFacetDualBasis(const Facet& slave, const std::vector<double>& lumped,
-                                        const std::vector<double>& mass) {
+                                        const std::vector<double>& mass,
+                                        const std::vector<double>& T) {
   const int n = static_cast<int>(lumped.size());
-  const std::vector<double> T = multiplierBasisTransform(slave.type);
   std::vector<double> transformed(n, 0.0);  // int T N
   for (int j = 0; j < n; ++j)
     for (int k = 0; k < n; ++k)
@@ -557,10 +564,29 @@ std::vector<double> multiplierBasisTransform(ElementType type) {
   return T;
 }
 
+std::vector<double> facetBasisTransform(ElementType type, const std::vector<double>& lumped) {
+  if (type != ElementType::Line3) return multiplierBasisTransform(type);
+  // A line3 corner whose weighted integral vanishes: on an axisymmetric ring the corner on the
+  // axis integrates N r to 0 (int_0^1 (1 - 3 s + 2 s^2) s ds = 0), so neither basis would give
+  // it a weight. The corners then gain alpha of the mid node's function, as on tri6 and quad8:
+  // int T N r dr = alpha / 3, 1/6 + alpha / 3 and (1 - 2 alpha) / 3 (times 2 pi h^2). The test
+  // is a share, not a sign: deformed, the axis facet's corner integrates to +-1e-8 of its area
+  // (its mid node off the middle), while a corner's share is 1/6 on a plane facet and 1/9 on a
+  // ring's second facet from the axis; 1/20 tells them apart.
+  const double area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
+  std::vector<double> T = multiplierBasisTransform(type);
+  if (std::min(lumped[0], lumped[1]) > 0.05 * area) return T;
+  constexpr double alpha = 0.2;
+  T[2 * 3 + 2] = 1.0 - 2.0 * alpha;
+  T[0 * 3 + 2] += alpha;
+  T[1 * 3 + 2] += alpha;
+  return T;
+}
+
 std::vector<double> dualBasisCoefficients(const Facet& slave) {
   std::vector<double> mass;
   const std::vector<double> lumped = wholeFacetIntegrals(slave, checkFacet(slave), &mass);
-  return wholeFacetDualBasis(slave, lumped, mass);
+  return wholeFacetDualBasis(slave, lumped, mass, facetBasisTransform(slave.type, lumped));
 }
 
 MortarIntegrals integrateMortar(const Facet& slave,
@@ -593,17 +619,19 @@ MortarIntegrals integrateMortar(const Facet& slave,
   const std::vector<double> lumped =
       wholeFacetIntegrals(slave, spaceDim, dual ? &mass : nullptr, weight);
   out.area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
+  const std::vector<double> T = facetBasisTransform(slave.type, lumped);
   // Checks the dual basis exists before integrating (a sentence, not a singular matrix).
   const std::vector<double> whole =
-      dual ? wholeFacetDualBasis(slave, lumped, mass) : std::vector<double>();
+      dual ? wholeFacetDualBasis(slave, lumped, mass, T) : std::vector<double>();
   if (spaceDim == 2)
     integrate2d(slave, slaveNormals, masters, weight, searchDistance, out);
   else
     integrate3d(slave, slaveNormals, masters, searchDistance, out);
   if (dual && out.coveredArea > 0)
-    toDualBasis(whole, multiplierBasisTransform(slave.type), ns, out);
-  else if (!dual && hasTransformedBasis(slave.type))
-    changeBasis(multiplierBasisTransform(slave.type), ns, out);
+    toDualBasis(whole, T, ns, out);
+
+  else if (!dual && !isIdentity(T, ns))
+    changeBasis(T, ns, out);
   return out;
 }
 

@@ -96,4 +96,10 @@ std::vector<double> dualBasisCoefficients(const Facet& slave);
 // facets: tri6 2A/15 at corners, A/5 at mid-edges; quad8 A/20 and A/5.
 std::vector<double> multiplierBasisTransform(ElementType type);
 
+// The transform a facet's multiplier bases are built on, from its whole-facet integrals
+// int N_j w dA: the type's, and on a line3 facet whose corner integrates to 0 under the weight
+// (an axisymmetric ring's facet at the axis, w = 2 pi r) the same alpha = 1/5 transform, which
+// gives that corner a positive integral; without it the dual basis would not exist there.
+std::vector<double> facetBasisTransform(ElementType type, const std::vector<double>& lumped);
+
 }  // namespace contactlab

@@ -18,6 +18,7 @@
 // by a near-constant amount), and on the 3D Hertz of bench/peers (tet10, 125 730 dofs) the
 // vertices read 0.77 % of p0 RMS off Hertz against 0.24 % with the linear field
 // (doc/verification.md).
+#include "core/contact/SurfaceWeight.hpp"
 #include "core/mesh/Mesh.hpp"
 
 #include <cstdint>
@@ -28,8 +29,11 @@ namespace contactlab {
 
 // The field above over the facets of boundary group `group` (reference coordinates), for the
 // nodes in `forces` (the others carry no force); M1 p = g solved by conjugate gradients with a
-// diagonal preconditioner to 1e-12 relative. Returns p for the nodes of `forces`.
-std::map<std::int64_t, double> pressureFromNodalForces(
-    const Mesh& mesh, const std::string& group, const std::map<std::int64_t, double>& forces);
+// diagonal preconditioner to 1e-12 relative, or with M1 lumped (row sums) on line facets. `weight`
+// weighs the measure (dA w(x): 2 pi r on an axisymmetric model's rings, whose nodal forces are per
+// ring; empty: w = 1). Returns p for the nodes of `forces`.
+std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const std::string& group,
+                                                       const std::map<std::int64_t, double>& forces,
+                                                       const SurfaceWeight& weight = {});
 
 }  // namespace contactlab

@@ -1,5 +1,6 @@
 #pragma once
-// Reads gmsh .msh files (format 2.2 and 4.x, ASCII or binary) through gmsh's API.
+// Reads gmsh .msh files (format 2.2 and 4.x, ASCII or binary) through gmsh's API, or meshes a
+// gmsh .geo script.
 #include "core/mesh/Mesh.hpp"
 
 #include <string>
@@ -14,9 +15,14 @@ namespace contactlab {
 // (Mesh::nodeId: the ids of contact.csv and the VTK field node_id); connectivity keeps gmsh's
 // node order and element orientation is not touched (inverted elements are reported by the fem
 // module).
-// Throws std::invalid_argument when the file does not exist or is not a .msh file, or holds an
-// element type contactlab does not support; std::runtime_error when gmsh cannot read it or it
-// has no physical group of dimension 2 or 3.
-Mesh readGmshFile(const std::string& path);
+// A .geo script is run and meshed in its own dimension (the highest of its entities) with its
+// own Mesh options, then read the same way; `sizeFactor` scales its element sizes
+// (Mesh.MeshSizeFactor) and `elementOrder` > 0 sets Mesh.ElementOrder (0: the script's), so one
+// script serves a mesh-convergence study. Both must keep their defaults for a .msh file.
+// Throws std::invalid_argument when the file does not exist or is neither a .msh nor a .geo
+// file, or holds an element type contactlab does not support, or the options are given for a
+// .msh file; std::runtime_error when gmsh cannot read or mesh it or it has no physical group of
+// dimension 2 or 3.
+Mesh readGmshFile(const std::string& path, double sizeFactor = 1.0, int elementOrder = 0);
 
 }  // namespace contactlab

@@ -67,7 +67,16 @@ ContactGrading grading(const ParameterList& p) {
 
 RCP<const ParameterList> fileParameters() {
   auto p = Teuchos::rcp(new ParameterList("file"));
-  p->set("Path", "", "gmsh .msh file (format 4 or 2.2), relative to the scene file's folder");
+  p->set("Path", "",
+         "gmsh .msh file (format 4 or 2.2), or a gmsh .geo script that contactlab meshes with "
+         "its own Mesh options; relative to the scene file's folder");
+  p->set("Size Factor", 1.0,
+         ".geo only: scales every element size of the script (gmsh's Mesh.MeshSizeFactor; "
+         "0.5 halves them), for a mesh-convergence study with --set (> 0)");
+  p->set("Element Order", 0,
+         ".geo only: 1 (linear) or 2 (quadratic) elements whatever the script says (gmsh's "
+         "Mesh.ElementOrder; its Mesh.SecondOrderIncomplete still picks quad8 or quad9); 0: "
+         "the script's");
   return p;
 }
 
@@ -340,14 +349,16 @@ MeshSourceRegistry& meshSourceRegistry() {
 void registerMeshSources() {
   auto& r = meshSourceRegistry();
   r.add({"file",
-         "A gmsh .msh file (format 4 or 2.2); physical groups name blocks and boundaries, "
-         "and its node tags name the nodes in contact.csv and the VTK output (a "
-         "generator's nodes are named by index + 1).",
+         "A gmsh .msh file (format 4 or 2.2) or .geo script (meshed at load); physical "
+         "groups name blocks and boundaries, and its node tags name the nodes in contact.csv "
+         "and the VTK output (a generator's nodes are named by index + 1).",
          fileParameters, [](const ParameterList& p, const std::string& dir) {
            std::filesystem::path path = p.get<std::string>("Path");
            if (path.empty()) throw InputError("Mesh/file/Path is empty");
            if (path.is_relative()) path = std::filesystem::path(dir) / path;
-           return std::make_unique<Mesh>(readGmshFile(path.lexically_normal().string()));
+           return std::make_unique<Mesh>(readGmshFile(path.lexically_normal().string(),
+                                                      p.get<double>("Size Factor"),
+                                                      p.get<int>("Element Order")));
          }});
   r.add({"rectangle",
          "Structured rectangle. Block 'body'; boundaries 'bottom', 'right', 'top', 'left'.",

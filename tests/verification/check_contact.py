@@ -9,6 +9,8 @@ CASE:
              the nodes with |x| <= 0.9 a; the edge nodes, where p_H has an infinite slope, are
              reported (and bounded by 3 TOL). Needs at least 10 nodes in the contact width.
   hertz-3d   V2: the same with a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), r = sqrt(x^2 + y^2).
+  hertz-axisymmetric  V2 on an axisymmetric section (x = r, P per full ring): the 3D formulas
+             with r = |x|; the point on the axis, where p = p0, is bounded by TOL too.
   cattaneo-mindlin  V4 (2D): stick-zone half-width c against a sqrt(1 - Q/(mu P)) within TOL
              node spacings, and the shear traction against Cattaneo-Mindlin's q(x) within
              5 % of mu p0 (--traction-tol) over |x| <= 0.9 c (the kinks of q at c and a are reported, not
@@ -82,16 +84,27 @@ closed = [r for r in rows if int(r["status"]) != 0]
 assert closed, "no contact point closed: contact switched off?"
 contact = summary["contact"]
 
-if args.case in ("hertz-2d", "hertz-3d"):
+if args.case in ("hertz-2d", "hertz-3d", "hertz-axisymmetric"):
     P = contact["normal_force"]
     Estar = args.estar or args.E / (1 - args.nu ** 2)
     dim = 2 if args.case == "hertz-2d" else 3
     a, p0 = hertz(P, Estar, args.radius, dim)
-    e = hertz_pressure_errors(rows, a, p0, dim)
+    # An axisymmetric section's rows are 2D: r = |x|.
+    e = hertz_pressure_errors(rows, a, p0, 2 if args.case == "hertz-axisymmetric" else dim)
+    if args.case == "hertz-axisymmetric":
+        axis = [r for r in rows if abs(float(r["reference_x"])) <= 1e-12]
+        assert axis, "no contact point on the axis"
+        axis_error = abs(float(axis[0]["pressure"]) - p0) / p0
+        print(f"pressure on the axis {float(axis[0]['pressure']):.6g}, p0 {p0:.6g}: "
+              f"error {axis_error:.4g} p0")
+        assert axis_error <= args.tol, f"pressure error on the axis {axis_error} > {args.tol}"
+
     assert e["inside"] >= 10, f"only {e['inside']} nodes in the contact width 2a = {2 * a}"
     err, rms, edge = e["max"], e["rms"], e["edge"]
     # Mesh size: the area per contact node inside the contact zone (2D: the width per node).
-    h = 2 * a / e["inside"] if dim == 2 else math.sqrt(math.pi * a * a / e["inside"])
+    h = (2 * a / e["inside"] if dim == 2 else
+         a / e["inside"] if args.case == "hertz-axisymmetric" else
+         math.sqrt(math.pi * a * a / e["inside"]))
     print(f"P = {P:.6g}, a = {a:.6g}, p0 = {p0:.6g}, nodes in the contact zone: {e['inside']}, "
           f"|p - p_H| / p0: max {err:.4g}, rms {rms:.4g} (|x| <= 0.9a), max {edge:.4g} (edge), "
           f"max penetration {contact['max_penetration']:.3g}")

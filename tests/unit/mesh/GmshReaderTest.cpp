@@ -127,8 +127,34 @@ TEST(GmshReader, RejectsDirectoriesAndOtherExtensions) {
     readGmshFile(dir + "/mesh.vtk");
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("does not end in .msh"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("ends in neither .msh nor .geo"), std::string::npos);
   }
+}
+
+// A .geo script is meshed at load with its own options; Size Factor and Element Order override
+// them, so one script serves a convergence study; they are refused for a .msh file.
+TEST(GmshReader, MeshesAGeoScript) {
+  const std::string dir = test::freshTempDir("reader-geo");
+  test::writeText(dir + "/square.geo",
+                  "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5};\n"
+                  "Point(3) = {1, 1, 0, 0.5}; Point(4) = {0, 1, 0, 0.5};\n"
+                  "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                  "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                  "Transfinite Surface{1}; Recombine Surface{1};\n"
+                  "Physical Surface(\"body\") = {1}; Physical Curve(\"bottom\") = {1};\n");
+  const Mesh coarse = readGmshFile(dir + "/square.geo");
+  EXPECT_EQ(coarse.dim, 2);
+  ASSERT_EQ(coarse.blocks.size(), 1u);
+  EXPECT_EQ(coarse.blocks[0].name, "body");
+  EXPECT_EQ(coarse.blocks[0].type, ElementType::Quad4);
+  EXPECT_EQ(coarse.blocks[0].size(), 4u);  // 2 x 2 at size 0.5
+  const Mesh fine = readGmshFile(dir + "/square.geo", 0.5, 2);
+  EXPECT_EQ(fine.blocks[0].size(), 16u);
+  EXPECT_EQ(fine.blocks[0].type, ElementType::Quad9);
+  EXPECT_EQ(fine.findBoundaries("bottom").front()->type, ElementType::Line3);
+  test::writeWithGmsh(coarse, dir + "/square.msh", 4.1);
+  EXPECT_THROW(readGmshFile(dir + "/square.msh", 0.5), std::invalid_argument);
+  EXPECT_THROW(readGmshFile(dir + "/square.geo", -1.0), std::invalid_argument);
 }
 
 TEST(GmshReader, FileWithoutPhysicalGroups) {
