@@ -629,7 +629,6 @@ MortarIntegrals integrateMortar(const Facet& slave,
     integrate3d(slave, slaveNormals, masters, searchDistance, out);
   if (dual && out.coveredArea > 0)
     toDualBasis(whole, T, ns, out);
-
   else if (!dual && !isIdentity(T, ns))
     changeBasis(T, ns, out);
   return out;
