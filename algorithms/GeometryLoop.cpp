@@ -28,6 +28,25 @@ std::string GeometryLoop::failureMessage() const {
   // appear at one update and vanish at the next, hold it at 1.3e-6 to 2.3e-6.
   constexpr std::size_t kWindow = 4;
   constexpr double kStagnation = 4.0;
+  // Diverging instead: the residual at the updated geometry ends above the step's first one and
+  // 100 times above the lowest it reached (the NAFEMS roller under its force, frictionless
+  // node-to-segment: 4e2, 2e1, 9e1, 1e3, 4e4, then 1e6 to 1e7 against 5e3 at the step's start).
+  // The frozen normal is the master's, which rotates as the master deforms; the consistent
+  // tangent (the geometry in Newton with its full terms), the stiffer body as master, or mortar
+  // converged there.
+  if (!relativeResiduals_.empty()) {
+    const double lowest = *std::min_element(relativeResiduals_.begin(), relativeResiduals_.end());
+    const double last = relativeResiduals_.back();
+    if (last > 1.0 && last > 100.0 * lowest) {
+      std::ostringstream hint;
+      hint << std::setprecision(2) << "; the geometric fixed point diverges: the residual at the "
+           << "updated geometry rose from " << lowest << " to " << last
+           << " of the step's first residual (a master whose normal turns as it deforms: try "
+              "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full, the stiffer "
+              "body as the Master, or Discretization: mortar)";
+      return message + hint.str();
+    }
+  }
   if (relativeResiduals_.size() < kWindow) return message;
   const auto first = relativeResiduals_.end() - kWindow;
   const auto [low, high] = std::minmax_element(first, relativeResiduals_.end());

@@ -268,6 +268,18 @@ TEST(FixedPointLoops, AGeometryThatStagnatesAboveItsToleranceSaysWhichToleranceA
   const RunReport falling = failAtTheCap({1e-2, 1e-3, 1e-4, 1e-5, 2e-6});
   EXPECT_EQ(falling.failure, "geometry-not-converged");
   EXPECT_EQ(falling.message.find("stagnated"), std::string::npos) << falling.message;
+  EXPECT_EQ(falling.message.find("diverges"), std::string::npos) << falling.message;
+  // The NAFEMS roller under its force (doc/verification.md): the residual at the updated
+  // geometry dips, then climbs far above the step's first; the failure says it diverges and
+  // names what converged there.
+  const RunReport diverging = failAtTheCap({8e-2, 4e-3, 2e-2, 8.0, 900.0});
+  EXPECT_EQ(diverging.failure, "geometry-not-converged");
+  EXPECT_NE(diverging.message.find("diverges: the residual at the updated geometry rose from "
+                                   "0.004 to 9e+02"),
+            std::string::npos)
+      << diverging.message;
+  EXPECT_NE(diverging.message.find("Geometric Terms: full"), std::string::npos)
+      << diverging.message;
 }
 
 }  // namespace
