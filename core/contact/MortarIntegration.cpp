@@ -179,6 +179,11 @@ std::vector<double> dualCoefficients(int n, const std::vector<double>& d,
   return A;
 }
 
+// The share of a mid-edge node's function a corner's transformed function gains
+// (multiplierBasisTransform, facetBasisTransform): alpha = 1/5, as in Popp's and CalculiX's
+// quadratic mortar.
+constexpr double kTransformAlpha = 0.2;
+
 // Facet types whose multiplier bases are built on transformed functions (corner integrals zero
 // or negative: multiplierBasisTransform).
 bool hasTransformedBasis(ElementType type) {
@@ -553,7 +558,7 @@ std::vector<double> multiplierBasisTransform(ElementType type) {
   if (!hasTransformedBasis(type)) return T;
   // Corner i gains alpha of the mid-edge functions beside it; mid-edge node c + i sits between
   // corners i and i + 1 (gmsh order) and keeps 1 - 2 alpha of its own.
-  constexpr double alpha = 0.2;
+  constexpr double alpha = kTransformAlpha;
   const int corners = n / 2;
   for (int i = 0; i < corners; ++i) {
     const int mid = corners + i;
@@ -576,7 +581,7 @@ std::vector<double> facetBasisTransform(ElementType type, const std::vector<doub
   const double area = std::accumulate(lumped.begin(), lumped.end(), 0.0);
   std::vector<double> T = multiplierBasisTransform(type);
   if (std::min(lumped[0], lumped[1]) > 0.05 * area) return T;
-  constexpr double alpha = 0.2;
+  constexpr double alpha = kTransformAlpha;
   T[2 * 3 + 2] = 1.0 - 2.0 * alpha;
   T[0 * 3 + 2] += alpha;
   T[1 * 3 + 2] += alpha;

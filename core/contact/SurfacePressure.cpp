@@ -104,10 +104,8 @@ std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const s
         double dA = facetGeometry(mesh.dim, k, x.data(), dN.data(), normal) * rule.weights[q];
         if (weight) {
           ref.shape(xi, N.data());
-          double xq[3] = {0.0, 0.0, 0.0};
-          for (int a = 0; a < k; ++a)
-            for (int i = 0; i < 3; ++i)
-              xq[i] += N[a] * x[3 * a + i];
+          double xq[3];
+          interpolatePosition(k, x.data(), N.data(), xq);
           dA *= weight(xq);
         }
         for (int a = 0; a < corners; ++a)

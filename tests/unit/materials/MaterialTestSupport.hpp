@@ -1,5 +1,5 @@
 #pragma once
-// Helpers shared by the constitutive-law tests: a finite-strain evaluation and its tangent
+// Helpers shared by the constitutive-law tests: a finite- or small-strain evaluation, a tangent
 // against central differences, random deformation gradients, rotations, diagonal stretches,
 // the Cauchy stress of P, the largest entrywise difference of two tensors.
 #include "core/materials/Material.hpp"
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <gtest/gtest.h>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -32,6 +33,23 @@ inline MaterialOutput evaluateF(const Material& m, const Mat3& F,
   MaterialInput in;
   in.F = F;
   in.stateOld = stateOld;
+  MaterialOutput out;
+  out.stateNew = stateNew.empty() ? nullptr : stateNew.data();
+  m.evaluate(in, out);
+  EXPECT_FALSE(out.failed) << m.name() << ": " << out.failure;
+  return out;
+}
+
+// The same for a small-strain law: its stress and tangent at `strain` (Voigt, engineering
+// shears), optionally at a temperature.
+inline MaterialOutput evaluateStrain(const Material& m, const std::array<double, 6>& strain,
+                                     const double* stateOld = nullptr,
+                                     std::optional<double> temperature = std::nullopt) {
+  std::vector<double> stateNew(m.stateSize());
+  MaterialInput in;
+  in.strain = strain;
+  in.stateOld = stateOld;
+  in.temperature = temperature;
   MaterialOutput out;
   out.stateNew = stateNew.empty() ? nullptr : stateNew.data();
   m.evaluate(in, out);

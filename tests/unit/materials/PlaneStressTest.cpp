@@ -21,24 +21,10 @@ namespace contactlab {
 namespace {
 
 using tensor3::Mat3;
+using test::evaluateStrain;
 using test::maxAbs;
 
 constexpr double kE = 200.0, kNu = 0.3;
-
-MaterialOutput evaluateStrain(const Material& m, const std::array<double, 6>& strain,
-                              const double* stateOld = nullptr,
-                              std::optional<double> temperature = std::nullopt) {
-  std::vector<double> stateNew(m.stateSize());
-  MaterialInput in;
-  in.strain = strain;
-  in.stateOld = stateOld;
-  in.temperature = temperature;
-  MaterialOutput out;
-  out.stateNew = stateNew.empty() ? nullptr : stateNew.data();
-  m.evaluate(in, out);
-  EXPECT_FALSE(out.failed) << m.name() << ": " << out.failure;
-  return out;
-}
 
 // The in-plane strain (xx, yy, gamma_xy) of a plane model, as the 2D kernel passes it.
 std::array<double, 6> planeStrain(double xx, double yy, double xy) {
