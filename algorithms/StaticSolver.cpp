@@ -126,6 +126,19 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "(counted as an iteration; the geometry stays paired at the step's start). Measured "
          "in doc/algorithms.md. Steps driven by loads alone start from u_n with 'tangent'",
          choices({"automatic", "tangent", "solid-alone", "none"}));
+  p->set("Extrapolation", "automatic",
+         "Start of a step after the first converged one: 'linear' moves the last converged "
+         "state u_n by the last step's increment (multipliers too) scaled by this step's load "
+         "increment projected on the last one's, a = r.r_n / r_n.r_n in [0, 2], r = R(u_n, "
+         "t_{n+1}) the plain start's residual (Abaqus' default extrapolation, code_aster's "
+         "PREDICTION='EXTRAPOLE'); a load held or turned back (a = 0) starts from u_n, and the "
+         "step's tolerance stays relative to ||r||. Used in place of the Predictor. 'none': "
+         "u_n (with the Predictor). 'automatic': linear for a model without contact and with "
+         "the contact statuses a fixed point (Algorithm/Method: fixed-point, whose statuses "
+         "and thresholds are frozen at the step's start), none where the statuses are in "
+         "Newton (there a start past the contact's stiffening costs iterations). Measured in "
+         "doc/algorithms.md \"Extrapolated start\"",
+         choices({"automatic", "none", "linear"}));
   p->set("Max Geometry Iterations", 30,
          "Contact: geometry updates (pairing, normals) allowed per step after Newton "
          "converged with the geometry frozen (>= 0)");
@@ -228,6 +241,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
     throw std::invalid_argument("Newton/Stall Iterations must be >= 0 (0: never)");
   if (newton.isSublist("NOX")) o.nox = newton.sublist("NOX");
   o.predictor = newton.get<std::string>("Predictor");
+  o.extrapolation = newton.get<std::string>("Extrapolation");
   if (o.driver == "plain" && o.lineSearch != "Full Step")
     throw std::invalid_argument("Newton/Line Search '" + o.lineSearch +
                                 "' needs Newton/Driver: nox (the plain Newton takes full steps)");
@@ -435,6 +449,26 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
   return p;
 }
 
+double StaticSolver::extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual) {
+  const bool wanted =
+      options_.extrapolation == "linear" || (options_.extrapolation == "automatic" &&
+                                             (controls_ == nullptr || statusLoopOutsideNewton()));
+  if (!wanted) return -1;
+  problem_.assemble(x, t, &residual, false);
+  if (!problem_.assemblyFailure().code.empty()) {
+    extrapolation_.skipStep();
+    return -1;
+  }
+  extrapolation_.beginStep(residual);
+  const double a = extrapolation_.factor();
+  if (a == 0) return -1;
+  const double plain = residual.norm2();
+  extrapolation_.extrapolate(u, a, x);
+  problem_.applyDirichlet(t, x);  // the prescribed values at t, not extrapolated
+  problem_.updateGeometry(x, t);
+  return plain;
+}
+
 bool StaticSolver::stepSolidAlone(Vector& x, double t, StepReport& sr) {
   if (!solidAlone_)
     solidAlone_ = std::make_unique<SolidAlonePredictor>(options_.predictor == "solid-alone");
@@ -461,15 +495,19 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     loop->beginStep();
   slowDynamics_.beginStep(problem_, t);
   problem_.updateGeometry(x, t);
-  const Prediction prediction = predict(u, x, sr, report);
-  if (prediction.done) problem_.updateGeometry(x, t);
   auto residual = problem_.createVector();
+  const double plainStart = extrapolatedStart(u, x, t, *residual);
+  const bool extrapolated = plainStart >= 0;
+  const Prediction prediction = extrapolated ? Prediction{} : predict(u, x, sr, report);
+  if (prediction.done) problem_.updateGeometry(x, t);
   // The step's reference residual, and the statuses the fixed points start from: a predicted
-  // step has its reference already, and without contact nothing else reads this assembly.
-  double reference = prediction.residual;
+  // step has its reference already, and without contact nothing else reads this assembly. An
+  // extrapolated step keeps the plain start's: the tolerance stays relative to the increment's
+  // load, not to how well the extrapolation guessed.
+  double reference = extrapolated ? plainStart : prediction.residual;
   if (!prediction.done || controls_) {
     problem_.assemble(x, t, residual.get(), false);
-    if (!prediction.done) reference = residual->norm2();
+    if (!prediction.done && !extrapolated) reference = residual->norm2();
   }
   // The fixed points start from the statuses and thresholds of the predictor.
   for (const auto& loop : loops_)
@@ -630,6 +668,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   report.startFrom(start.totals);
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
+  if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
   slowDynamics_.start(u, start.time);
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
   struct StaticAfterRun {
@@ -734,6 +773,9 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       report.message.clear();
       continue;
     }
+    extrapolation_.record(u, *x);
+    sr.increment = extrapolation_.increment();
+    sr.load = extrapolation_.load();
     u.assign(*x);
     slowDynamics_.commit(problem_, u, sr.time);
     problem_.commitState(u, sr.time);

@@ -23,6 +23,7 @@
 #include "algorithms/FixedPointLoop.hpp"
 #include "algorithms/NewtonMethod.hpp"
 #include "algorithms/SlowDynamics.hpp"
+#include "algorithms/StepExtrapolation.hpp"
 #include "algorithms/StepReport.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "formulations/ContactControls.hpp"
@@ -70,6 +71,9 @@ struct StaticSolverOptions {
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";
+  // Where a step after the first converged one starts: "none" (the last converged state) or
+  // "linear" (extrapolated from the last two: StepExtrapolation).
+  std::string extrapolation = "none";
   // Algorithm.
   std::string method = "partial-newton";
   bool geometryInNewton = false, thresholdsInNewton = true, statusesInNewton = true;
@@ -149,6 +153,9 @@ struct RunStart {
   double stepSize = 0;
   bool fromState = false;
   RunTotals totals;  // the counts so far: a killed run continued counts the whole run
+  // The last step's increment and plain start's residual (StepReport::increment, load), when
+  // the checkpoint kept them: the first step extrapolates as the uninterrupted run's did.
+  Teuchos::RCP<const Vector> increment, load;
 };
 
 class StaticSolver {
@@ -198,6 +205,11 @@ class StaticSolver {
     std::string message;
   };
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
+  // Newton/Extrapolation 'linear': x (u with the step's prescribed values on entry, its
+  // geometry paired) becomes the extrapolated start (StepExtrapolation), paired there.
+  // Returns the plain start's ||R||, or -1 where x is unchanged (no extrapolation, no
+  // converged step to extrapolate from, a load held or turned back). `residual` is scratch.
+  double extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);
   // Whether a status fixed point freezes the contact statuses between Newton solves (the fixed
@@ -220,7 +232,8 @@ class StaticSolver {
   CyclingDetector detector_;
   // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
   std::vector<std::unique_ptr<FixedPointLoop>> loops_;
-  SlowDynamics slowDynamics_;  // the regularizing inertia and its history of converged states
+  StepExtrapolation extrapolation_;  // the last converged step, for Newton/Extrapolation
+  SlowDynamics slowDynamics_;        // the regularizing inertia and its history of converged states
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;

@@ -2,6 +2,9 @@
 // What one attempt at a load step took: StaticSolver fills it, its loops add their counts
 // (FixedPointLoop::recordUpdate), and for a converged step the outputs (steps.csv) read it.
 #include "algorithms/CyclingDetector.hpp"
+#include "base/LinearAlgebra.hpp"
+
+#include <Teuchos_RCP.hpp>
 
 #include <array>
 
@@ -40,6 +43,9 @@ struct StepReport {
   double residual = 0;
   CyclingCounts cycling{};
   PhaseSeconds seconds;
+  // The step's increment and its plain start's residual (Newton/Extrapolation), for a
+  // checkpoint; null when the run does not extrapolate.
+  Teuchos::RCP<const Vector> increment, load;
 };
 
 }  // namespace contactlab

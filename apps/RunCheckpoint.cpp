@@ -135,8 +135,17 @@ std::string sceneHash(const Teuchos::ParameterList& scene) {
 }
 
 void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const Problem& problem,
-                     ContactProblem* contact, const Vector& x) {
-  // Collective gathers first; then rank 0 writes, and every rank learns whether it could.
+                     ContactProblem* contact, const Vector& x, const LastStep& last) {
+  // Collective gathers first; then rank 0 writes, and every rank learns whether it could. The
+  // last step's vectors before the history, whose gather leaves x in the surface state.
+  const bool hasLast = !last.increment.is_null() && !last.load.is_null();
+  std::array<std::vector<double>, 4> lastStep;  // increment, load: displacements, unknowns
+  if (hasLast) {
+    lastStep[0] = problem.gatherDisplacements(*last.increment);
+    lastStep[1] = contact ? contact->pointUnknowns(*last.increment) : std::vector<double>{};
+    lastStep[2] = problem.gatherDisplacements(*last.load);
+    lastStep[3] = contact ? contact->pointUnknowns(*last.load) : std::vector<double>{};
+  }
   const std::vector<double> displacements = problem.gatherDisplacements(x);
   const ElementStates elements = problem.gatherElementStates();
   ContactHistory history;
@@ -187,6 +196,13 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
       file.writeDoubles("contact/slip", history.slip, 3, "length (the mesh's unit)");
       file.writeIntegers("contact/facet", history.facet);
     }
+    if (hasLast) {
+      file.writeDoubles("last_step/increment/displacement", lastStep[0], mesh.dim,
+                        "length (the mesh's unit)");
+      file.writeDoubles("last_step/increment/unknowns", lastStep[1]);
+      file.writeDoubles("last_step/load/displacement", lastStep[2], mesh.dim, "force");
+      file.writeDoubles("last_step/load/unknowns", lastStep[3]);
+    }
     file.commit();
   });
 }
@@ -196,7 +212,7 @@ CheckpointInfo readCheckpointInfo(const std::string& path) {
 }
 
 CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, ContactProblem* contact,
-                                 Vector& x, bool continueTime) {
+                                 Vector& x, bool continueTime, LastStep* last) {
   const Mesh& mesh = *problem.model().mesh;
   const Comm& comm = *problem.dofs().comm();
   // Reading and checking: every rank reads the same file, and agrees on any failure.
@@ -204,9 +220,18 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
   std::vector<double> displacements;
   ElementStates elements;
   ContactHistory history;
+  std::array<std::vector<double>, 4> lastStep;  // as writeCheckpoint's
+  bool hasLast = false;
   collectively(comm, [&] {
     const Hdf5Reader file(path);
     info = readInfo(file);
+    hasLast = last != nullptr && file.hasDataset("last_step/increment/displacement");
+    if (hasLast) {
+      lastStep[0] = file.doubles("last_step/increment/displacement");
+      lastStep[1] = file.doubles("last_step/increment/unknowns");
+      lastStep[2] = file.doubles("last_step/load/displacement");
+      lastStep[3] = file.doubles("last_step/load/unknowns");
+    }
     if (file.integerAttribute("dim") != mesh.dim)
       throw InputError("the checkpoint's mesh is " + std::to_string(file.integerAttribute("dim")) +
                        "D, this scene's " + std::to_string(mesh.dim) + "D");
@@ -238,6 +263,15 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
   problem.scatterDisplacements(displacements, x);
   problem.setElementStates(elements);
   if (contact) contact->restoreHistory(history, x, continueTime ? info.time : 0.0);
+  if (last) *last = {};
+  if (hasLast) {
+    for (int v = 0; v < 2; ++v) {
+      Teuchos::RCP<Vector> vector = Teuchos::rcp(new Vector(x.getMap()));
+      problem.scatterDisplacements(lastStep[2 * v], *vector);
+      if (contact) contact->setPointUnknowns(lastStep[2 * v + 1], *vector);
+      (v == 0 ? last->increment : last->load) = vector;
+    }
+  }
   return info;
 }
 

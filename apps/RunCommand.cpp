@@ -234,15 +234,20 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       const bool continueTime = from.restart || sm.initialStateContinuesTime;
       const std::string what = from.restart ? "--restart " + options.restartDirectory
                                             : sm.scene.path + ": Initial State/From";
+      LastStep last;
       try {
-        from.info = restoreCheckpoint(from.checkpoint, *problem, contact.get(), *x, continueTime);
+        from.info =
+            restoreCheckpoint(from.checkpoint, *problem, contact.get(), *x, continueTime, &last);
       } catch (const InputError& e) {
         throw InputError(what + ": " + from.checkpoint + ": " + e.what());
       }
       from.start.fromState = true;
       if (continueTime) {
+        // The same time line as the run that wrote it: its next step starts as it would have.
         from.start.time = from.info.time;
         from.start.step = from.info.step;
+        from.start.increment = last.increment;
+        from.start.load = last.load;
         if (from.restart) {  // the same run: its cut step size and its counts go on
           from.start.stepSize = from.info.stepSize;
           from.start.totals = from.info.totals;
@@ -397,7 +402,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     checkpoint.totals = s.run;
     const bool last = s.time >= sm.solverOptions.endTime;
     if (sm.checkpointEvery > 0 && (s.step % sm.checkpointEvery == 0 || last))
-      writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state);
+      writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state,
+                      {s.increment, s.load});
     killAfterStepForTests(s.step, *comm);
   };
   auto onIteration = [&](const StaticSolver::IterateProgress& p) {

@@ -101,6 +101,11 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // displacements must be set already) and every point's history. Throws InputError, the same
   // on every rank, when the checkpoint's points are not this problem's.
   void restoreHistory(const ContactHistory& history, Vector& x, double t);
+  // Any vector on x's map (a step's increment): its point unknowns in the order of
+  // ContactHistory::unknowns, the same on every rank (collective; the surface state then holds
+  // v until the next evaluation imports x again), and back into v's owned entries.
+  std::vector<double> pointUnknowns(const Vector& v);
+  void setPointUnknowns(const std::vector<double>& unknowns, Vector& v) const;
 
   // The displacement part of x on the solid's owned map.
   Teuchos::RCP<Vector> displacement(const Vector& x) const;

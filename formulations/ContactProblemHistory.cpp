@@ -7,17 +7,42 @@
 
 namespace contactlab {
 
-ContactHistory ContactProblem::convergedHistory(const Vector& x) {
-  state_->import(x);  // every multiplier on every rank
+std::vector<double> ContactProblem::pointUnknowns(const Vector& v) {
+  state_->import(v);  // every multiplier on every rank
   const auto values = state_->values();
+  std::vector<double> unknowns;
+  for (const ContactPoint& pt : points_)
+    for (int j = 0; pt.multiplier >= 0 && j < pt.unknowns; ++j)
+      unknowns.push_back(values[state_->multiplierPosition(pt.multiplier + j)]);
+  return unknowns;
+}
+
+void ContactProblem::setPointUnknowns(const std::vector<double>& unknowns, Vector& v) const {
+  auto values = v.getDataNonConst(0);
+  std::size_t k = 0;
+  for (const ContactPoint& pt : points_)
+    for (int j = 0; pt.multiplier >= 0 && j < pt.unknowns; ++j, ++k) {
+      if (k >= unknowns.size())
+        throw InputError("the checkpoint has " + std::to_string(unknowns.size()) +
+                         " contact point unknowns, this scene's contact zones more");
+      const LO lid = map_->getLocalElement(pt.multiplier + j);
+      if (lid != Teuchos::OrdinalTraits<LO>::invalid()) values[lid] = unknowns[k];
+    }
+  if (k != unknowns.size())
+    throw InputError("the checkpoint has " + std::to_string(unknowns.size()) +
+                     " contact point unknowns, this scene's contact zones " + std::to_string(k));
+}
+
+ContactHistory ContactProblem::convergedHistory(const Vector& x) {
   ContactHistory h;
+  h.unknowns = pointUnknowns(x);
   h.unknownOffsets.push_back(0);
+  std::int64_t offset = 0;
   for (const ContactPoint& pt : points_) {
     h.zone.push_back(pt.zone);
     h.node.push_back(pt.node);
-    for (int j = 0; pt.multiplier >= 0 && j < pt.unknowns; ++j)
-      h.unknowns.push_back(values[state_->multiplierPosition(pt.multiplier + j)]);
-    h.unknownOffsets.push_back(static_cast<std::int64_t>(h.unknowns.size()));
+    offset += pt.multiplier >= 0 ? pt.unknowns : 0;
+    h.unknownOffsets.push_back(offset);
     h.resistance.insert(h.resistance.end(), pt.resistanceOld.begin(), pt.resistanceOld.end());
     h.slip.insert(h.slip.end(), pt.slipTotal.begin(), pt.slipTotal.end());
     h.facet.push_back(pt.paired ? pt.facet : -1);
@@ -42,14 +67,9 @@ void ContactProblem::restoreHistory(const ContactHistory& h, Vector& x, double t
                        std::to_string(h.zone[i]) + ", node index " + std::to_string(h.node[i]) +
                        ") is not this scene's (another contact zone or formulation)");
   }
-  auto values = x.getDataNonConst(0);
+  setPointUnknowns(h.unknowns, x);
   for (std::size_t i = 0; i < n; ++i) {
     ContactPoint& pt = points_[i];
-    for (int j = 0; pt.multiplier >= 0 && j < pt.unknowns; ++j) {
-      const LO lid = map_->getLocalElement(pt.multiplier + j);
-      if (lid != Teuchos::OrdinalTraits<LO>::invalid())
-        values[lid] = h.unknowns[h.unknownOffsets[i] + j];
-    }
     for (int c = 0; c < 3; ++c) {
       pt.resistanceOld[c] = h.resistance[3 * i + c];
       pt.slipTotal[c] = h.slip[3 * i + c];
@@ -62,7 +82,6 @@ void ContactProblem::restoreHistory(const ContactHistory& h, Vector& x, double t
   // The graph was built for the pairing made before this (at rest): the next pairing keeps the
   // restored facets, which it would not see as a change, so the graph is rebuilt then.
   layoutChanged_ = true;
-  values = Teuchos::null;
   state_->import(x);
   state_->commit();
   kernel_->setConvergedTime(t);

@@ -13,7 +13,7 @@ shorter End Time does not rescale them, and the steps are 1/8, exact in binary, 
 last time is the long run's.
 
 usage: check_restart.py CONTACTLAB CASE WORKDIR [--ranks N]
-       (CASE: friction | friction-penalty | plasticity)"""
+       (CASE: friction | friction-penalty | friction-fixed-point | plasticity)"""
 import argparse, csv, json, os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -91,7 +91,14 @@ FRICTION_PENALTY = FRICTION.replace("Name: restart-friction", "Name: restart-fri
         augmented-lagrangian: {Normal Augmentation: 100.0, Tangential Augmentation: 1000.0}""",
     """        Type: penalty
         penalty: {Normal Penalty: 1000.0, Tangential Penalty: 1000.0}""")
-SCENES = {"friction": FRICTION, "friction-penalty": FRICTION_PENALTY, "plasticity": PLASTICITY}
+# The fixed point extrapolates each step's start from the last step (Newton/Extrapolation
+# 'automatic'), as does the plastic strip without contact: the checkpoint's last_step carries
+# that step, multipliers included, so that the continued run's next step starts the same.
+FRICTION_FIXED_POINT = FRICTION.replace(
+    "Name: restart-friction", "Name: restart-friction-fixed-point").replace(
+    "  Load Steps:", "  Algorithm: {Method: fixed-point}\n  Load Steps:")
+SCENES = {"friction": FRICTION, "friction-penalty": FRICTION_PENALTY,
+          "friction-fixed-point": FRICTION_FIXED_POINT, "plasticity": PLASTICITY}
 
 # Fields of the last frame compared (those the frame has).
 FIELDS = ["displacement", "contact_pressure", "tangential_traction", "slip", "stress",

@@ -51,9 +51,11 @@ for name, mu, aster, tolerance, aster_dx in CASES:
         arc_sum = reactions["symmetry-y"][1]
         plate = summary["contact"]["normal_force"]
         line = reactions["symmetry-y"][1] + reactions["d"][1]
+        # To Newton's tolerance, 1e-8 of each step's starting residual (the fixed point stops
+        # nearer it than Newton's quadratic last steps: 1.9e-9 of the force at t = 2).
         check(f"{name} t = {t}: {summary['iterations']['newton']} Newton iterations; the plate's "
               f"force {plate:.6g} N balances the line y = 0 ({line:.6g} N)",
-              abs(plate - line) <= 1e-9 * plate)
+              abs(plate - line) <= 1e-8 * plate)
         check(f"{name} t = {t}: code_aster's sum along the arc {arc_sum:.10g} N, code_aster's "
               f"{aster[t]:.10g} (relative {arc_sum / aster[t] - 1:.1e})",
               abs(arc_sum / aster[t] - 1) <= AGREEMENT)
