@@ -1,21 +1,14 @@
 #include "algorithms/PlainNewton.hpp"
 
 #include "base/Elapsed.hpp"
+#include "base/NumberText.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace contactlab {
-namespace {
-
-std::string sci(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3e", v);
-  return buffer;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 bool contactSettled(const ContactControls* controls, double target, int iteration) {
   if (controls == nullptr) return true;
@@ -96,29 +89,30 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     if (newtonConverged(norm, request, controls_, it)) return out;
     if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
       out.failure = "diverged";
-      out.message = "Newton diverged: ||R|| grew to " + sci(norm);
+      out.message = "Newton diverged: ||R|| grew to " + scientificText(norm);
       return out;
     }
     if (request.stallIterations > 0 && farIterates >= request.stallIterations) {
       out.failure = "diverged";
       out.message = "Newton stalled: " + std::to_string(farIterates) + " iterations with ||R|| > " +
-                    sci(kStallFactor * start) + " (" + sci(kStallFactor) + " x its start; now " +
-                    sci(norm) + ")";
+                    scientificText(kStallFactor * start) + " (" + scientificText(kStallFactor) +
+                    " x its start; now " + scientificText(norm) + ")";
       return out;
     }
     if (request.stallIterations > 0 && newtonCycles(norms)) {
       out.failure = "diverged";
-      out.message = "Newton cycles: ||R|| alternates " + sci(norms[norms.size() - 2]) + " and " +
-                    sci(norm) + " (the same two iterates)";
+      out.message = "Newton cycles: ||R|| alternates " + scientificText(norms[norms.size() - 2]) +
+                    " and " + scientificText(norm) + " (the same two iterates)";
       return out;
     }
     if (out.iterations == request.maxIterations) {
       out.failure = "max-iterations";
       out.message = "Newton did not converge in " + std::to_string(out.iterations) +
-                    " iterations (||R|| = " + sci(norm) + ", target " + sci(request.target);
+                    " iterations (||R|| = " + scientificText(norm) + ", target " +
+                    scientificText(request.target);
       if (controls_ != nullptr && norm <= request.target)
-        out.message +=
-            "; the contact equations' residual as forces " + sci(controls_->constraintResidual());
+        out.message += "; the contact equations' residual as forces " +
+                       scientificText(controls_->constraintResidual());
       out.message += ")";
       return out;
     }

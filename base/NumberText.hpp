@@ -14,4 +14,11 @@ inline std::string numberText(double value, int significantDigits = 6) {
   return buffer;
 }
 
+// A residual or a size in a message: printf's %.3e (1.234e-05), the solver's progress format.
+inline std::string scientificText(double value) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.3e", value);
+  return buffer;
+}
+
 }  // namespace contactlab
