@@ -133,9 +133,9 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   // extrapolated step keeps the plain start's: the tolerance stays relative to the increment's
   // load, not to how well the extrapolation guessed.
   double reference = extrapolated ? plainStart : prediction.residual;
-  if (!prediction.done || controls_) {
+  if (!extrapolated && (!prediction.done || controls_)) {  // extrapolated: assembled at x
     problem_.assemble(x, t, residual.get(), false);
-    if (!prediction.done && !extrapolated) reference = residual->norm2();
+    if (!prediction.done) reference = residual->norm2();
   }
   // The fixed points start from the statuses and thresholds of the predictor.
   for (const auto& loop : loops_)

@@ -206,9 +206,10 @@ class StaticSolver {
   };
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
   // Newton/Extrapolation 'linear': x (u with the step's prescribed values on entry, its
-  // geometry paired) becomes the extrapolated start (StepExtrapolation), paired there.
-  // Returns the plain start's ||R||, or -1 where x is unchanged (no extrapolation, no
-  // converged step to extrapolate from, a load held or turned back). `residual` is scratch.
+  // geometry paired) becomes the extrapolated start (StepExtrapolation), paired and assembled
+  // there (`residual` holds R(x)). Returns the plain start's ||R||, or -1 where x is unchanged
+  // (no extrapolation, no converged step to extrapolate from, a load held or turned back, a
+  // guess that cannot be evaluated; `residual` is then scratch).
   double extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);

@@ -96,9 +96,19 @@ double StaticSolver::extrapolatedStart(const Vector& u, Vector& x, double t, Vec
   const double a = extrapolation_.factor();
   if (a == 0) return -1;
   const double plain = residual.norm2();
+  auto plainStart = problem_.createVector();
+  plainStart->assign(x);
   extrapolation_.extrapolate(u, a, x);
   problem_.applyDirichlet(t, x);  // the prescribed values at t, not extrapolated
   problem_.updateGeometry(x, t);
+  problem_.assemble(x, t, &residual, false);
+  // A guess the system cannot evaluate (an element turned inside out, a contact facet without
+  // its basis) is no start: the plain one is taken instead.
+  if (!problem_.assemblyFailure().code.empty() || !std::isfinite(residual.norm2())) {
+    x.assign(*plainStart);
+    problem_.updateGeometry(x, t);
+    return -1;
+  }
   return plain;
 }
 

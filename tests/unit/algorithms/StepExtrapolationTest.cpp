@@ -11,6 +11,7 @@
 #include "algorithms/StepExtrapolation.hpp"
 #include "linear/Klu2Solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <vector>
@@ -111,6 +112,54 @@ TEST(StepExtrapolation, StartsLoadDrivenStepsNearerTheirRootsAndNotPastAPeak) {
     EXPECT_LT(std::abs(linear.starts[k] - linear.roots[k]),
               0.6 * std::abs(plain.starts[k] - plain.roots[k]))
         << "step " << k + 1;
+}
+
+// x^3 + x = t^3 + t over t = 1, 2, 3 (roots x = t): the third step's load increment (20) is 2.5
+// times the second's (8), so its start is capped at a = 2: x = 2 + 2 (2 - 1) = 4, where this
+// system cannot be evaluated (as an element turned inside out; 3.7 < x < 4.5). The step starts
+// from u_n = 2 instead, and Newton from there stays below 3.7 (3.54, 3.08, ...).
+class CubeWithAHole : public test::ScalarSystem {
+ public:
+  CubeWithAHole()
+      : ScalarSystem([](double x, double t) { return x * x * x + x - t * t * t - t; },
+                     [](double x, double) { return 3 * x * x + 1; }, 1.0) {}
+  void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override {
+    const double value = x.getData(0)[0];
+    evaluated.push_back(value);
+    failed_ = value > 3.7 && value < 4.5;
+    ScalarSystem::assemble(x, t, residual, withTangent);
+  }
+  AssemblyFailure assemblyFailure() const override {
+    AssemblyFailure f;
+    if (failed_) f.code = "inverted-element";
+    return f;
+  }
+  std::vector<double> evaluated;
+
+ private:
+  bool failed_ = false;
+};
+
+TEST(StepExtrapolation, AGuessTheSystemCannotEvaluateFallsBackToThePlainStart) {
+  CubeWithAHole system;
+  Klu2Solver solver({}, Tpetra::getDefaultComm());
+  PlainNewton newton(system, solver, nullptr);
+  StaticSolverOptions options;
+  options.steps = 3;
+  options.endTime = 3;
+  options.extrapolation = "linear";
+  StaticSolver stepper(system, nullptr, newton, options, &solver);
+  auto u = system.createVector();
+  std::vector<double> roots;
+  const RunReport report = stepper.run(
+      *u, [&](const StepReport&, const Vector& x) { roots.push_back(x.getData(0)[0]); });
+  ASSERT_TRUE(report.converged) << report.message;
+  EXPECT_EQ(report.cuts, 0);
+  ASSERT_EQ(roots.size(), 3u);
+  EXPECT_NEAR(roots[2], 3.0, 1e-10);
+  // The guess (4 up to the roots' tolerance) was tried.
+  EXPECT_TRUE(std::any_of(system.evaluated.begin(), system.evaluated.end(),
+                          [](double x) { return std::abs(x - 4.0) < 1e-6; }));
 }
 
 }  // namespace
