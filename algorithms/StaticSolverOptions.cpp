@@ -107,7 +107,9 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "solid's own step without contact, solved by CG with MueLu to 1e-3, as its first "
          "iterate, where Newton would factorize a matrix it discards at the next iteration "
          "(counted as an iteration; the geometry stays paired at the step's start). Measured "
-         "in doc/algorithms.md. Steps driven by loads alone start from u_n with 'tangent'",
+         "in doc/algorithms.md. Steps driven by loads alone start from u_n with 'tangent'. "
+         "A step that Newton/Extrapolation starts from the last step's extrapolation takes "
+         "no predictor",
          choices({"automatic", "tangent", "solid-alone", "none"}));
   p->set("Extrapolation", "automatic",
          "Start of a step after the first converged one: 'linear' moves the last converged "
