@@ -5,10 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace contactlab {
-namespace {}  // namespace
 
 bool contactSettled(const ContactControls* controls, double target, int iteration) {
   if (controls == nullptr) return true;

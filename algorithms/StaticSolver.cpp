@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
-#include <cstdio>
 #include <utility>
 
 namespace contactlab {
@@ -124,16 +123,17 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   slowDynamics_.beginStep(problem_, t);
   problem_.updateGeometry(x, t);
   auto residual = problem_.createVector();
-  const double plainStart = extrapolatedStart(u, x, t, *residual);
-  const bool extrapolated = plainStart >= 0;
-  const Prediction prediction = extrapolated ? Prediction{} : predict(u, x, sr, report);
+  const ExtrapolatedStart start = extrapolatedStart(u, x, t, *residual);
+  const Prediction prediction = start.moved ? Prediction{} : predict(u, x, sr, report);
   if (prediction.done) problem_.updateGeometry(x, t);
   // The step's reference residual, and the statuses the fixed points start from: a predicted
   // step has its reference already, and without contact nothing else reads this assembly. An
   // extrapolated step keeps the plain start's: the tolerance stays relative to the increment's
-  // load, not to how well the extrapolation guessed.
-  double reference = extrapolated ? plainStart : prediction.residual;
-  if (!extrapolated && (!prediction.done || controls_)) {  // extrapolated: assembled at x
+  // load, not to how well the extrapolation guessed. Where the extrapolation assembled at x
+  // and no predictor moved it since, that assembly stands.
+  double reference = prediction.done ? prediction.residual : start.plainResidual;
+  const bool assembledAtX = start.plainResidual >= 0 && !prediction.done;
+  if (!assembledAtX && (!prediction.done || controls_)) {
     problem_.assemble(x, t, residual.get(), false);
     if (!prediction.done) reference = residual->norm2();
   }

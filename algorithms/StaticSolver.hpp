@@ -71,8 +71,10 @@ struct StaticSolverOptions {
   // Whether a step whose prescribed values move starts from the tangent predictor
   // (doc/algorithms.md): "tangent", "solid-alone", "none", or "automatic".
   std::string predictor = "automatic";
-  // Where a step after the first converged one starts: "none" (the last converged state) or
-  // "linear" (extrapolated from the last two: StepExtrapolation).
+  // Where a step after the first converged one starts: "none" (the last converged state),
+  // "linear" (extrapolated from the last two: StepExtrapolation) or "automatic" (linear without
+  // contact and for the status fixed point). A scene's Newton/Extrapolation defaults to
+  // "automatic"; options built in code keep "none" unless they ask.
   std::string extrapolation = "none";
   // Algorithm.
   std::string method = "partial-newton";
@@ -205,12 +207,16 @@ class StaticSolver {
     std::string message;
   };
   Prediction predict(const Vector& u, Vector& x, StepReport& sr, RunReport& report);
-  // Newton/Extrapolation 'linear': x (u with the step's prescribed values on entry, its
-  // geometry paired) becomes the extrapolated start (StepExtrapolation), paired and assembled
-  // there (`residual` holds R(x)). Returns the plain start's ||R||, or -1 where x is unchanged
-  // (no extrapolation, no converged step to extrapolate from, a load held or turned back, a
-  // guess that cannot be evaluated; `residual` is then scratch).
-  double extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual);
+  // Newton/Extrapolation: x (u with the step's prescribed values on entry, its geometry
+  // paired) becomes the extrapolated start (StepExtrapolation), paired there. `moved`: x is the
+  // guess; else x is unchanged (no extrapolation, no converged step to extrapolate from, a load
+  // held or turned back, a guess that cannot be evaluated). plainResidual >= 0: the plain
+  // start's ||R||, and `residual` holds R at x as it is now; -1: `residual` is scratch.
+  struct ExtrapolatedStart {
+    bool moved = false;
+    double plainResidual = -1;
+  };
+  ExtrapolatedStart extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual);
   // The solid-alone predictor's step at x (SolidAlonePredictor): whether x moved.
   bool stepSolidAlone(Vector& x, double t, StepReport& sr);
   // Whether a status fixed point freezes the contact statuses between Newton solves (the fixed

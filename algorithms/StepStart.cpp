@@ -82,20 +82,21 @@ StaticSolver::Prediction StaticSolver::predict(const Vector& u, Vector& x, StepR
   return p;
 }
 
-double StaticSolver::extrapolatedStart(const Vector& u, Vector& x, double t, Vector& residual) {
+StaticSolver::ExtrapolatedStart StaticSolver::extrapolatedStart(const Vector& u, Vector& x,
+                                                                double t, Vector& residual) {
   const bool wanted =
       options_.extrapolation == "linear" || (options_.extrapolation == "automatic" &&
                                              (controls_ == nullptr || statusLoopOutsideNewton()));
-  if (!wanted) return -1;
+  if (!wanted) return {};
   problem_.assemble(x, t, &residual, false);
   if (!problem_.assemblyFailure().code.empty()) {
     extrapolation_.skipStep();
-    return -1;
+    return {};
   }
   extrapolation_.beginStep(residual);
-  const double a = extrapolation_.factor();
-  if (a == 0) return -1;
   const double plain = residual.norm2();
+  const double a = extrapolation_.factor();
+  if (a == 0) return {false, plain};  // residual holds R at the plain start, x
   auto plainStart = problem_.createVector();
   plainStart->assign(x);
   extrapolation_.extrapolate(u, a, x);
@@ -107,9 +108,9 @@ double StaticSolver::extrapolatedStart(const Vector& u, Vector& x, double t, Vec
   if (!problem_.assemblyFailure().code.empty() || !std::isfinite(residual.norm2())) {
     x.assign(*plainStart);
     problem_.updateGeometry(x, t);
-    return -1;
+    return {};
   }
-  return plain;
+  return {true, plain};
 }
 
 bool StaticSolver::stepSolidAlone(Vector& x, double t, StepReport& sr) {

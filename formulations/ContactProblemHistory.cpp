@@ -18,19 +18,20 @@ std::vector<double> ContactProblem::pointUnknowns(const Vector& v) {
 }
 
 void ContactProblem::setPointUnknowns(const std::vector<double>& unknowns, Vector& v) const {
+  std::size_t expected = 0;
+  for (const ContactPoint& pt : points_)
+    expected += pt.multiplier >= 0 ? pt.unknowns : 0;
+  if (unknowns.size() != expected)
+    throw InputError("the checkpoint has " + std::to_string(unknowns.size()) +
+                     " contact point unknowns, this scene's contact zones " +
+                     std::to_string(expected));
   auto values = v.getDataNonConst(0);
   std::size_t k = 0;
   for (const ContactPoint& pt : points_)
     for (int j = 0; pt.multiplier >= 0 && j < pt.unknowns; ++j, ++k) {
-      if (k >= unknowns.size())
-        throw InputError("the checkpoint has " + std::to_string(unknowns.size()) +
-                         " contact point unknowns, this scene's contact zones more");
       const LO lid = map_->getLocalElement(pt.multiplier + j);
       if (lid != Teuchos::OrdinalTraits<LO>::invalid()) values[lid] = unknowns[k];
     }
-  if (k != unknowns.size())
-    throw InputError("the checkpoint has " + std::to_string(unknowns.size()) +
-                     " contact point unknowns, this scene's contact zones " + std::to_string(k));
 }
 
 ContactHistory ContactProblem::convergedHistory(const Vector& x) {
