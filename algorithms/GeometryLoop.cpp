@@ -20,6 +20,19 @@ FixedPointLoop::MovedStateTest GeometryLoop::testMovedState(const Vector& x, dou
   return test;
 }
 
+bool GeometryLoop::diverged() const {
+  // Converging, the residual at the updated geometry falls by a factor of 5 to 10 per update.
+  // Diverging: it ends above the step's first one and 100 times above the lowest it reached (the
+  // NAFEMS roller under its force, frictionless node-to-segment: 4e2, 2e1, 9e1, 1e3, 4e4, then
+  // 1e6 to 1e7 against 5e3 at the step's start). The frozen normal is the master's, which
+  // rotates as the master deforms; the consistent tangent (the geometry in Newton with its full
+  // terms), the stiffer body as master, or mortar converged there.
+  if (relativeResiduals_.empty()) return false;
+  const double lowest = *std::min_element(relativeResiduals_.begin(), relativeResiduals_.end());
+  const double last = relativeResiduals_.back();
+  return last > 1.0 && last > 100.0 * lowest;
+}
+
 std::string GeometryLoop::failureMessage() const {
   std::string message = FixedPointLoop::failureMessage();
   // Converging, the residual at the updated geometry falls by a factor of 5 to 10 per update
@@ -28,24 +41,18 @@ std::string GeometryLoop::failureMessage() const {
   // appear at one update and vanish at the next, hold it at 1.3e-6 to 2.3e-6.
   constexpr std::size_t kWindow = 4;
   constexpr double kStagnation = 4.0;
-  // Diverging instead: the residual at the updated geometry ends above the step's first one and
-  // 100 times above the lowest it reached (the NAFEMS roller under its force, frictionless
-  // node-to-segment: 4e2, 2e1, 9e1, 1e3, 4e4, then 1e6 to 1e7 against 5e3 at the step's start).
-  // The frozen normal is the master's, which rotates as the master deforms; the consistent
-  // tangent (the geometry in Newton with its full terms), the stiffer body as master, or mortar
-  // converged there.
-  if (!relativeResiduals_.empty()) {
+  if (diverged()) {
+    // Not the cap's sentence: StaticSolver gives a diverging fixed point up before its cap when
+    // the geometry retry takes it over.
     const double lowest = *std::min_element(relativeResiduals_.begin(), relativeResiduals_.end());
-    const double last = relativeResiduals_.back();
-    if (last > 1.0 && last > 100.0 * lowest) {
-      std::ostringstream hint;
-      hint << std::setprecision(2) << "; the geometric fixed point diverges: the residual at the "
-           << "updated geometry rose from " << lowest << " to " << last
-           << " of the step's first residual (a master whose normal turns as it deforms: try "
-              "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full, the stiffer "
-              "body as the Master, or Discretization: mortar)";
-      return message + hint.str();
-    }
+    std::ostringstream text;
+    text << std::setprecision(2) << "the geometric fixed point diverges: after " << updates()
+         << " updates the residual at the updated geometry rose from " << lowest << " to "
+         << relativeResiduals_.back()
+         << " of the step's first residual (a master whose normal turns as it deforms: "
+            "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full, the stiffer body "
+            "as the Master, or Discretization: mortar converge there)";
+    return text.str();
   }
   if (relativeResiduals_.size() < kWindow) return message;
   const auto first = relativeResiduals_.end() - kWindow;

@@ -34,6 +34,9 @@ class GeometryLoop : public FixedPointLoop {
   // At the cap, says whether the residual at the updated geometry had stopped falling, and
   // which Geometry Tolerance would have accepted it.
   std::string failureMessage() const override;
+  // The residual at the updated geometry ended above the step's first one and 100 times above
+  // the lowest it reached (StaticSolver's geometry retry then puts the geometry in Newton).
+  bool diverged() const override;
 
  protected:
   void release() override { relativeResiduals_.clear(); }

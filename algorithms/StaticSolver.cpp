@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <optional>
 #include <utility>
 
 namespace contactlab {
@@ -35,12 +36,36 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
       solver_(solver),
       detector_(options_.grazingTolerance),
       loops_(composeLoops(options_, problem, controls)),
-      slowDynamics_(options_.slowDynamics) {
+      slowDynamics_(options_.slowDynamics),
+      geometryInNewton_(options_.geometryInNewton) {
   slowDynamics_.requireMass(problem_);
   if (options_.lineSearchRetry == "never") retry_ = nullptr;
   if (controls_)
     controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
                                                            : GeometricTerms::none);
+}
+
+StaticSolver::GeometryInNewton::GeometryInNewton(StaticSolver& solver) : solver_(solver) {
+  StaticSolverOptions options = solver.options_;
+  options.geometryInNewton = true;
+  if (solver.geometryInNewtonLoops_.empty())
+    solver.geometryInNewtonLoops_ = composeLoops(options, solver.problem_, solver.controls_);
+  std::swap(solver.loops_, solver.geometryInNewtonLoops_);
+  solver.geometryInNewton_ = true;
+  solver.controls_->setGeometricTerms(GeometricTerms::full);
+  // The full terms differentiate a node-to-segment normal along one side only: a solver that
+  // took the tangent as symmetric takes any matrix from now on (MUMPS: LU).
+  if (solver.solver_) solver.solver_->takeAnyMatrix();
+}
+
+StaticSolver::GeometryInNewton::~GeometryInNewton() {
+  std::swap(solver_.loops_, solver_.geometryInNewtonLoops_);
+  solver_.geometryInNewton_ = false;
+  solver_.controls_->setGeometricTerms(GeometricTerms::none);
+}
+
+bool StaticSolver::geometryRetryApplies() const {
+  return options_.geometryRetry && controls_ && !geometryInNewton_;
 }
 
 bool StaticSolver::statusLoopOutsideNewton() const {
@@ -72,7 +97,7 @@ int StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRepo
     const bool force =
         options_.cyclingTreatment == "forced" ||
         (options_.cyclingTreatment == "combined" &&
-         (frictionCycle || options_.geometryInNewton || statusLoopOutsideNewton())) ||
+         (frictionCycle || geometryInNewton_ || statusLoopOutsideNewton())) ||
         (options_.cyclingTreatment == "automatic" && !controls_->scalingChangesForces(e.point));
     if (force) {
       forcedPoints_.push_back(e.point);
@@ -169,6 +194,12 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     return false;
   };
   if (!prediction.failure.empty()) return fail(prediction.failure, prediction.message);
+  // A converged state whose contact lost slave nodes through its master is no solution
+  // (ContactControls::passedThrough): the step fails, and its retries or a cut may pass.
+  const auto accepted = [&]() {
+    const std::string through = controls_ ? controls_->passedThrough(x) : std::string();
+    return through.empty() ? true : fail("contact-passed-through", through);
+  };
   // The solid-alone predictor where the tangent one does not start a contact model's step.
   const bool solidAlone = !prediction.done && controls_ && options_.statusesInNewton &&
                           (options_.predictor == "solid-alone" ||
@@ -202,7 +233,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.time = t;
   request.target = std::max(options_.absoluteTolerance, options_.relativeTolerance * reference);
   request.maxIterations = &newton == retry_ ? options_.retryMaxIterations : options_.maxIterations;
-  request.geometryInNewton = options_.geometryInNewton;
+  request.geometryInNewton = geometryInNewton_;
   request.maxUpdate = maxUpdate;
   request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;
   for (;;) {
@@ -230,7 +261,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     if (k == loops_.size()) {
       // A forced state that violates the model's law is not a solution: Newton goes on from
       // it with the law restored (near a solution, it converges in a few iterations).
-      if (forcedStateHolds(x, t, request.target, *residual)) return true;
+      if (forcedStateHolds(x, t, request.target, *residual)) return accepted();
       continue;
     }
     FixedPointLoop& moved = *loops_[k];
@@ -245,8 +276,12 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     if (test.tested) {
       sr.residual = test.residual;
       if (test.residual <= test.target && forcedStateHolds(x, t, test.target, *residual))
-        return true;
+        return accepted();
     }
+    // A fixed point that diverges is given up at once where the geometry retry takes it over:
+    // its remaining updates would climb on (the NAFEMS roller: 25 more, 140 Newton iterations).
+    if (geometryRetryApplies() && moved.diverged())
+      return fail(moved.failure(), moved.failureMessage());
   }
 }
 
@@ -256,10 +291,10 @@ namespace {
 // rejects such a trial point and halves the step, UnevaluableIterate.NoxBacktracking...), which
 // a line search may change; not a singular tangent.
 bool iteratesFailedToConverge(const std::string& failure) {
-  for (const char* name :
-       {"max-iterations", "diverged", "degraded-contact", "statuses-not-converged",
-        "thresholds-not-converged", "geometry-not-converged", "nan-detected",
-        "contact-geometry-failed", "inverted-element", "material-update-failed"})
+  for (const char* name : {"max-iterations", "diverged", "degraded-contact",
+                           "statuses-not-converged", "thresholds-not-converged",
+                           "geometry-not-converged", "nan-detected", "contact-geometry-failed",
+                           "contact-passed-through", "inverted-element", "material-update-failed"})
     if (failure == name) return true;
   return false;
 }
@@ -344,6 +379,20 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
         report.failure = failure;
         return false;
       };
+      // A geometric fixed point that diverged diverges again with a line search or a shorter
+      // step: its frozen normal is the master's, which turns as the master dents (the NAFEMS
+      // roller under its force). The consistent tangent converges there: the step is solved
+      // again with the geometry in Newton and its full terms (doc/algorithms.md "Geometry
+      // retry").
+      // The retries after it, if it fails, keep the geometry in Newton.
+      std::optional<GeometryInNewton> geometryInNewton;
+      if (!ok && geometryRetryApplies() && report.failure == "geometry-not-converged" &&
+          loops_.back()->diverged()) {
+        ++report.geometryRetries;
+        geometryInNewton.emplace(*this);
+        ok = sr.geometryRetry = solveAgain(newton_, 0, "geometry retry",
+                                           "with the geometry in Newton and its full terms");
+      }
       // A contact Newton that failed with full steps (cycling statuses, overshooting iterates)
       // often converges at the same increment when each step must decrease ||R||: the
       // frictional hex27 tube's unloading failed down to the smallest step and converges in 9

@@ -61,6 +61,9 @@ struct StaticSolverOptions {
   // (only when the step cannot be cut any more), "never".
   std::string lineSearchRetry = "every-failure";
   int retryMaxIterations = 40;  // Newton iterations per solve of the line-search retry
+  // A step whose geometric fixed point diverged (FixedPointLoop::diverged) is solved again with
+  // the geometry in Newton and its full terms (the contact controls' GeometricTerms::full).
+  bool geometryRetry = true;
   // The largest displacement a plain Newton update may make when a step whose full steps failed
   // is solved again, as a fraction of the model's size (NonlinearSystem::modelSize); 0: no
   // such retry.
@@ -106,7 +109,9 @@ struct RunReport {
                             // "inverted-element" (the solid cannot be evaluated at an
                             // iterate: see AssemblyFailure), "contact-geometry-failed" (the
                             // contact surfaces of an iterate cannot be paired or integrated: a
-                            // collapsed mortar facet), "degraded-contact" (a forced
+                            // collapsed mortar facet), "contact-passed-through" (slave
+                            // nodes left their master through it: ContactControls::
+                            // passedThrough), "degraded-contact" (a forced
                             // cycling treatment's state violates the contact law and Newton
                             // from it without the treatment failed), "step-too-small",
                             // "interrupted" (SIGINT or SIGTERM)
@@ -118,6 +123,7 @@ struct RunReport {
   int linearSolves = 0;
   int cuts = 0;
   int lineSearchRetries = 0;    // failed steps the line-search Newton solved again (or not)
+  int geometryRetries = 0;      // failed steps solved again with the geometry in Newton
   int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
   int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
   CyclingCounts cycling{};
@@ -125,20 +131,15 @@ struct RunReport {
 
   // The counts as a step's run totals, and the counts a continued run starts from.
   RunTotals totals() const {
-    return {iterations,
-            linearSolves,
-            cuts,
-            lineSearchRetries,
-            limitedUpdates,
-            unevaluableHalvings,
-            statusIterations,
-            thresholdIterations,
-            geometryIterations,
-            cycling};
+    return {iterations,          linearSolves,     cuts,
+            lineSearchRetries,   geometryRetries,  limitedUpdates,
+            unevaluableHalvings, statusIterations, thresholdIterations,
+            geometryIterations,  cycling};
   }
   void startFrom(const RunTotals& t) {
     iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
-    lineSearchRetries = t.lineSearchRetries, limitedUpdates = t.limitedUpdates;
+    lineSearchRetries = t.lineSearchRetries, geometryRetries = t.geometryRetries;
+    limitedUpdates = t.limitedUpdates;
     unevaluableHalvings = t.unevaluableHalvings;
     statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
     geometryIterations = t.geometryIterations, cycling = t.cycling;
@@ -222,12 +223,28 @@ class StaticSolver {
   // Whether a status fixed point freezes the contact statuses between Newton solves (the fixed
   // point preset), where scaling a cycling point's coefficients cannot change the frozen status.
   bool statusLoopOutsideNewton() const;
+  // Whether a diverging geometric fixed point is handed to the geometry retry (Newton/Geometry
+  // Retry, a contact model, the geometry not in Newton yet).
+  bool geometryRetryApplies() const;
   // The number of points whose law the treatment changed (a status forced, coefficients
   // scaled): the Newton method evaluates the iterate again when it is not zero.
   int treatCycling(const std::vector<CyclingEvent>& events, StepReport& sr);
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
   bool forcedStateHolds(const Vector& x, double t, double target, Vector& residual);
+  // While it lives, the steps are solved with the geometry in Newton and its full terms (the
+  // geometry retry): the loops composed so, the controls' geometric terms full, and the linear
+  // solver told that the tangent may not be symmetric.
+  class GeometryInNewton {
+   public:
+    explicit GeometryInNewton(StaticSolver& solver);
+    ~GeometryInNewton();
+    GeometryInNewton(const GeometryInNewton&) = delete;
+    GeometryInNewton& operator=(const GeometryInNewton&) = delete;
+
+   private:
+    StaticSolver& solver_;
+  };
 
   NonlinearSystem& problem_;
   ContactControls* controls_;
@@ -239,8 +256,12 @@ class StaticSolver {
   CyclingDetector detector_;
   // The step's loops, innermost first (composeLoops): statuses, thresholds, geometry.
   std::vector<std::unique_ptr<FixedPointLoop>> loops_;
+  // The same with the geometry in Newton, for the geometry retry (composed at its first use),
+  // and whether the step being solved has the geometry in Newton.
+  std::vector<std::unique_ptr<FixedPointLoop>> geometryInNewtonLoops_;
   StepExtrapolation extrapolation_;  // the last converged step, for Newton/Extrapolation
   SlowDynamics slowDynamics_;        // the regularizing inertia and its history of converged states
+  bool geometryInNewton_;
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;

@@ -73,6 +73,15 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "Iterations. Its halved steps take more iterations than full steps, and the cut it "
          "saves costs the whole step again: with Max Iterations the hex8 tube's retries "
          "stopped at 2e-4 from converging and cut (doc/algorithms.md \"Line search retry\")");
+  p->set("Geometry Retry", true,
+         "A load step whose geometric fixed point diverged (the residual at the updated "
+         "geometry ended above the step's first and 100 times above its lowest: a master whose "
+         "normal turns as it dents, frozen at each update) is solved again from its start with "
+         "the geometry in Newton and its full terms (Algorithm/Geometric Terms: full, the "
+         "consistent tangent; not symmetric on node-to-segment, so MUMPS' Mode automatic turns "
+         "to general for the rest of the run), before the line-search retry, which then keeps "
+         "the geometry in Newton. Not when the geometry is already in Newton "
+         "(doc/algorithms.md \"Geometry retry\")");
   p->set("Max Update", 0.05,
          "A step whose full Newton steps failed through an update that moved a node by more "
          "than this fraction of the model's size (twice the largest distance of a node from the "
@@ -214,6 +223,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.lineSearch = newton.get<std::string>("Line Search");
   o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
   o.retryMaxIterations = newton.get<int>("Line Search Retry Max Iterations");
+  o.geometryRetry = newton.get<bool>("Geometry Retry");
   if (o.retryMaxIterations < 0)
     throw std::invalid_argument(
         "Newton/Line Search Retry Max Iterations must be >= 0 (0: twice Max Iterations)");

@@ -21,6 +21,7 @@ using CyclingCounts = std::array<int, kCyclingKinds>;  // events per CyclingKind
 struct RunTotals {
   int iterations = 0, linearSolves = 0, cuts = 0;
   int lineSearchRetries = 0;    // failed steps solved again by the line-search Newton
+  int geometryRetries = 0;      // failed steps solved again with the geometry in Newton
   int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
   int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
@@ -33,6 +34,7 @@ struct StepReport {
   int cuts = 0;                   // bisections before this step converged
   bool lineSearchRetry = false;   // converged by the line-search retry (Newton/Line Search Retry)
   bool updateLimitRetry = false;  // converged with its updates limited (Newton/Max Update)
+  bool geometryRetry = false;     // converged with the geometry in Newton (Newton/Geometry Retry)
   double longestUpdate = 0;       // the largest displacement a Newton update of the step made
   double nextStepSize = 0;        // the load-time increment the next step will try (a checkpoint's)
   RunTotals run;                  // the run's totals up to this step

@@ -79,9 +79,10 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   run.iterations = static_cast<int>(file.integerAttribute("newton_iterations"));
   run.linearSolves = static_cast<int>(file.integerAttribute("linear_solves"));
   run.cuts = static_cast<int>(file.integerAttribute("cuts"));
-  // Absent from checkpoints written before Newton/Line Search Retry, Newton/Max Update and the
-  // halving of unevaluable updates: such a count starts at 0.
+  // Absent from checkpoints written before Newton/Line Search Retry, Newton/Max Update, the
+  // halving of unevaluable updates and Newton/Geometry Retry: such a count starts at 0.
   run.lineSearchRetries = countOrZero(file, "line_search_retries");
+  run.geometryRetries = countOrZero(file, "geometry_retries");
   run.limitedUpdates = countOrZero(file, "limited_updates");
   run.unevaluableHalvings = countOrZero(file, "unevaluable_halvings");
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
@@ -171,6 +172,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("linear_solves", static_cast<std::int64_t>(run.linearSolves));
     file.writeAttribute("cuts", static_cast<std::int64_t>(run.cuts));
     file.writeAttribute("line_search_retries", static_cast<std::int64_t>(run.lineSearchRetries));
+    file.writeAttribute("geometry_retries", static_cast<std::int64_t>(run.geometryRetries));
     file.writeAttribute("limited_updates", static_cast<std::int64_t>(run.limitedUpdates));
     file.writeAttribute("unevaluable_halvings", static_cast<std::int64_t>(run.unevaluableHalvings));
     file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));

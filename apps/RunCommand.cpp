@@ -60,10 +60,14 @@ class SolverGiveBack {
   SolverGiveBack(const SolverGiveBack&) = delete;
   SolverGiveBack& operator=(const SolverGiveBack&) = delete;
   ~SolverGiveBack() {
-    if (pool_ && !key.empty() && std::uncaught_exceptions() == exceptions_)
+    // A solver that dropped its symmetry for the run's geometry retry (takeAnyMatrix) no
+    // longer answers to its key: a later run with these settings builds its own.
+    if (pool_ && !key.empty() && std::uncaught_exceptions() == exceptions_ && solver_ &&
+        solver_->symmetryAssumption() == assumption)
       pool_->giveBack(key, std::move(solver_));
   }
-  std::string key;  // the solver's settings (solverKey); empty without a pool
+  std::string key;         // the solver's settings (solverKey); empty without a pool
+  std::string assumption;  // the solver's symmetryAssumption() when the run took it
 
  private:
   LinearSolverPool* pool_;
@@ -264,6 +268,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       solver = options.solverPool->take(giveBack.key);
     }
     if (!solver) solver = buildLinearSolver(*sm.scene.params, comm);
+    giveBack.assumption = solver->symmetryAssumption();
     checkSymmetry(*problem, *solver, sm.scene.path);
     // The uniqueness checks need the solver's determinants: a solver without them is refused
     // now, not after the run.

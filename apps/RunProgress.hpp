@@ -42,8 +42,10 @@ class RunProgress {
     if (!enabled_) return;
     if (tty_) std::fprintf(stderr, "\r%90s\r", "");
     std::fprintf(
-        stderr, "  step %d (%d planned)  t = %g  %d iterations%s%s%s  |R| = %.3e  elapsed %.1f s\n",
+        stderr,
+        "  step %d (%d planned)  t = %g  %d iterations%s%s%s%s  |R| = %.3e  elapsed %.1f s\n",
         s.step, steps, s.time, s.iterations, s.cuts ? " after cuts" : "",
+        s.geometryRetry ? " (geometry retry)" : "",
         s.updateLimitRetry ? " (update-limit retry)" : "",
         s.lineSearchRetry ? " (line-search retry)" : "", s.residual, elapsed);
   }

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace contactlab {
@@ -61,6 +62,13 @@ class ContactControls {
   // the multiplier rows' equations are from holding, as forces (Newton converges only when it
   // is within the target too).
   virtual double constraintResidual() const { return 0.0; }
+
+  // At a state x a step would end on: a sentence naming the slave nodes that left their
+  // master by passing through it since the last converged state (paired there, unpaired at x
+  // and farther behind that pairing's master point than the search reaches), empty if none.
+  // Such a state solves the discrete equations (no pairing, no contact force) but not the
+  // model. Collective.
+  virtual std::string passedThrough(const Vector& /*x*/) { return {}; }
 
   virtual std::vector<ContactPointState> pointStates() const = 0;
   // Cycling treatments at one point, for the rest of the load step (releaseTreatments ends

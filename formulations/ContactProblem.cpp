@@ -455,6 +455,7 @@ void ContactProblem::commitState(const Vector& x, double t) {
     if (pt.result.status != ContactStatus::Free) everInContact_ = true;
   }
   recoveredPressure_ = recoveredPressures(*solid_.model().mesh, zones_, lawResults());
+  convergedPairing_ = points_;
   state_->commit();
   kernel_->setConvergedTime(t);
   solid_.commitState(*displacement(x), t);

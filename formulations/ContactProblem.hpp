@@ -82,6 +82,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   double updateThresholds(const Vector& x, double t) override;
   int statusChanges() const override { return statusChanges_; }
   double constraintResidual() const override { return constraintResidual_; }
+  // Node-to-segment zones (ContactProblemGeometry.cpp): an obstacle keeps every point behind it
+  // paired, and a mortar point's gap weighs the nodes of its slave facets.
+  std::string passedThrough(const Vector& x) override;
   std::vector<ContactPointState> pointStates() const override;
   void forceStatus(std::size_t point, int status) override;
   bool scaleCoefficients(std::size_t point, double factor) override;
@@ -168,6 +171,8 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   std::string geometryFailure_;
   ContactPhaseSeconds seconds_;
   int statusChanges_ = 0;
+  // The pairing at the last converged state (or the first pairing), for passedThrough.
+  std::vector<ContactPoint> convergedPairing_;
   double constraintResidual_ = 0;
   std::vector<double> localStiffness_;  // per point: solid stiffness per area (~E/h), lazily
   bool graphStale_ = false;  // re-paired since the graph was built: rebuild it for a tangent

@@ -93,6 +93,7 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
         (deep.size() > 1 ? " (and " + std::to_string(deep.size() - 1) + " more)" : std::string()) +
         ". Check the geometry, the master/slave choice or the obstacle's position "
         "and normal");
+  if (!frozenOnce_) convergedPairing_ = points_;
   frozenOnce_ = true;
   layOutPointDofs();
   // Only a new pairing changes the couplings (and the direct solver's symbolic analysis); the
@@ -106,6 +107,37 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
   }
   layoutChanged_ = false;
   return moved;
+}
+
+std::string ContactProblem::passedThrough(const Vector& x) {
+  // Every rank pairs every point from the same imported state, so the ranks agree.
+  state_->import(x);
+  std::size_t count = 0;
+  std::string first;
+  for (std::size_t i = 0; i < points_.size() && i < convergedPairing_.size(); ++i) {
+    const ContactPoint& now = points_[i];
+    const ContactPoint& then = convergedPairing_[i];
+    const ContactDiscretization& discretization = *discretizations_[now.zone];
+    if (!then.paired || now.paired ||
+        zones_[now.zone].discretization != Discretization::nodeToSegment)
+      continue;
+    // The converged pairing's master point where the master is now, and its normal then.
+    const auto xs = state_->position(now.node);
+    const auto master = discretization.masterPoint(then, xs, *state_);
+    double gap = 0;
+    for (int c = 0; c < 3; ++c)
+      gap += then.normal[c] * (xs[c] - master[c]);
+    if (!(gap < -discretization.searchDistance())) continue;
+    if (count++ == 0)
+      first = "node " + std::to_string(solid_.model().mesh->nodeId(now.node)) + " of '" +
+              zones_[now.zone].slave + "' (zone " + zones_[now.zone].name + ") is " +
+              std::to_string(-gap) + " behind the master point it was paired with";
+  }
+  if (count == 0) return {};
+  return "slave nodes passed through their master surface since the last converged step: " + first +
+         (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : std::string()) +
+         ", beyond the search distance, so unpaired and free of contact: a body thrown through "
+         "its obstacle by an iterate, not a solution";
 }
 
 void ContactProblem::addRemovedDirections(const std::vector<std::array<double, 3>>& normals,

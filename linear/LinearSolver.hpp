@@ -88,6 +88,10 @@ class LinearSolver {
   // 'symmetric' reads only the lower triangle (Mode: general does not)"): a system whose
   // tangent is not symmetric must not be given to such a solver.
   virtual std::string symmetryAssumption() const { return {}; }
+  // From the next setMatrix on, the matrices may not be symmetric (a caller whose system was
+  // symmetric changes its tangent): a solver that assumes symmetry drops the assumption for
+  // good, at the cost of its analysis and factors; symmetryAssumption() is empty afterwards.
+  virtual void takeAnyMatrix() {}
   // Called after A's values changed. patternChanged = true: the pattern may differ from the
   // last matrix's, so a solver that does not compare patterns analyses again (MUMPS compares
   // them itself and keeps the analysis of an equal pattern).

@@ -163,6 +163,24 @@ std::string MumpsSolver::symmetryAssumption() const {
          "takes any)";
 }
 
+void MumpsSolver::takeAnyMatrix() {
+  if (options_.mode == Mode::general) return;
+  Impl& m = *impl_;
+  const int relaxation = m.dbl.icntl(14);
+  options_.mode = Mode::general;
+  // MUMPS fixes SYM at its initialization: new instances, nothing analysed, nothing to reuse
+  // (the triplets held are a lower triangle; the next matrix is passed whole and analysed).
+  m.sgl.reset();
+  m.singleFactors = false;
+  m.dbl.finalize();
+  m.dbl.initialize(m.comm, static_cast<int>(Mode::general), relaxation, options_.determinant);
+  m.factored = m.correcting = false;
+  m.irn.clear();
+  m.jcn.clear();
+  m.correction.reset();
+  m.correctionIndices.clear();
+}
+
 void MumpsSolver::setMatrix(const Teuchos::RCP<const Matrix>& A, bool /*patternChanged*/) {
   Impl& m = *impl_;
   if (A.is_null()) throw LinearSolverError("MUMPS was given a null matrix");

@@ -79,6 +79,8 @@ class MumpsSolver : public LinearSolver {
 
   std::string name() const override { return "mumps"; }
   std::string symmetryAssumption() const override;
+  // A symmetric mode becomes general (LU): the instances start over with SYM = 0 (collective).
+  void takeAnyMatrix() override;
   // The pattern is compared with the analysed one even when patternChanged = false: a changed
   // pattern always gets a new analysis (it costs one reduction and an O(nnz) comparison).
   void setMatrix(const Teuchos::RCP<const Matrix>& A, bool patternChanged) override;
@@ -135,7 +137,7 @@ class MumpsSolver : public LinearSolver {
   // refined against A to the correction's backward error (IterativeRefinement); factorizes A
   // in double when that fails.
   void solveRefined(const MultiVector& b, MultiVector& x);
-  const Options options_;
+  Options options_;  // mode: general after takeAnyMatrix
   std::unique_ptr<Impl> impl_;
 };
 

@@ -23,6 +23,10 @@ CASE:
   no-equilibrium  V5 above the threshold under load control: no static equilibrium exists, so
              the run must stop with a named reason (exit code 1, failure not null) and keep
              its last converged step.
+  named-failure  a run that has no solution to report (e.g. the NAFEMS roller under the fixed
+             point with its geometry in Newton: its first solve, the statuses frozen open,
+             throws the roller through its block): it must stop with a named reason whose
+             message contains --message-contains, not report a state as converged.
 Prints one line "RESULT case h error" for the documentation tables."""
 import argparse, csv, json, math, os, shutil, sys
 
@@ -34,6 +38,7 @@ ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
 ap.add_argument("ranks", type=int); ap.add_argument("case"); ap.add_argument("tol", type=float)
 ap.add_argument("--set", action="append", default=[])
+ap.add_argument("--message-contains", default="", help="named-failure: text the message must hold")
 ap.add_argument("--automatic-rn", action="store_true",
                 help="expect summary.json to report the automatic r_n of every zone")
 ap.add_argument("--E", type=float, default=1.0); ap.add_argument("--nu", type=float, default=0.3)
@@ -70,6 +75,13 @@ if args.automatic_rn:
         rn = f.get("automatic_normal_augmentation")
         assert rn is not None and rn > 0, f"Contact/{zone}: no automatic r_n in summary.json"
         print(f"automatic r_n of {zone}: {rn:g}")
+
+if args.case == "named-failure":
+    assert run.returncode == 1, f"exit code {run.returncode}: expected a named failure"
+    assert summary["converged"] is False and summary["failure"], summary["failure"]
+    assert args.message_contains in summary["message"], summary["message"]
+    print("RESULT named-failure", summary["failure"])
+    sys.exit(0)
 
 if args.case == "no-equilibrium":
     assert run.returncode == 1, f"exit code {run.returncode}: expected a named failure"

@@ -96,6 +96,25 @@ TEST(MumpsSolver, ReusesTheAnalysisWhenOnlyValuesChange) {
   EXPECT_LT(test::relativeDifference(x2, *x1), 1e-12);
 }
 
+// A symmetric mode told that the matrices may no longer be symmetric (the geometry retry's
+// full terms, StaticSolver) solves an unsymmetric matrix exactly, where it read the lower
+// triangle before; it analyses again and says it assumes nothing.
+TEST(MumpsSolver, TakesAnyMatrixOnceTold) {
+  const auto S = test::laplacian2D(15, 12, Layout::scattered, world());
+  const auto U = test::convectionDiffusion(20, 3.0, Layout::scattered, world());
+  const auto bS = test::rightHandSide(*S, 2), bU = test::rightHandSide(*U, 2);
+  MumpsSolver solver(optionsWith(Mode::symmetricIndefinite), world());
+  EXPECT_FALSE(solver.symmetryAssumption().empty());
+  EXPECT_LT(test::relativeResidual(*S, *bS, *solveWith(solver, S, *bS)), 1e-12);
+  EXPECT_GT(test::relativeResidual(*U, *bU, *solveWith(solver, U, *bU)), 1e-6);  // lower only
+  solver.takeAnyMatrix();
+  EXPECT_TRUE(solver.symmetryAssumption().empty());
+  EXPECT_LT(test::relativeResidual(*U, *bU, *solveWith(solver, U, *bU)), 1e-12);
+  EXPECT_LT(test::relativeResidual(*S, *bS, *solveWith(solver, S, *bS)), 1e-12);
+  EXPECT_EQ(solver.stats().analyses, 4);
+  EXPECT_FALSE(solver.negativePivots().has_value());  // general mode: no inertia
+}
+
 // MUMPS falls back to another ordering without a word when the one asked for is not built in
 // (Debian's libmumps-dev has PORD only): the automatic choice must be the one INFOG(7) reports,
 // SCOTCH with libmumps-ptscotch from 5 000 unknowns (here 18^3), and every ordering must solve
