@@ -58,6 +58,18 @@ std::string GeometryLoop::failureMessage() const {
   const auto first = relativeResiduals_.end() - kWindow;
   const auto [low, high] = std::minmax_element(first, relativeResiduals_.end());
   if (!(*low > 0) || *high > kStagnation * *low) return message;
+  // Stuck well away from a solution instead (the 3D two-body Hertz model pressed by a force
+  // under the fixed point: 1.6 to 1.7 of the step's first residual, the statuses and the
+  // pairing moving each other): that is no discretization floor, and no Geometry Tolerance
+  // should accept it.
+  constexpr double kFloorCeiling = 1e-2;
+  if (*high >= kFloorCeiling) {
+    std::ostringstream hint;
+    hint << std::setprecision(2) << "; the residual at the updated geometry stayed at " << *low
+         << " to " << *high << " of the step's first residual over the last " << kWindow
+         << " updates: the fixed point stalls far from a solution";
+    return message + hint.str();
+  }
   const double accepting = std::pow(10.0, std::ceil(std::log10(1.5 * *high)));
   std::ostringstream hint;
   hint << std::setprecision(2) << "; the residual at the updated geometry stagnated at " << *low

@@ -266,6 +266,11 @@ TEST(FixedPointLoops, AGeometryThatStagnatesAboveItsToleranceSaysWhichToleranceA
   EXPECT_NE(stagnating.message.find("Newton/Geometry Tolerance = 1e-05 is above it"),
             std::string::npos)
       << stagnating.message;
+  // Stuck far from a solution is no floor: no tolerance is suggested.
+  const RunReport stuck = failAtTheCap({0.5, 1.6, 1.7, 1.6, 1.65});
+  EXPECT_EQ(stuck.failure, "geometry-not-converged");
+  EXPECT_NE(stuck.message.find("stalls far from a solution"), std::string::npos) << stuck.message;
+  EXPECT_EQ(stuck.message.find("Geometry Tolerance ="), std::string::npos) << stuck.message;
   const RunReport falling = failAtTheCap({1e-2, 1e-3, 1e-4, 1e-5, 2e-6});
   EXPECT_EQ(falling.failure, "geometry-not-converged");
   EXPECT_EQ(falling.message.find("stagnated"), std::string::npos) << falling.message;
