@@ -416,6 +416,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   };
   RunReport report = runStatic(system, contact.get(), *solver, sm.solverOptions, *x, onStep,
                                onIteration, from.start);
+  // A geometry retry made a symmetric-mode solver take any matrix (LinearSolver::takeAnyMatrix):
+  // summary.json reports the mode the run ended in.
+  if (!giveBack.assumption.empty() && solver->symmetryAssumption().empty()) {
+    Teuchos::ParameterList& section = sm.scene.params->sublist("Linear Solver");
+    if (section.get<std::string>("Type") == "mumps")
+      section.sublist("mumps").set("Mode", "general");
+  }
   // summary.json and the last line count the whole run, its part before a restart too: the
   // solver's counts start from the checkpoint's (RunStart::totals), its steps are this run's.
   report.steps += static_cast<int>(earlierRows);
