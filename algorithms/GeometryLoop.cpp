@@ -26,7 +26,7 @@ bool GeometryLoop::diverged() const {
   // NAFEMS roller under its force, frictionless node-to-segment: 4e2, 2e1, 9e1, 1e3, 4e4, then
   // 1e6 to 1e7 against 5e3 at the step's start). The frozen normal is the master's, which
   // rotates as the master deforms; the consistent tangent (the geometry in Newton with its full
-  // terms), the stiffer body as master, or mortar converged there.
+  // terms) converges there.
   if (relativeResiduals_.empty()) return false;
   const double lowest = *std::min_element(relativeResiduals_.begin(), relativeResiduals_.end());
   const double last = relativeResiduals_.back();
@@ -50,8 +50,7 @@ std::string GeometryLoop::failureMessage() const {
          << " updates the residual at the updated geometry rose from " << lowest << " to "
          << relativeResiduals_.back()
          << " of the step's first residual (a master whose normal turns as it deforms: "
-            "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full, the stiffer body "
-            "as the Master, or Discretization: mortar converge there)";
+            "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full converges there)";
     return text.str();
   }
   if (relativeResiduals_.size() < kWindow) return message;

@@ -82,8 +82,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   double updateThresholds(const Vector& x, double t) override;
   int statusChanges() const override { return statusChanges_; }
   double constraintResidual() const override { return constraintResidual_; }
-  // Node-to-segment zones (ContactProblemGeometry.cpp): an obstacle keeps every point behind it
-  // paired, and a mortar point's gap weighs the nodes of its slave facets.
+  // ContactProblemGeometry.cpp.
   std::string passedThrough(const Vector& x) override;
   std::vector<ContactPointState> pointStates() const override;
   void forceStatus(std::size_t point, int status) override;

@@ -118,10 +118,10 @@ std::string ContactProblem::passedThrough(const Vector& x) {
     const ContactPoint& now = points_[i];
     const ContactPoint& then = convergedPairing_[i];
     const ContactDiscretization& discretization = *discretizations_[now.zone];
-    if (!then.paired || now.paired ||
-        zones_[now.zone].discretization != Discretization::nodeToSegment)
-      continue;
-    // The converged pairing's master point where the master is now, and its normal then.
+    if (!then.paired || now.paired) continue;
+    // The converged pairing's master point where the master is now, and its normal then: a
+    // node-to-segment point's gap, a mortar point's weighted gap (its coefficients sum to 0,
+    // so a rigid motion leaves it). An obstacle unpairs only the points in front of it.
     const auto xs = state_->position(now.node);
     const auto master = discretization.masterPoint(then, xs, *state_);
     double gap = 0;
