@@ -132,6 +132,8 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   ContactPhaseSeconds phaseSeconds() const { return seconds_; }
 
  private:
+  // "node <id> of '<slave group>' (zone <name>)", for messages.
+  std::string slaveNodeName(const ContactPoint& pt) const;
   // updateGeometry's work: pairs every point at state x and time t and freezes that geometry.
   bool pairAndFreeze(const Vector& x, double t);
   void layOutPointDofs();

@@ -18,6 +18,14 @@
 #include <vector>
 
 namespace contactlab {
+namespace {
+
+// " (and n more)" after the first of n + 1 named points; nothing when n = 0.
+std::string andMore(std::size_t n) {
+  return n > 0 ? " (and " + std::to_string(n) + " more)" : std::string();
+}
+
+}  // namespace
 
 bool ContactProblem::updateGeometry(const Vector& x, double t) {
   geometryFailure_.clear();
@@ -64,10 +72,9 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
       }
       tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
       if (!frozenOnce_ && pt.paired && pairing.gap < -pairing.size)
-        deep.push_back(
-            "node " + std::to_string(solid_.model().mesh->nodeId(pt.node)) + " of '" +
-            zones_[z].slave + "' (zone " + zones_[z].name + ") is " + std::to_string(-pairing.gap) +
-            " inside its master, more than the facet size " + std::to_string(pairing.size));
+        deep.push_back(slaveNodeName(pt) + " is " + std::to_string(-pairing.gap) +
+                       " inside its master, more than the facet size " +
+                       std::to_string(pairing.size));
       // Repaired: other master nodes (a new graph). Moved: a different normal or master point
       // at this state (Newton must run again); the same point reached through another facet
       // of a shared vertex is not a move.
@@ -88,11 +95,10 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
     }
   }
   if (!deep.empty())
-    throw InputError(
-        "initial penetration larger than an element: " + deep.front() +
-        (deep.size() > 1 ? " (and " + std::to_string(deep.size() - 1) + " more)" : std::string()) +
-        ". Check the geometry, the master/slave choice or the obstacle's position "
-        "and normal");
+    throw InputError("initial penetration larger than an element: " + deep.front() +
+                     andMore(deep.size() - 1) +
+                     ". Check the geometry, the master/slave choice or the obstacle's position "
+                     "and normal");
   if (!frozenOnce_) convergedPairing_ = points_;
   frozenOnce_ = true;
   layOutPointDofs();
@@ -109,8 +115,18 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
   return moved;
 }
 
+std::string ContactProblem::slaveNodeName(const ContactPoint& pt) const {
+  return "node " + std::to_string(solid_.model().mesh->nodeId(pt.node)) + " of '" +
+         zones_[pt.zone].slave + "' (zone " + zones_[pt.zone].name + ")";
+}
+
 std::string ContactProblem::passedThrough(const Vector& x) {
-  // Every rank pairs every point from the same imported state, so the ranks agree.
+  // Every rank pairs every point from the same imported state, so the ranks agree, also on
+  // skipping the import where no point lost its pairing (most steps).
+  bool unpaired = false;
+  for (std::size_t i = 0; i < points_.size() && i < convergedPairing_.size(); ++i)
+    unpaired = unpaired || (convergedPairing_[i].paired && !points_[i].paired);
+  if (!unpaired) return {};
   state_->import(x);
   std::size_t count = 0;
   std::string first;
@@ -129,13 +145,12 @@ std::string ContactProblem::passedThrough(const Vector& x) {
       gap += then.normal[c] * (xs[c] - master[c]);
     if (!(gap < -discretization.searchDistance())) continue;
     if (count++ == 0)
-      first = "node " + std::to_string(solid_.model().mesh->nodeId(now.node)) + " of '" +
-              zones_[now.zone].slave + "' (zone " + zones_[now.zone].name + ") is " +
-              std::to_string(-gap) + " behind the master point it was paired with";
+      first = slaveNodeName(now) + " is " + std::to_string(-gap) +
+              " behind the master point it was paired with";
   }
   if (count == 0) return {};
   return "slave nodes passed through their master surface since the last converged step: " + first +
-         (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : std::string()) +
+         andMore(count - 1) +
          ", beyond the search distance, so unpaired and free of contact: a body thrown through "
          "its obstacle by an iterate, not a solution";
 }
