@@ -37,19 +37,20 @@ PAGES = ("verification.md", "studies.md")
 # a margin of three decades above that and still catches any change a reader would see.
 NUMBER_RTOL = 1e-3
 # Iteration counts that round-off moves, by block and column: a run whose path crosses a status
-# switch within round-off (doc/algorithms.md, "Round-off"). Measured: under Prescott's kernels
-# 2 of the 96 counts of these studies move by one iteration (quick comparison: penalty, partial
-# Newton, node-to-segment 22 -> 23; extremes: nu = 0.499, generalized Newton 41 -> 40); the
-# verification blocks' counts and the Hertz study's do not move (Haswell, Prescott, 2 ranks).
-# These columns agree within ITERATION_BAND; every other integer is compared exactly.
+# switch within round-off (doc/algorithms.md, "Round-off"). Measured 2026-11-29 on the extremes
+# (native, Prescott, Haswell, Sandy Bridge and Zen kernels): 7 of its 78 counts move, by up to
+# 3 iterations or 17 % (r_n = 10 E/h under partial Newton: 18, and 21 under Sandy Bridge's); the
+# quick comparison moved by one under Prescott's; the verification blocks' counts and the Hertz
+# study's do not move (Haswell, Prescott, 2 ranks). These columns agree by iterations_agree;
+# every other integer is compared exactly.
 BANDED_COLUMNS = {"quick-comparison": ("Newton its",),
                   "extremes": ("generalized Newton", "partial Newton", "fixed point")}
 
 
 def iterations_agree(a, b):
-    """Two round-off-moved iteration counts agree: within 2, or 10 % of the larger for the long
-    runs (kernel sets not measured here may move more than one)."""
-    return abs(a - b) <= max(2, 0.1 * max(a, b))
+    """Two round-off-moved iteration counts agree: within 3, or 20 % of the larger for the long
+    runs (kernel sets not measured here may move more)."""
+    return abs(a - b) <= max(3, 0.2 * max(a, b))
 
 
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
