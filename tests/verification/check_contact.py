@@ -15,6 +15,10 @@ CASE:
              node spacings, and the shear traction against Cattaneo-Mindlin's q(x) within
              5 % of mu p0 (--traction-tol) over |x| <= 0.9 c (the kinks of q at c and a are reported, not
              bounded). Needs --mu (and --estar, --radius for two bodies).
+  mindlin-3d  V4 in 3D (a sphere on a similar body): the area-equivalent stick radius against
+             Mindlin's c = a (1 - Q/(mu P))^(1/3) within TOL node spacings, and the shear
+             traction's ring means over r <= 0.9 c against Mindlin's q(r) within --traction-tol
+             of mu p0. Needs --mu and --estar.
   patch      V3: uniform pressure PRESSURE on the interface (--pressure); TOL bounds the max
              relative deviation over the closed points.
   holds      V5 below the threshold: the run converges, the floor carries the applied
@@ -32,7 +36,8 @@ import argparse, csv, json, math, os, shutil, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from contactlab_run import contactlab_run  # noqa: E402
-from contact_references import cattaneo_mindlin, hertz, hertz_pressure_errors, node_spacing  # noqa: E402
+from contact_references import (cattaneo_mindlin, hertz, hertz_pressure_errors,  # noqa: E402
+                                mindlin_3d, node_spacing)
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -146,6 +151,28 @@ elif args.case == "cattaneo-mindlin":
     assert inner <= args.traction_tol, \
         f"traction error in the stick zone {inner} > {args.traction_tol} mu p0"
     assert abs(c_fe - c) <= args.tol * h, f"stick zone {c_fe} vs {c}: more than {args.tol} node spacings ({h})"
+elif args.case == "mindlin-3d":
+    P = contact["normal_force"]
+    Q = contact["tangential_force_vector"][0]
+    Estar = args.estar or args.E / (1 - args.nu ** 2)
+    ratio = abs(Q) / (args.mu * P)
+    assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
+    assert any(int(r["status"]) == 1 for r in closed) and any(
+        int(r["status"]) == 2 for r in closed), "partial slip expected: both stick and slip points"
+    m = mindlin_3d(closed, P, Q, args.mu, Estar, args.radius)
+    a, c, c_fe, h = m["a"], m["c"], m["c_fe"], m["h"]
+    e = hertz_pressure_errors(rows, a, m["p0"], 3)
+    print(f"P = {P:.6g}, Q = {abs(Q):.6g}, Q/(mu P) = {ratio:.4f}, a = {a:.5g}, "
+          f"closed points {len(closed)}, h = {h:.3g}; c/a: Mindlin {c / a:.4f}, computed "
+          f"{c_fe / a:.4f} (area-equivalent), |c_fe - c| = {abs(c_fe - c) / h:.2f} h; shear "
+          f"traction's ring means (r <= 0.9c, {m['rings']} rings) within {m['profile']:.4g} "
+          f"mu p0; pressure rms {e['rms']:.4g} p0")
+    print(f"RESULT mindlin-3d Q/muP={ratio:.3f} c/a={c / a:.4f} fe={c_fe / a:.4f} "
+          f"dc/h={abs(c_fe - c) / h:.2f} profile={m['profile']:.4g} "
+          f"newton={summary['iterations']['newton']}")
+    assert m["profile"] <= args.traction_tol, \
+        f"shear traction's ring means {m['profile']} > {args.traction_tol} mu p0 off Mindlin's"
+    assert abs(c_fe - c) <= args.tol * h, f"stick radius {c_fe} vs {c}: more than {args.tol} h ({h})"
 elif args.case == "patch":
     target = args.pressure
     if args.uniform:
