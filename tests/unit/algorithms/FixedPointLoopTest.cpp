@@ -21,6 +21,7 @@ class RecordingSystem : public NonlinearSystem, public ContactControls {
   RecordingSystem() : map_(Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()))) {}
 
   std::vector<std::string> calls;    // "newton" and each fixed-point update, in order
+  std::vector<double> targets;       // each Newton solve's target residual, in order
   std::vector<std::string> freezes;  // freezeStatuses / freezeThresholds, in order
   std::deque<int> statusChangesScript;
   std::deque<double> thresholdMoves;
@@ -87,6 +88,7 @@ class RecordingNewton : public NewtonMethod {
   explicit RecordingNewton(RecordingSystem& system) : system_(system) {}
   NewtonOutcome solve(Vector&, const NewtonRequest& request, const Observer&) override {
     system_.calls.push_back(request.geometryInNewton ? "newton+geometry" : "newton");
+    system_.targets.push_back(request.target);
     NewtonOutcome out;
     out.iterations = 1;
     return out;
@@ -180,7 +182,10 @@ TEST(FixedPointLoops, LoopsInNewtonAreNeitherFrozenNorUpdated) {
   system.geometryMoves = {false, true, false};
   const RunReport report = runOneStep(system, optionsFor("partial-newton"));
   ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
-  EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "geometry", "newton", "geometry"}));
+  // The solve after the move stops short of the step's target (Geometry Forcing), and the
+  // step ends on one to its target.
+  EXPECT_EQ(system.calls,
+            (Calls{"geometry", "newton", "geometry", "newton", "geometry", "newton", "geometry"}));
   EXPECT_EQ(system.freezes, (Calls{"statuses released", "thresholds released"}));
   EXPECT_EQ(report.statusIterations + report.thresholdIterations, 0);
   EXPECT_EQ(report.geometryIterations, 1);
@@ -293,6 +298,41 @@ TEST(FixedPointLoops, AGeometryThatStagnatesAboveItsToleranceSaysWhichToleranceA
       << diverging.message;
   EXPECT_NE(diverging.message.find("Geometric Terms: full"), std::string::npos)
       << diverging.message;
+}
+
+// Newton/Geometry Forcing (doc/algorithms.md "Inexact solves between geometry updates"): after
+// a geometry update that moved, Newton stops at the forcing times the residual the update left;
+// the step ends on a solve to its own target. Not under the fixed point, whose status loop reads
+// the iterate.
+TEST(FixedPointLoops, BetweenGeometryUpdatesNewtonStopsAtTheForcingTimesTheMovedResidual) {
+  RecordingSystem system;  // every residual 1 until a move: the step's target is 1e-8
+  system.geometryMoves = {false, true, true, false, false};
+  system.residualsAfterGeometryMoves = {1e-2, 1e-4};
+  const RunReport report = runOneStep(system, optionsFor("partial-newton"));
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "geometry", "newton", "geometry", "newton",
+                                 "geometry", "newton", "geometry"}));
+  ASSERT_EQ(system.targets.size(), 4u);
+  EXPECT_DOUBLE_EQ(system.targets[0], 1e-8);
+  EXPECT_DOUBLE_EQ(system.targets[1], 1e-4);  // 1e-2 x 1e-2
+  EXPECT_DOUBLE_EQ(system.targets[2], 1e-6);
+  EXPECT_DOUBLE_EQ(system.targets[3], 1e-8);  // the geometry settled: the step's own target
+  EXPECT_EQ(report.geometryIterations, 2);
+
+  RecordingSystem exact;
+  exact.geometryMoves = {false, true, true, false};
+  exact.residualsAfterGeometryMoves = {1e-2, 1e-4};
+  auto options = optionsFor("partial-newton");
+  options.geometryForcing = 0;
+  ASSERT_TRUE(runOneStep(exact, options).converged);
+  EXPECT_EQ(exact.targets, (std::vector<double>{1e-8, 1e-8, 1e-8}));
+
+  RecordingSystem fixedPoint;
+  fixedPoint.geometryMoves = {false, true, false};
+  fixedPoint.residualsAfterGeometryMoves = {1e-2};
+  ASSERT_TRUE(runOneStep(fixedPoint, optionsFor("fixed-point")).converged);
+  for (double target : fixedPoint.targets)
+    EXPECT_DOUBLE_EQ(target, 1e-8);
 }
 
 // Newton/Geometry Retry (doc/algorithms.md "Geometry retry"): the diverging fixed point is given
