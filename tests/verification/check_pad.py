@@ -4,7 +4,7 @@
 usage: check_pad.py CONTACTLAB SCENE WORKDIR MU
 
 Asserts what doc/algorithms.md reports: the generalized and partial Newton without treatment cycle
-(sub-cycling 1 detected) and stop with 'diverged', "Newton cycles" (a residual that repeats a
+(a cycling detected: sub-cycling 1, or a contact flip-flop) and stop with 'diverged', "Newton cycles" (a residual that repeats a
 two-iterate cycle; before that test, max-iterations), and so does the fixed point
 (statuses-not-converged, from each step's last state: Newton/Extrapolation none; with the
 default extrapolated start it converges at mu = 1); 'automatic' saves the two Newton presets; 'forced' saves the fixed point
@@ -54,8 +54,11 @@ for method in ["generalized-newton", "partial-newton", "fixed-point"]:
             check(label + f" (expected {want})", s["failure"] == want)
             if method != "fixed-point":
                 check(label + " says Newton cycles", "Newton cycles" in (s["message"] or ""))
+            # The kind it meets first follows the path: partial Newton at mu = 0.45 met
+            # sub-cycling 1 until the inexact solves between geometry updates, a contact
+            # flip-flop since (doc/algorithms.md "Inexact solves between geometry updates").
             if method != "fixed-point":
-                check(label + " detects sub-cycling-1", s["cycling"]["sub-cycling-1"] > 0)
+                check(label + " detects cycling", sum(s["cycling"].values()) > 0)
         else:
             if treatment == "forced" and method != "fixed-point" and float(mu) < 1:
                 d = run(f"{method}-{treatment}-no-predictor", f"Algorithm/Method={method}",
