@@ -295,9 +295,8 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     // residual by a fraction of the last one's (5 to 10 times less, converging), so solving
     // below Geometry Forcing times it buys nothing. Only where the loops inside the moved one
     // are in Newton: a status or threshold fixed point reads the iterate itself.
-    bool innerInNewton = true;
-    for (std::size_t inner = 0; inner < k; ++inner)
-      innerInNewton = innerInNewton && loops_[inner]->inNewton();
+    const bool innerInNewton = std::all_of(loops_.begin(), loops_.begin() + k,
+                                           [](const auto& inner) { return inner->inNewton(); });
     if (test.tested && moved.allowsInexactSolves() && innerInNewton)
       request.target = std::max(stepTarget, options_.geometryForcing * test.residual);
   }

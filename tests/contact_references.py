@@ -46,6 +46,14 @@ def node_spacing(closed):
     return sorted(b - x for x, b in zip(xs, xs[1:]))[len(xs) // 2]
 
 
+def partial_slip_traction(x, a, c):
+    """Cattaneo's and Mindlin's shear traction along Q at distance x from the centre, / (mu p0):
+    sqrt(1 - x^2/a^2), less (c/a) sqrt(1 - x^2/c^2) inside the stick zone |x| < c (the same
+    form for a line contact and a point contact; only c's law differs)."""
+    v = math.sqrt(max(0.0, 1 - (x / a) ** 2))
+    return v - (c / a) * math.sqrt(1 - (x / c) ** 2) if abs(x) < c else v
+
+
 def cattaneo_mindlin(closed, P, Q, mu, estar, radius):
     """The 2D partial-slip state of the closed points against Cattaneo-Mindlin for the computed
     P and Q: a, p0, the stick half-width c and the computed one c_fe (half the extent of the
@@ -60,10 +68,7 @@ def cattaneo_mindlin(closed, P, Q, mu, estar, radius):
         x = float(r["x"])
         if abs(x) > 0.9 * a:
             continue
-        q = mu * p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
-        if abs(x) < c:
-            q -= mu * p0 * (c / a) * math.sqrt(1 - (x / c) ** 2)
-        e = abs(abs(float(r["traction_x"])) - q) / (mu * p0)
+        e = abs(abs(float(r["traction_x"])) / (mu * p0) - partial_slip_traction(x, a, c))
         err = max(err, e)
         if abs(x) <= 0.9 * c:
             inner = max(inner, e)
@@ -89,18 +94,13 @@ def mindlin_3d(closed, P, Q, mu, estar, radius, bins=4):
     c = a * (1 - abs(Q) / (mu * P)) ** (1 / 3)
     stick = [r for r in closed if int(r["status"]) == 1]
     c_fe = a * math.sqrt(len(stick) / len(closed))
-
-    def q(x):  # / (mu p0)
-        v = math.sqrt(max(0.0, 1 - (x / a) ** 2))
-        return v - (c / a) * math.sqrt(1 - (x / c) ** 2) if x < c else v
-
     rings = {}
     for r in closed:
         x = contact_radius(r, 3)
         k = int(x / a * bins)
         if (k + 1) * a / bins <= 0.9 * c:
             t = float(r["traction_x"]) * math.copysign(1.0, Q) / (mu * p0)
-            rings.setdefault(k, []).append((t, q(x)))
+            rings.setdefault(k, []).append((t, partial_slip_traction(x, a, c)))
     profile = max(abs(sum(t for t, _ in v) - sum(ref for _, ref in v)) / len(v)
                   for v in rings.values())
     return dict(a=a, p0=p0, c=c, c_fe=c_fe, h=a * math.sqrt(math.pi / len(closed)),

@@ -101,6 +101,18 @@ closed = [r for r in rows if int(r["status"]) != 0]
 assert closed, "no contact point closed: contact switched off?"
 contact = summary["contact"]
 
+
+def partial_slip_loads():
+    """P, the signed Q along x and Q/(mu P) of a partial-slip state: asserts 0.05 < Q/(mu P) <
+    0.95 and that some closed points stick and some slip."""
+    P, Q = contact["normal_force"], contact["tangential_force_vector"][0]
+    ratio = abs(Q) / (args.mu * P)
+    assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
+    assert any(int(r["status"]) == 1 for r in closed) and any(
+        int(r["status"]) == 2 for r in closed), "partial slip expected: both stick and slip points"
+    return P, Q, ratio
+
+
 if args.case in ("hertz-2d", "hertz-3d", "hertz-axisymmetric"):
     P = contact["normal_force"]
     Estar = args.estar or args.E / (1 - args.nu ** 2)
@@ -132,15 +144,10 @@ if args.case in ("hertz-2d", "hertz-3d", "hertz-axisymmetric"):
     assert measured <= args.tol, f"pressure error ({args.metric}) {measured} > {args.tol}"
     assert edge <= 3 * max(args.tol, err), f"edge pressure error {edge} > {3 * max(args.tol, err)}"
 elif args.case == "cattaneo-mindlin":
-    P = contact["normal_force"]
-    Q = abs(contact["tangential_force_vector"][0])
+    P, Q, ratio = partial_slip_loads()
+    Q = abs(Q)
     Estar = args.estar or args.E / (1 - args.nu ** 2)
-    ratio = Q / (args.mu * P)
-    assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
     h = node_spacing(closed)
-    stick = [r for r in closed if int(r["status"]) == 1]
-    slip = [r for r in closed if int(r["status"]) == 2]
-    assert stick and slip, "partial slip expected: both stick and slip points"
     cm = cattaneo_mindlin(closed, P, Q, args.mu, Estar, args.radius)
     a, c, c_fe, inner, err = cm["a"], cm["c"], cm["c_fe"], cm["stick_error"], cm["error"]
     print(f"P = {P:.6g}, Q = {Q:.6g}, Q/(mu P) = {ratio:.4f}, a = {a:.5g}, c/a: Cattaneo-Mindlin "
@@ -152,13 +159,8 @@ elif args.case == "cattaneo-mindlin":
         f"traction error in the stick zone {inner} > {args.traction_tol} mu p0"
     assert abs(c_fe - c) <= args.tol * h, f"stick zone {c_fe} vs {c}: more than {args.tol} node spacings ({h})"
 elif args.case == "mindlin-3d":
-    P = contact["normal_force"]
-    Q = contact["tangential_force_vector"][0]
+    P, Q, ratio = partial_slip_loads()
     Estar = args.estar or args.E / (1 - args.nu ** 2)
-    ratio = abs(Q) / (args.mu * P)
-    assert 0.05 < ratio < 0.95, f"Q/(mu P) = {ratio}: not a partial-slip state"
-    assert any(int(r["status"]) == 1 for r in closed) and any(
-        int(r["status"]) == 2 for r in closed), "partial slip expected: both stick and slip points"
     m = mindlin_3d(closed, P, Q, args.mu, Estar, args.radius)
     a, c, c_fe, h = m["a"], m["c"], m["c_fe"], m["h"]
     e = hertz_pressure_errors(rows, a, m["p0"], 3)
