@@ -33,6 +33,27 @@ bool GeometryLoop::diverged() const {
   return last > 1.0 && last > 100.0 * lowest;
 }
 
+int GeometryLoop::cyclePeriod() const {
+  // The fixed point of the seed-size tube's unloading under the fixed-point preset: 2.147,
+  // 2.153, 2.147, 2.153, ... over 15 updates, Newton's first residual after each alternating
+  // 5.326e-6, 2.801e-6. A frozen pairing and frozen statuses determine the converged iterate,
+  // so two updates that came back to a residual to 1e-3 came back to a pairing; converging or
+  // on a floor (the blade root's slivers: within a factor of 2), successive values differ by
+  // far more. Two full periods, so that one coincidence does not count.
+  constexpr double kSame = 1e-3;
+  const auto same = [](double a, double b) { return std::abs(a - b) <= kSame * std::max(a, b); };
+  const std::size_t n = relativeResiduals_.size();
+  for (int period : {2, 3}) {
+    const std::size_t p = period;
+    if (n < 3 * p) continue;
+    bool repeats = true;
+    for (std::size_t i = n - 2 * p; i < n && repeats; ++i)
+      repeats = same(relativeResiduals_[i], relativeResiduals_[i - p]);
+    if (repeats) return period;
+  }
+  return 0;
+}
+
 std::string GeometryLoop::failureMessage() const {
   std::string message = FixedPointLoop::failureMessage();
   // Converging, the residual at the updated geometry falls by a factor of 5 to 10 per update
@@ -51,6 +72,18 @@ std::string GeometryLoop::failureMessage() const {
          << relativeResiduals_.back()
          << " of the step's first residual (a master whose normal turns as it deforms: "
             "Algorithm/Geometry: newton with Algorithm/Geometric Terms: full converges there)";
+    return text.str();
+  }
+  if (const int period = cyclePeriod()) {
+    std::ostringstream text;
+    text << std::setprecision(4) << "the geometric fixed point cycles: after " << updates()
+         << " updates the residual at the updated geometry repeats every " << period
+         << " updates (";
+    for (auto r = relativeResiduals_.end() - period; r != relativeResiduals_.end(); ++r)
+      text << (r == relativeResiduals_.end() - period ? "" : ", ") << *r;
+    text << " of the step's first residual): pairings that send the iterate to each other "
+            "(with the statuses a fixed point too, where each moves the other, partial Newton "
+            "puts the statuses in Newton: Algorithm/Method: partial-newton)";
     return text.str();
   }
   if (relativeResiduals_.size() < kWindow) return message;

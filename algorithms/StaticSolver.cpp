@@ -228,6 +228,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     progress.residual = norm;
     if (onIteration) onIteration(progress);
     progress.treatedPoints = 0;
+    progress.restartedBy = "";
   };
   NewtonRequest request;
   request.time = t;
@@ -273,6 +274,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
       continue;
     }
     FixedPointLoop& moved = *loops_[k];
+    progress.restartedBy = moved.name().c_str();
     // A status that flips from one fixed-point update to the next cycles too.
     if (moved.changesStatuses()) treatCycling(detector_.observe(controls_->pointStates()), sr);
     if (moved.updates() == moved.maxUpdates()) return fail(moved.failure(), moved.failureMessage());
@@ -288,7 +290,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     }
     // A fixed point that diverges is given up at once where the geometry retry takes it over:
     // its remaining updates would climb on (the NAFEMS roller: 25 more, 140 Newton iterations).
-    if (geometryRetryApplies() && moved.diverged())
+    if (geometryRetryApplies() && moved.cannotConverge())
       return fail(moved.failure(), moved.failureMessage());
     request.target = stepTarget;
     // Inexact solves between geometry updates (doc/algorithms.md): the next update moves the
@@ -404,7 +406,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       // The retries after it, if it fails, keep the geometry in Newton.
       std::optional<GeometryInNewton> geometryInNewton;
       if (!ok && geometryRetryApplies() && report.failure == "geometry-not-converged" &&
-          loops_.back()->diverged()) {
+          loops_.back()->cannotConverge()) {
         ++report.geometryRetries;
         geometryInNewton.emplace(*this);
         ok = sr.geometryRetry = solveAgain(newton_, 0, "geometry retry",

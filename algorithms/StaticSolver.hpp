@@ -175,6 +175,9 @@ class StaticSolver {
     double residual = 0;       // ||R|| as Newton goes on with it (after a cycling treatment)
     int treatedPoints = 0;     // points whose law a cycling treatment changed at this iterate
     const char* attempt = "";  // "" or how a failed step is being solved again
+    // At a Newton solve's first iterate: the fixed point whose update restarted Newton
+    // ("statuses", "thresholds", "geometry"), or "".
+    const char* restartedBy = "";
   };
   using IterationCallback = std::function<void(const IterateProgress&)>;
 

@@ -2,8 +2,17 @@
 // The contact statuses (open or closed; stick and slip follow the iterate) as a loop: as a
 // fixed point, frozen at the last update while Newton runs; an update that changes a status
 // restarts Newton, at most Algorithm/Max Status Iterations times per geometry update.
+//
+// An update that changes back exactly the points the last one changed is a two-update cycle:
+// from then on, for the rest of the step, each update changes only the point whose frozen
+// status the law contradicts most (the largest |p^|). The seed-size tube's unloading under the
+// fixed point: 13 points at the edge of the contact zone closed in tension when frozen closed
+// and penetrated when frozen open, together, update after update (doc/algorithms.md "Cycling").
 #include "algorithms/FixedPointLoop.hpp"
 #include "formulations/ContactControls.hpp"
+
+#include <cstddef>
+#include <vector>
 
 namespace contactlab {
 
@@ -18,16 +27,22 @@ class StatusLoop : public FixedPointLoop {
         controls_(controls) {}
 
   void freeze() override { controls_.freezeStatuses(true); }
-  bool update(const Vector& x, double t) override { return controls_.updateStatuses(x, t) > 0; }
+  bool update(const Vector& x, double t) override;
   bool changesStatuses() const override { return true; }
   // A forced point's frozen status is the forced one: the model's law decides it again.
   bool reviseForcedState(const Vector& x, double t) override { return update(x, t); }
 
  protected:
-  void release() override { controls_.freezeStatuses(false); }
+  void release() override {
+    controls_.freezeStatuses(false);
+    lastChanged_.clear();
+    oneAtATime_ = false;
+  }
 
  private:
   ContactControls& controls_;
+  std::vector<std::size_t> lastChanged_;  // the points the last update changed (not forced)
+  bool oneAtATime_ = false;
 };
 
 }  // namespace contactlab

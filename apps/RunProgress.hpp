@@ -18,9 +18,12 @@ class RunProgress {
       : enabled_(enabled), tty_(isatty(STDERR_FILENO)), endTime_(endTime) {}
   void iteration(const StaticSolver::IterateProgress& p, double elapsed) {
     if (!enabled_) return;
-    // How the step is being solved again, and the cycling treatment that changed the law at
-    // this iterate (its residual jumps then: the treated law's).
+    // How the step is being solved again, the fixed-point update that restarted Newton here,
+    // and the cycling treatment that changed the law at this iterate (its residual jumps then:
+    // the treated law's).
     std::string notes = *p.attempt ? std::string("  (") + p.attempt + ")" : std::string();
+    // Which fixed point moved: a step that goes round shows which one cycles.
+    if (*p.restartedBy) notes += std::string("  after a ") + p.restartedBy + " update";
     if (p.treatedPoints > 0)
       notes += "  cycling treatment at " + std::to_string(p.treatedPoints) + " point(s)";
     if (!tty_) {

@@ -44,6 +44,14 @@ enum class GeometricTerms { none, pairing, full };
 // A status forced by the cycling treatment: closed, the friction status following the iterate.
 constexpr int kForcedClosed = 3;
 
+// A contact point whose status the law gives at an iterate differs from its frozen one.
+struct StatusChange {
+  std::size_t point = 0;
+  int status = 0;        // the law's: 0 open, kForcedClosed closed
+  double violation = 0;  // |p^|, the status indicator: how far the frozen status is from holding
+  bool forced = false;   // held by a cycling treatment, which the change waits for
+};
+
 class ContactControls {
  public:
   virtual ~ContactControls() = default;
@@ -51,10 +59,13 @@ class ContactControls {
   // / the friction thresholds of the last evaluation, or release them.
   virtual void freezeStatuses(bool frozen) = 0;
   virtual void freezeThresholds(bool frozen) = 0;
-  // One fixed-point update at x, t: the contact statuses (thresholds) x gives with them released
-  // become the frozen ones. Returns how many contact statuses changed (the largest threshold change
-  // relative to the largest threshold).
-  virtual int updateStatuses(const Vector& x, double t) = 0;
+  // One fixed-point update of the statuses at x, t, in two halves: the contact statuses x gives
+  // with them released, where they differ from the frozen ones (nothing changes yet); then the
+  // changes the fixed point takes become frozen.
+  virtual std::vector<StatusChange> statusUpdate(const Vector& x, double t) = 0;
+  virtual void applyStatuses(const std::vector<StatusChange>& changes) = 0;
+  // One fixed-point update of the thresholds: those x gives with them released become the
+  // frozen ones. Returns the largest change relative to the largest threshold.
   virtual double updateThresholds(const Vector& x, double t) = 0;
   // Points whose status changed between the last two evaluations.
   virtual int statusChanges() const = 0;

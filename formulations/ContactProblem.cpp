@@ -154,20 +154,26 @@ void ContactProblem::evaluateAll(const Vector& x, double t) {
     kernel_->evaluate(pt, t, false, re, ke);
 }
 
-int ContactProblem::updateStatuses(const Vector& x, double t) {
-  std::vector<int> old(points_.size());
+std::vector<StatusChange> ContactProblem::statusUpdate(const Vector& x, double t) {
+  std::vector<int> frozen(points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    old[i] = points_[i].frozenStatus;
+    frozen[i] = points_[i].frozenStatus;
     points_[i].frozenStatus = -1;
   }
   evaluateAll(x, t);
-  int changed = 0;
+  std::vector<StatusChange> changes;
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    points_[i].frozenStatus = contactStatusOnly(points_[i].result.status);
-    // A point whose status the cycling treatment forces does not hold the fixed point up.
-    if (points_[i].frozenStatus != old[i] && points_[i].forcedStatus < 0) ++changed;
+    ContactPoint& pt = points_[i];
+    const int law = contactStatusOnly(pt.result.status);
+    pt.frozenStatus = frozen[i];
+    if (law != frozen[i]) changes.push_back({i, law, std::abs(pt.indicator), pt.forcedStatus >= 0});
   }
-  return changed;
+  return changes;
+}
+
+void ContactProblem::applyStatuses(const std::vector<StatusChange>& changes) {
+  for (const StatusChange& change : changes)
+    points_.at(change.point).frozenStatus = change.status;
 }
 
 double ContactProblem::updateThresholds(const Vector& x, double t) {

@@ -78,7 +78,8 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // ContactControls: the seam for the algorithms (fixed points, cycling treatments).
   void freezeStatuses(bool frozen) override;
   void freezeThresholds(bool frozen) override;
-  int updateStatuses(const Vector& x, double t) override;
+  std::vector<StatusChange> statusUpdate(const Vector& x, double t) override;
+  void applyStatuses(const std::vector<StatusChange>& changes) override;
   double updateThresholds(const Vector& x, double t) override;
   int statusChanges() const override { return statusChanges_; }
   double constraintResidual() const override { return constraintResidual_; }

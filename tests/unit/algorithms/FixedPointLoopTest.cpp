@@ -8,6 +8,7 @@
 
 #include <Tpetra_Core.hpp>
 
+#include <algorithm>
 #include <deque>
 #include <gtest/gtest.h>
 #include <string>
@@ -50,10 +51,20 @@ class RecordingSystem : public NonlinearSystem, public ContactControls {
   void freezeThresholds(bool frozen) override {
     freezes.push_back(std::string("thresholds ") + (frozen ? "frozen" : "released"));
   }
-  int updateStatuses(const Vector&, double) override {
+  // Points 0 .. n-1 change (n from the script), with the violations 1 .. n.
+  std::vector<StatusChange> statusUpdate(const Vector&, double) override {
     calls.push_back("statuses");
-    return pop(statusChangesScript, 0);
+    std::vector<StatusChange> changes;
+    for (int i = 0, n = pop(statusChangesScript, 0); i < n; ++i)
+      changes.push_back({static_cast<std::size_t>(i), 0, 1.0 + i, false});
+    return changes;
   }
+  void applyStatuses(const std::vector<StatusChange>& changes) override {
+    applied.emplace_back();
+    for (const StatusChange& change : changes)
+      applied.back().push_back(change.point);
+  }
+  std::vector<std::vector<std::size_t>> applied;  // each applyStatuses' points
   double updateThresholds(const Vector&, double) override {
     calls.push_back("thresholds");
     return pop(thresholdMoves, 0.0);
@@ -361,6 +372,47 @@ TEST(FixedPointLoops, ADivergingGeometryIsSolvedAgainWithTheGeometryInNewton) {
   const RunReport failed = runOneStep(off, options);
   EXPECT_EQ(failed.failure, "geometry-not-converged");
   EXPECT_EQ(failed.geometryRetries, 0);
+}
+
+// The 3D two-body Hertz pressed by a force under the fixed point: the residual at the updated
+// geometry goes 1.717, 1.597, 1.717, ... of the first. The failure at the cap says it cycles,
+// and every how many updates; falling values that pass near each other are no cycle.
+TEST(FixedPointLoops, AGeometryThatCyclesSaysSoAtItsCap) {
+  const auto failAtTheCap = [](std::deque<double> residuals) {
+    RecordingSystem system;
+    system.geometryMoves = std::deque<bool>(12, true);
+    system.geometryMoves.front() = false;
+    system.residualsAfterGeometryMoves = std::move(residuals);
+    auto options = optionsFor("partial-newton");
+    options.maxGeometryIterations = 10;
+    return runOneStep(system, options);
+  };
+  const RunReport period3 = failAtTheCap({0.5, 0.2, 0.3, 0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0.1});
+  EXPECT_EQ(period3.failure, "geometry-not-converged");
+  EXPECT_NE(period3.message.find("cycles: after 10 updates the residual at the updated geometry "
+                                 "repeats every 3 updates (0.2, 0.3, 0.1 of"),
+            std::string::npos)
+      << period3.message;
+  const RunReport falling =
+      failAtTheCap({0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4});
+  EXPECT_EQ(falling.message.find("cycles"), std::string::npos) << falling.message;
+}
+
+// The seed-size tube's unloading under the fixed point (doc/algorithms.md "Cycling"): the same
+// points change back at each status update. From the update that changes back exactly the
+// points the last one changed, one point a time, the most violated; a fixed point whose
+// changes differ from one update to the next takes them all.
+TEST(FixedPointLoops, StatusesThatChangeBackAreChangedOneAtATime) {
+  RecordingSystem cycling;
+  cycling.statusChangesScript = {3, 3, 3};
+  ASSERT_TRUE(runOneStep(cycling, optionsFor("fixed-point")).converged);
+  using Points = std::vector<std::vector<std::size_t>>;
+  EXPECT_EQ(cycling.applied, (Points{{0, 1, 2}, {2}, {2}, {}}));  // point 2: |p^| = 3
+
+  RecordingSystem converging;
+  converging.statusChangesScript = {3, 2};
+  ASSERT_TRUE(runOneStep(converging, optionsFor("fixed-point")).converged);
+  EXPECT_EQ(converging.applied, (Points{{0, 1, 2}, {0, 1}, {}}));
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ class OnePointSystem : public NonlinearSystem, public ContactControls {
   // ContactControls
   void freezeStatuses(bool) override {}
   void freezeThresholds(bool) override {}
-  int updateStatuses(const Vector&, double) override { return 0; }
+  std::vector<StatusChange> statusUpdate(const Vector&, double) override { return {}; }
+  void applyStatuses(const std::vector<StatusChange>&) override {}
   double updateThresholds(const Vector&, double) override { return 0; }
   int statusChanges() const override { return 0; }
   std::vector<ContactPointState> pointStates() const override {
