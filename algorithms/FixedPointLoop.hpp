@@ -74,11 +74,6 @@ class FixedPointLoop {
   // pairing starts the statuses and thresholds over; a threshold update does not, so the
   // statuses' cap stays per geometry update).
   virtual bool renewsInnerCaps() const { return false; }
-  // Whether the Newton solve after an update that moved may stop short of the step's target
-  // (StaticSolverOptions::geometryForcing): the geometry, whose next update moves the residual
-  // by more than the inexact solve leaves; not the statuses or thresholds, whose updates read
-  // the iterate itself.
-  virtual bool allowsInexactSolves() const { return false; }
   // Whether an update that moved changed contact statuses, which the cycling detector then
   // watches as it watches Newton's iterates (a status flipping between updates cycles too).
   virtual bool changesStatuses() const { return false; }

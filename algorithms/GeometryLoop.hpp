@@ -29,7 +29,6 @@ class GeometryLoop : public FixedPointLoop {
 
   bool update(const Vector& x, double t) override { return system_.updateGeometry(x, t); }
   bool renewsInnerCaps() const override { return true; }
-  bool allowsInexactSolves() const override { return true; }
   MovedStateTest testMovedState(const Vector& x, double t, double reference,
                                 Vector& residual) override;
   // At the cap, says whether the residual at the updated geometry had stopped falling, and

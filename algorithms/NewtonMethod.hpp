@@ -14,7 +14,10 @@ namespace contactlab {
 
 struct NewtonRequest {
   double time = 0;
-  double target = 0;              // converged when ||R|| <= target (and no status changed)
+  double target = 0;  // converged when ||R|| <= target (and no status changed)
+  // Converged, too, at forcing times the solve's first ||R||: an inexact solve between two
+  // fixed-point updates (StaticSolverOptions::fixedPointForcing).
+  double forcing = 0;
   int maxIterations = 20;         // linear solves allowed
   bool geometryInNewton = false;  // re-pair at every iterate (the generalized Newton)
   // An update that moves a displacement by more than this is scaled down to it (0: full

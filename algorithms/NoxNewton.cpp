@@ -16,6 +16,7 @@
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -287,10 +288,17 @@ NewtonOutcome NoxNewton::solve(Vector& x, const NewtonRequest& request, const Ob
   params->sublist("Printing").set("Output Processor", 0);
   params->sublist("Solver Options")
       .set<RCP<NOX::Observer>>("Observer", rcp(new IterateObserver(observer)));
-  auto normF = rcp(new NOX::StatusTest::NormF(request.target, NOX::StatusTest::NormF::Unscaled));
+  // NewtonRequest::forcing: the target raised to the forcing times the first ||R|| (the solver
+  // finds the residual at its initial guess computed and does not evaluate it again).
+  double target = request.target;
+  if (request.forcing > 0) {
+    group->computeF();
+    target = std::max(target, request.forcing * group->getNormF());
+  }
+  auto normF = rcp(new NOX::StatusTest::NormF(target, NOX::StatusTest::NormF::Unscaled));
   auto converged = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::AND));
   converged->addStatusTest(normF);
-  converged->addStatusTest(rcp(new ContactStatusTest(controls_, request.target)));
+  converged->addStatusTest(rcp(new ContactStatusTest(controls_, target)));
   auto maxIters = rcp(new NOX::StatusTest::MaxIters(request.maxIterations));
   auto finite = rcp(new NOX::StatusTest::FiniteValue);
   auto tests = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));

@@ -47,7 +47,8 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
   // Consecutive iterates with ||R|| > kStallFactor x the start's. Relative to the start alone:
   // a solve that iterates started above its target (one at or below it converges at once).
   int farIterates = 0;
-  std::vector<double> norms;  // this solve's ||R|| per iterate
+  std::vector<double> norms;       // this solve's ||R|| per iterate
+  NewtonRequest forced = request;  // the target raised by the forcing once ||R_0|| is known
   for (int it = 0;; ++it) {
     const auto evaluate = [&] {
       PhaseTimer timer(&out.assemblySeconds);
@@ -76,7 +77,10 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     }
     if (std::isfinite(norm) && observer.report) observer.report(it, norm);
     out.residual = norm;
-    if (it == 0) start = norm;
+    if (it == 0) {
+      start = norm;
+      forced.target = std::max(request.target, request.forcing * start);
+    }
     norms.push_back(norm);
     farIterates = norm > kStallFactor * start ? farIterates + 1 : 0;
     if (!std::isfinite(norm)) {
@@ -84,7 +88,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.message = "the residual is not finite at iteration " + std::to_string(it);
       return out;
     }
-    if (newtonConverged(norm, request, controls_, it)) return out;
+    if (newtonConverged(norm, forced, controls_, it)) return out;
     if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
       out.failure = "diverged";
       out.message = "Newton diverged: ||R|| grew to " + scientificText(norm);
@@ -107,8 +111,8 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.failure = "max-iterations";
       out.message = "Newton did not converge in " + std::to_string(out.iterations) +
                     " iterations (||R|| = " + scientificText(norm) + ", target " +
-                    scientificText(request.target);
-      if (controls_ != nullptr && norm <= request.target)
+                    scientificText(forced.target);
+      if (controls_ != nullptr && norm <= forced.target)
         out.message += "; the contact equations' residual as forces " +
                        scientificText(controls_->constraintResidual());
       out.message += ")";

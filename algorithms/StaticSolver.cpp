@@ -237,8 +237,6 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.geometryInNewton = geometryInNewton_;
   request.maxUpdate = maxUpdate;
   request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;
-  // The step's target; request.target is looser while a geometric fixed point still moves.
-  const double stepTarget = request.target;
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;
@@ -262,10 +260,13 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     while (k < loops_.size() && (loops_[k]->inNewton() || !loops_[k]->update(x, t)))
       ++k;
     if (k == loops_.size()) {
-      // An inexact solve whose update did not move the geometry: the step ends on a solve to
-      // its own target.
-      if (request.target > stepTarget) {
-        request.target = stepTarget;
+      // An inexact solve after which no fixed point moved: the step ends on a solve to its own
+      // target (unless this one got there anyway).
+      const bool onTarget =
+          outcome.residual <= request.target &&
+          (controls_ == nullptr || controls_->constraintResidual() <= request.target);
+      if (request.forcing > 0 && !onTarget) {
+        request.forcing = 0;
         continue;
       }
       // A forced state that violates the model's law is not a solution: Newton goes on from
@@ -292,15 +293,10 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     // its remaining updates would climb on (the NAFEMS roller: 25 more, 140 Newton iterations).
     if (geometryRetryApplies() && moved.cannotConverge())
       return fail(moved.failure(), moved.failureMessage());
-    request.target = stepTarget;
-    // Inexact solves between geometry updates (doc/algorithms.md): the next update moves the
-    // residual by a fraction of the last one's (5 to 10 times less, converging), so solving
-    // below Geometry Forcing times it buys nothing. Only where the loops inside the moved one
-    // are in Newton: a status or threshold fixed point reads the iterate itself.
-    const bool innerInNewton = std::all_of(loops_.begin(), loops_.begin() + k,
-                                           [](const auto& inner) { return inner->inNewton(); });
-    if (test.tested && moved.allowsInexactSolves() && innerInNewton)
-      request.target = std::max(stepTarget, options_.geometryForcing * test.residual);
+    // Inexact solves between fixed-point updates (doc/algorithms.md): the next update moves
+    // the residual by a fraction of the last one's (5 to 10 times less, converging), so
+    // solving below Fixed Point Forcing times it buys nothing.
+    request.forcing = options_.fixedPointForcing;
   }
 }
 

@@ -64,9 +64,10 @@ struct StaticSolverOptions {
   // A step whose geometric fixed point diverged (FixedPointLoop::diverged) is solved again with
   // the geometry in Newton and its full terms (the contact controls' GeometricTerms::full).
   bool geometryRetry = true;
-  // While a geometric fixed point still moves, the Newton solve between two of its updates
-  // stops at geometryForcing times the residual the last update left (0: at the step's target).
-  double geometryForcing = 1e-2;
+  // While a fixed point (statuses, thresholds, geometry) still moves, the Newton solve after
+  // one of its updates stops at fixedPointForcing times the residual the update left
+  // (NewtonRequest::forcing; 0: at the step's target).
+  double fixedPointForcing = 1e-2;
   // The largest displacement a plain Newton update may make when a step whose full steps failed
   // is solved again, as a fraction of the model's size (NonlinearSystem::modelSize); 0: no
   // such retry.

@@ -73,13 +73,13 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "Iterations. Its halved steps take more iterations than full steps, and the cut it "
          "saves costs the whole step again: with Max Iterations the hex8 tube's retries "
          "stopped at 2e-4 from converging and cut (doc/algorithms.md \"Line search retry\")");
-  p->set("Geometry Forcing", 1e-2,
-         "Contact, geometry as a fixed point: while the geometry still moves, the Newton solve "
-         "between two of its updates stops at Geometry Forcing times the residual the last "
-         "update left (never below the step's own target), since the next update moves the "
-         "residual by more than that; a step ends only on a solve to the step's target. In "
-         "[0, 1); 0: every solve to the step's target (doc/algorithms.md \"Inexact solves "
-         "between geometry updates\")");
+  p->set("Fixed Point Forcing", 1e-2,
+         "Contact, a fixed point (statuses, thresholds or geometry, as the Algorithm says): "
+         "while it still moves, the Newton solve after one of its updates stops at Fixed Point "
+         "Forcing times the residual the update left (never below the step's own target), "
+         "since the next update moves the residual by more than that; a step ends only on a "
+         "solve to the step's target. In [0, 1); 0: every solve to the step's target "
+         "(doc/algorithms.md \"Inexact solves between fixed-point updates\")");
   p->set("Geometry Retry", true,
          "A load step whose geometric fixed point diverged (the residual at the updated "
          "geometry ended above the step's first and 100 times above its lowest: a master whose "
@@ -231,10 +231,10 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   o.lineSearchRetry = newton.get<std::string>("Line Search Retry");
   o.retryMaxIterations = newton.get<int>("Line Search Retry Max Iterations");
   o.geometryRetry = newton.get<bool>("Geometry Retry");
-  o.geometryForcing = newton.get<double>("Geometry Forcing");
-  if (!(o.geometryForcing >= 0 && o.geometryForcing < 1))
-    throw std::invalid_argument("Newton/Geometry Forcing must be in [0, 1) (got " +
-                                scientificText(o.geometryForcing) +
+  o.fixedPointForcing = newton.get<double>("Fixed Point Forcing");
+  if (!(o.fixedPointForcing >= 0 && o.fixedPointForcing < 1))
+    throw std::invalid_argument("Newton/Fixed Point Forcing must be in [0, 1) (got " +
+                                scientificText(o.fixedPointForcing) +
                                 "; 0: every solve to the step's target)");
   if (o.retryMaxIterations < 0)
     throw std::invalid_argument(

@@ -56,7 +56,7 @@ for method in ["generalized-newton", "partial-newton", "fixed-point"]:
                 check(label + " says Newton cycles", "Newton cycles" in (s["message"] or ""))
                 # The kind it meets first follows the path: partial Newton at mu = 0.45 met
                 # sub-cycling 1 until the inexact solves between geometry updates, a contact
-                # flip-flop since (doc/algorithms.md "Inexact solves between geometry updates").
+                # flip-flop since (doc/algorithms.md "Inexact solves between fixed-point updates").
                 check(label + " detects cycling", sum(s["cycling"].values()) > 0)
         else:
             if treatment == "forced" and method != "fixed-point" and float(mu) < 1:

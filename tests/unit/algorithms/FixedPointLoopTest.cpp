@@ -21,9 +21,11 @@ class RecordingSystem : public NonlinearSystem, public ContactControls {
  public:
   RecordingSystem() : map_(Teuchos::rcp(new Map(1, 0, Tpetra::getDefaultComm()))) {}
 
-  std::vector<std::string> calls;    // "newton" and each fixed-point update, in order
-  std::vector<double> targets;       // each Newton solve's target residual, in order
-  std::vector<std::string> freezes;  // freezeStatuses / freezeThresholds, in order
+  std::vector<std::string> calls;       // "newton" and each fixed-point update, in order
+  std::vector<double> targets;          // each Newton solve's target residual, in order
+  std::vector<double> forcings;         // each Newton solve's forcing, in order
+  bool inexactSolvesStopShort = false;  // a solve with a forcing ends above its target
+  std::vector<std::string> freezes;     // freezeStatuses / freezeThresholds, in order
   std::deque<int> statusChangesScript;
   std::deque<double> thresholdMoves;
   std::deque<bool> geometryMoves;  // the first answers the pairing at the step's start
@@ -100,8 +102,11 @@ class RecordingNewton : public NewtonMethod {
   NewtonOutcome solve(Vector&, const NewtonRequest& request, const Observer&) override {
     system_.calls.push_back(request.geometryInNewton ? "newton+geometry" : "newton");
     system_.targets.push_back(request.target);
+    system_.forcings.push_back(request.forcing);
     NewtonOutcome out;
     out.iterations = 1;
+    // A solve converges to 0, or with a forcing to just above the target, when told so.
+    out.residual = system_.inexactSolvesStopShort && request.forcing > 0 ? 2 * request.target : 0;
     return out;
   }
 
@@ -191,9 +196,10 @@ TEST(FixedPointLoops, LoopsInNewtonAreNeitherFrozenNorUpdated) {
   system.statusChangesScript = {1, 1, 1};
   system.thresholdMoves = {1.0, 1.0};
   system.geometryMoves = {false, true, false};
+  system.inexactSolvesStopShort = true;
   const RunReport report = runOneStep(system, optionsFor("partial-newton"));
   ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
-  // The solve after the move stops short of the step's target (Geometry Forcing), and the
+  // The solve after the move stops short of the step's target (Fixed Point Forcing), and the
   // step ends on one to its target.
   EXPECT_EQ(system.calls,
             (Calls{"geometry", "newton", "geometry", "newton", "geometry", "newton", "geometry"}));
@@ -311,39 +317,46 @@ TEST(FixedPointLoops, AGeometryThatStagnatesAboveItsToleranceSaysWhichToleranceA
       << diverging.message;
 }
 
-// Newton/Geometry Forcing (doc/algorithms.md "Inexact solves between geometry updates"): after
-// a geometry update that moved, Newton stops at the forcing times the residual the update left;
-// the step ends on a solve to its own target. Not under the fixed point, whose status loop reads
-// the iterate.
-TEST(FixedPointLoops, BetweenGeometryUpdatesNewtonStopsAtTheForcingTimesTheMovedResidual) {
+// Newton/Fixed Point Forcing (doc/algorithms.md "Inexact solves between fixed-point updates"):
+// after an update that moved, of any fixed point, Newton stops at the forcing times the residual
+// the update left; the step ends on a solve to its own target.
+TEST(FixedPointLoops, AfterAFixedPointUpdateNewtonStopsAtTheForcingTimesTheMovedResidual) {
   RecordingSystem system;  // every residual 1 until a move: the step's target is 1e-8
   system.geometryMoves = {false, true, true, false, false};
   system.residualsAfterGeometryMoves = {1e-2, 1e-4};
+  system.inexactSolvesStopShort = true;
   const RunReport report = runOneStep(system, optionsFor("partial-newton"));
   ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
   EXPECT_EQ(system.calls, (Calls{"geometry", "newton", "geometry", "newton", "geometry", "newton",
                                  "geometry", "newton", "geometry"}));
-  ASSERT_EQ(system.targets.size(), 4u);
-  EXPECT_DOUBLE_EQ(system.targets[0], 1e-8);
-  EXPECT_DOUBLE_EQ(system.targets[1], 1e-4);  // 1e-2 x 1e-2
-  EXPECT_DOUBLE_EQ(system.targets[2], 1e-6);
-  EXPECT_DOUBLE_EQ(system.targets[3], 1e-8);  // the geometry settled: the step's own target
+  EXPECT_EQ(system.targets, (std::vector<double>(4, 1e-8)));
+  // The geometry settled after the third solve: the fourth is to the step's own target.
+  EXPECT_EQ(system.forcings, (std::vector<double>{0, 1e-2, 1e-2, 0}));
+  // Where an inexact solve reached the step's target anyway, that one ends the step.
+  RecordingSystem onTarget;
+  onTarget.geometryMoves = {false, true, false};
+  ASSERT_TRUE(runOneStep(onTarget, optionsFor("partial-newton")).converged);
+  EXPECT_EQ(onTarget.forcings, (std::vector<double>{0, 1e-2}));
   EXPECT_EQ(report.geometryIterations, 2);
 
   RecordingSystem exact;
   exact.geometryMoves = {false, true, true, false};
   exact.residualsAfterGeometryMoves = {1e-2, 1e-4};
   auto options = optionsFor("partial-newton");
-  options.geometryForcing = 0;
+  options.fixedPointForcing = 0;
   ASSERT_TRUE(runOneStep(exact, options).converged);
-  EXPECT_EQ(exact.targets, (std::vector<double>{1e-8, 1e-8, 1e-8}));
+  EXPECT_EQ(exact.forcings, (std::vector<double>{0, 0, 0}));
 
+  // The fixed point's statuses and thresholds too: after each update that moved.
   RecordingSystem fixedPoint;
-  fixedPoint.geometryMoves = {false, true, false};
-  fixedPoint.residualsAfterGeometryMoves = {1e-2};
+  fixedPoint.statusChangesScript = {2};
+  fixedPoint.thresholdMoves = {1.0};
+  fixedPoint.inexactSolvesStopShort = true;
   ASSERT_TRUE(runOneStep(fixedPoint, optionsFor("fixed-point")).converged);
-  for (double target : fixedPoint.targets)
-    EXPECT_DOUBLE_EQ(target, 1e-8);
+  EXPECT_EQ(fixedPoint.calls, (Calls{"geometry", "newton", "statuses", "newton", "statuses",
+                                     "thresholds", "newton", "statuses", "thresholds", "geometry",
+                                     "newton", "statuses", "thresholds", "geometry"}));
+  EXPECT_EQ(fixedPoint.forcings, (std::vector<double>{0, 1e-2, 1e-2, 0}));
 }
 
 // Newton/Geometry Retry (doc/algorithms.md "Geometry retry"): the diverging fixed point is given

@@ -3,12 +3,16 @@
 // of Newton's failures (a tangent that flattens away from the root, a 2-cycle) for the tests of
 // the static solver's remedies.
 #include "algorithms/NewtonMethod.hpp"
+#include "algorithms/PlainNewton.hpp"
 #include "core/problem/NonlinearSystem.hpp"
+#include "linear/Klu2Solver.hpp"
 
 #include <Tpetra_Core.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <utility>
+#include <vector>
 
 namespace contactlab::test {
 
@@ -55,6 +59,20 @@ inline NewtonRequest newtonRequest(double target, int maxIterations) {
   r.target = target;
   r.maxIterations = maxIterations;
   return r;
+}
+
+// A PlainNewton solve from x = 0 of a system whose ||R|| follows a script: the next value at
+// each evaluation, whatever the iterate, and the last one from then on (dR/dx = 1).
+inline NewtonOutcome solveScripted(const std::vector<double>& history,
+                                   const NewtonRequest& request) {
+  std::size_t evaluations = 0;
+  ScalarSystem system(
+      [&](double, double) { return history[std::min(evaluations++, history.size() - 1)]; },
+      [](double, double) { return 1.0; }, 1.0);
+  Klu2Solver solver({}, Tpetra::getDefaultComm());
+  PlainNewton newton(system, solver, nullptr);
+  auto x = system.createVector();
+  return newton.solve(*x, request, {});
 }
 
 }  // namespace contactlab::test

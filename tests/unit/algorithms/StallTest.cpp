@@ -5,11 +5,8 @@
 // scripted: the system returns the next value of its list at each evaluation, whatever the iterate.
 #include "ScalarSystem.hpp"
 
-#include "algorithms/PlainNewton.hpp"
 #include "algorithms/StaticSolver.hpp"
-#include "linear/Klu2Solver.hpp"
 
-#include <algorithm>
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -17,16 +14,9 @@ namespace contactlab {
 namespace {
 
 NewtonOutcome solveWithHistory(const std::vector<double>& history, int stallIterations) {
-  std::size_t evaluations = 0;
-  test::ScalarSystem system(
-      [&](double, double) { return history[std::min(evaluations++, history.size() - 1)]; },
-      [](double, double) { return 1.0; }, 1.0);
-  Klu2Solver solver({}, Tpetra::getDefaultComm());
-  PlainNewton newton(system, solver, nullptr);
   NewtonRequest request = test::newtonRequest(1e-10, 20);
   request.stallIterations = stallIterations;
-  auto x = system.createVector();
-  return newton.solve(*x, request, {});
+  return test::solveScripted(history, request);
 }
 
 // Start 1, then eight iterates above 100: the eighth gives up (8 linear solves).
