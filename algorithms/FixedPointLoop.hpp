@@ -60,11 +60,10 @@ class FixedPointLoop {
   virtual std::string failureMessage() const {
     return identity_.capBefore + std::to_string(updates_) + identity_.capAfter;
   }
-  // Whether the updates went away from a solution rather than towards it or onto a floor (the
-  // geometry: GeometryLoop), so that more updates the same way cannot help: StaticSolver gives
-  // such a loop up before its cap where another way to solve the step takes over (the
-  // geometry retry).
-  virtual bool cannotConverge() const { return false; }
+  // After a failure at the cap: whether the updates went away from a solution rather than
+  // towards it or onto a floor (the geometry: GeometryLoop), so that going on the same way, with
+  // a line search or a shorter step, cannot help.
+  virtual bool diverged() const { return false; }
   void recordUpdate(StepReport& report) {
     ++updates_;
     ++(report.*identity_.counter);

@@ -34,15 +34,14 @@ class GeometryLoop : public FixedPointLoop {
   // At the cap, says whether the residual at the updated geometry had stopped falling, and
   // which Geometry Tolerance would have accepted it.
   std::string failureMessage() const override;
-  // The residual at the updated geometry diverges: StaticSolver's geometry retry then puts the
-  // geometry in Newton.
-  bool cannotConverge() const override { return diverged(); }
-  // It ended above the step's first one and 100 times above the lowest it reached.
-  bool diverged() const;
-  // 2 or 3 where its last values repeat those one period before, each to 1e-3, over two
-  // periods (a pairing that sends the iterate to another, which sends it back); 0 otherwise.
-  // Said in the failure only: on the one model measured (the 3D two-body Hertz pressed by a
-  // force, under the fixed point) the geometry retry fails there too, in twice the time.
+  // The residual at the updated geometry ended above the step's first one and 100 times above
+  // the lowest it reached (StaticSolver's geometry retry then puts the geometry in Newton).
+  bool diverged() const override;
+  // The period of the residual at the updated geometry: 2 or 3 where its last values repeat those
+  // one period before, each to 1e-3, over two periods (a pairing that sends the iterate to another,
+  // which sends it back); 0 otherwise. Said in the failure only: on the one model measured (the 3D
+  // two-body Hertz pressed by a force, under the fixed point) the geometry retry fails there too,
+  // in twice the time.
   int cyclePeriod() const;
 
  protected:

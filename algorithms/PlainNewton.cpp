@@ -47,8 +47,8 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
   // Consecutive iterates with ||R|| > kStallFactor x the start's. Relative to the start alone:
   // a solve that iterates started above its target (one at or below it converges at once).
   int farIterates = 0;
-  std::vector<double> norms;       // this solve's ||R|| per iterate
-  NewtonRequest forced = request;  // the target raised by the forcing once ||R_0|| is known
+  std::vector<double> norms;            // this solve's ||R|| per iterate
+  NewtonRequest withForcing = request;  // the target raised by the forcing once ||R_0|| is known
   for (int it = 0;; ++it) {
     const auto evaluate = [&] {
       PhaseTimer timer(&out.assemblySeconds);
@@ -79,7 +79,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
     out.residual = norm;
     if (it == 0) {
       start = norm;
-      forced.target = std::max(request.target, request.forcing * start);
+      withForcing.target = std::max(request.target, request.forcing * start);
     }
     norms.push_back(norm);
     farIterates = norm > kStallFactor * start ? farIterates + 1 : 0;
@@ -88,7 +88,7 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.message = "the residual is not finite at iteration " + std::to_string(it);
       return out;
     }
-    if (newtonConverged(norm, forced, controls_, it)) return out;
+    if (newtonConverged(norm, withForcing, controls_, it)) return out;
     if (it > 0 && norm > 1e10 * std::max(start, request.target)) {
       out.failure = "diverged";
       out.message = "Newton diverged: ||R|| grew to " + scientificText(norm);
@@ -111,8 +111,8 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       out.failure = "max-iterations";
       out.message = "Newton did not converge in " + std::to_string(out.iterations) +
                     " iterations (||R|| = " + scientificText(norm) + ", target " +
-                    scientificText(forced.target);
-      if (controls_ != nullptr && norm <= forced.target)
+                    scientificText(withForcing.target);
+      if (controls_ != nullptr && norm <= withForcing.target)
         out.message += "; the contact equations' residual as forces " +
                        scientificText(controls_->constraintResidual());
       out.message += ")";

@@ -262,10 +262,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     if (k == loops_.size()) {
       // An inexact solve after which no fixed point moved: the step ends on a solve to its own
       // target (unless this one got there anyway).
-      const bool onTarget =
-          outcome.residual <= request.target &&
-          (controls_ == nullptr || controls_->constraintResidual() <= request.target);
-      if (request.forcing > 0 && !onTarget) {
+      if (request.forcing > 0 && !newtonConverged(outcome.residual, request, controls_, 0)) {
         request.forcing = 0;
         continue;
       }
@@ -291,7 +288,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     }
     // A fixed point that diverges is given up at once where the geometry retry takes it over:
     // its remaining updates would climb on (the NAFEMS roller: 25 more, 140 Newton iterations).
-    if (geometryRetryApplies() && moved.cannotConverge())
+    if (geometryRetryApplies() && moved.diverged())
       return fail(moved.failure(), moved.failureMessage());
     // Inexact solves between fixed-point updates (doc/algorithms.md): the next update moves
     // the residual by a fraction of the last one's (5 to 10 times less, converging), so
@@ -402,7 +399,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       // The retries after it, if it fails, keep the geometry in Newton.
       std::optional<GeometryInNewton> geometryInNewton;
       if (!ok && geometryRetryApplies() && report.failure == "geometry-not-converged" &&
-          loops_.back()->cannotConverge()) {
+          loops_.back()->diverged()) {
         ++report.geometryRetries;
         geometryInNewton.emplace(*this);
         ok = sr.geometryRetry = solveAgain(newton_, 0, "geometry retry",

@@ -99,7 +99,8 @@ class RecordingSystem : public NonlinearSystem, public ContactControls {
 class RecordingNewton : public NewtonMethod {
  public:
   explicit RecordingNewton(RecordingSystem& system) : system_(system) {}
-  NewtonOutcome solve(Vector&, const NewtonRequest& request, const Observer&) override {
+  NewtonOutcome solve(Vector&, const NewtonRequest& request, const Observer& observer) override {
+    if (observer.report) observer.report(0, 1.0);  // the solve's first iterate
     system_.calls.push_back(request.geometryInNewton ? "newton+geometry" : "newton");
     system_.targets.push_back(request.target);
     system_.forcings.push_back(request.forcing);
@@ -132,11 +133,12 @@ std::vector<std::string> describe(const std::vector<std::unique_ptr<FixedPointLo
   return out;
 }
 
-RunReport runOneStep(RecordingSystem& system, const StaticSolverOptions& options) {
+RunReport runOneStep(RecordingSystem& system, const StaticSolverOptions& options,
+                     const StaticSolver::IterationCallback& onIteration = {}) {
   RecordingNewton newton(system);
   StaticSolver solver(system, &system, newton, options);
   auto u = system.createVector();
-  return solver.run(*u, {});
+  return solver.run(*u, {}, onIteration);
 }
 
 using Calls = std::vector<std::string>;
@@ -189,6 +191,21 @@ TEST(FixedPointLoops, TheInnermostLoopThatMovesRestartsNewtonAndTheOuterOnesWait
   // Released at the step's start, frozen at the state of its first assembly.
   EXPECT_EQ(system.freezes, (Calls{"statuses released", "thresholds released", "statuses frozen",
                                    "thresholds frozen"}));
+}
+
+// The progress line's "after a statuses update": each Newton solve's first iterate names the
+// fixed point whose update restarted Newton (none for the step's first solve).
+TEST(FixedPointLoops, EachSolvesFirstIterateNamesTheFixedPointThatRestartedNewton) {
+  RecordingSystem system;
+  system.statusChangesScript = {1};
+  system.thresholdMoves = {1.0};
+  system.geometryMoves = {false, true};
+  std::vector<std::string> restartedBy;
+  const RunReport report = runOneStep(
+      system, optionsFor("fixed-point"),
+      [&](const StaticSolver::IterateProgress& p) { restartedBy.push_back(p.restartedBy); });
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(restartedBy, (Calls{"", "statuses", "thresholds", "geometry"}));
 }
 
 TEST(FixedPointLoops, LoopsInNewtonAreNeitherFrozenNorUpdated) {
@@ -332,12 +349,13 @@ TEST(FixedPointLoops, AfterAFixedPointUpdateNewtonStopsAtTheForcingTimesTheMoved
   EXPECT_EQ(system.targets, (std::vector<double>(4, 1e-8)));
   // The geometry settled after the third solve: the fourth is to the step's own target.
   EXPECT_EQ(system.forcings, (std::vector<double>{0, 1e-2, 1e-2, 0}));
+  EXPECT_EQ(report.geometryIterations, 2);
+
   // Where an inexact solve reached the step's target anyway, that one ends the step.
   RecordingSystem onTarget;
   onTarget.geometryMoves = {false, true, false};
   ASSERT_TRUE(runOneStep(onTarget, optionsFor("partial-newton")).converged);
   EXPECT_EQ(onTarget.forcings, (std::vector<double>{0, 1e-2}));
-  EXPECT_EQ(report.geometryIterations, 2);
 
   RecordingSystem exact;
   exact.geometryMoves = {false, true, true, false};
