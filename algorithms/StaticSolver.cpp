@@ -271,15 +271,30 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
       if (forcedStateHolds(x, t, request.target, *residual)) return accepted();
       continue;
     }
+    // Counts loop `index`'s update that moved, within its cap (false: the cap was reached).
+    const auto countUpdate = [&](std::size_t index) {
+      FixedPointLoop& loop = *loops_[index];
+      progress.restartedBy = loop.name().c_str();
+      if (loop.updates() == loop.maxUpdates()) return false;
+      loop.recordUpdate(sr);
+      if (loop.renewsInnerCaps())
+        for (std::size_t inner = 0; inner < index; ++inner)
+          loops_[inner]->renewCap();
+      return true;
+    };
     FixedPointLoop& moved = *loops_[k];
-    progress.restartedBy = moved.name().c_str();
     // A status that flips from one fixed-point update to the next cycles too.
     if (moved.changesStatuses()) treatCycling(detector_.observe(controls_->pointStates()), sr);
-    if (moved.updates() == moved.maxUpdates()) return fail(moved.failure(), moved.failureMessage());
-    moved.recordUpdate(sr);
-    if (moved.renewsInnerCaps())
-      for (std::size_t inner = 0; inner < k; ++inner)
-        loops_[inner]->renewCap();
+    if (!countUpdate(k)) return fail(moved.failure(), moved.failureMessage());
+    // A loop that cycles at what the fixed point around it holds frozen lets that one update
+    // too before Newton restarts (the dragged pad: a stale friction threshold, with which no
+    // status of its point held). Not a farther one: the geometry re-pairs from any state.
+    std::size_t outer = k + 1;
+    while (outer < loops_.size() && loops_[outer]->inNewton())
+      ++outer;
+    if (moved.cyclesAtFrozenSurroundings() && outer < loops_.size() &&
+        loops_[outer]->update(x, t) && !countUpdate(outer))
+      return fail(loops_[outer]->failure(), loops_[outer]->failureMessage());
     const FixedPointLoop::MovedStateTest test = moved.testMovedState(x, t, reference, *residual);
     if (test.tested) {
       sr.residual = test.residual;

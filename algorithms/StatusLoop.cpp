@@ -14,7 +14,15 @@ bool StatusLoop::update(const Vector& x, double t) {
   // All of them at once sends the iterate back to where the last update came from. One at a
   // time is the single-exchange rule of active-set methods for complementarity problems: from
   // each state the most violated status is put right, and the others are judged again.
-  if (!changed.empty() && changed == lastChanged_) oneAtATime_ = true;
+  const bool reversed = !changed.empty() && changed == lastChanged_;
+  if (reversed) oneAtATime_ = true;
+  // A reversal that opens the points the iterate holds closed in tension says their frozen
+  // friction thresholds are stale: read there, where every other point holds, the thresholds
+  // give those points none (a threshold update from the iterate with them open and
+  // penetrating makes the other points carry their load, and cycled at r_n >= 1e2 E/h).
+  thresholdsStale_ =
+      reversed && std::all_of(changes.begin(), changes.end(),
+                              [](const StatusChange& c) { return c.forced || c.status == 0; });
   if (oneAtATime_ && changed.size() > 1) {
     const auto largest = std::max_element(
         changes.begin(), changes.end(), [](const StatusChange& a, const StatusChange& b) {

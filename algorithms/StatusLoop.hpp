@@ -8,6 +8,11 @@
 // status the law contradicts most (the largest |p^|). The seed-size tube's unloading under the
 // fixed point: 13 points at the edge of the contact zone closed in tension when frozen closed
 // and penetrated when frozen open, together, update after update (doc/algorithms.md "Cycling").
+// Such an update, when it opens points the iterate held closed, also lets the friction
+// thresholds update before Newton restarts (cyclesAtFrozenSurroundings): a point whose frozen
+// threshold is stale may have no status that holds (the dragged pad under the fixed point:
+// closed, its frozen friction pulled it into tension; open, it had none and penetrated; the
+// seed's pad fails there untreated, and every r_n of the extremes study did with `automatic`).
 #include "algorithms/FixedPointLoop.hpp"
 #include "formulations/ContactControls.hpp"
 
@@ -29,6 +34,7 @@ class StatusLoop : public FixedPointLoop {
   void freeze() override { controls_.freezeStatuses(true); }
   bool update(const Vector& x, double t) override;
   bool changesStatuses() const override { return true; }
+  bool cyclesAtFrozenSurroundings() const override { return thresholdsStale_; }
   // A forced point's frozen status is the forced one: the model's law decides it again.
   bool reviseForcedState(const Vector& x, double t) override { return update(x, t); }
 
@@ -37,12 +43,15 @@ class StatusLoop : public FixedPointLoop {
     controls_.freezeStatuses(false);
     lastChanged_.clear();
     oneAtATime_ = false;
+    thresholdsStale_ = false;
   }
 
  private:
   ContactControls& controls_;
   std::vector<std::size_t> lastChanged_;  // the points the last update changed (not forced)
   bool oneAtATime_ = false;
+  // The last update opened back the points the one before closed.
+  bool thresholdsStale_ = false;
 };
 
 }  // namespace contactlab

@@ -53,12 +53,13 @@ class RecordingSystem : public NonlinearSystem, public ContactControls {
   void freezeThresholds(bool frozen) override {
     freezes.push_back(std::string("thresholds ") + (frozen ? "frozen" : "released"));
   }
-  // Points 0 .. n-1 change (n from the script), with the violations 1 .. n.
+  // Points 0 .. n-1 change (n from the script) to changedStatus, with the violations 1 .. n.
+  int changedStatus = 0;  // open
   std::vector<StatusChange> statusUpdate(const Vector&, double) override {
     calls.push_back("statuses");
     std::vector<StatusChange> changes;
     for (int i = 0, n = pop(statusChangesScript, 0); i < n; ++i)
-      changes.push_back({static_cast<std::size_t>(i), 0, 1.0 + i, false});
+      changes.push_back({static_cast<std::size_t>(i), changedStatus, 1.0 + i, false});
     return changes;
   }
   void applyStatuses(const std::vector<StatusChange>& changes) override {
@@ -444,6 +445,37 @@ TEST(FixedPointLoops, StatusesThatChangeBackAreChangedOneAtATime) {
   converging.statusChangesScript = {3, 2};
   ASSERT_TRUE(runOneStep(converging, optionsFor("fixed-point")).converged);
   EXPECT_EQ(converging.applied, (Points{{0, 1, 2}, {0, 1}, {}}));
+}
+
+// A status update that opens back the points the last one closed says the frozen friction
+// thresholds are stale (a point closed under a threshold its pressure cannot carry is pulled into
+// tension; open, it penetrates): the thresholds update at that iterate before Newton restarts. A
+// reversal that closes points does not (read with them open and penetrating, the thresholds make
+// the other points carry their load).
+TEST(FixedPointLoops, StatusesThatOpenBackLetTheThresholdsUpdateBeforeNewtonRestarts) {
+  RecordingSystem opening;
+  opening.statusChangesScript = {1, 1, 0};
+  opening.thresholdMoves = {0.1, 0.0};
+  std::vector<std::string> restartedBy;
+  const RunReport report = runOneStep(
+      opening, optionsFor("fixed-point"),
+      [&](const StaticSolver::IterateProgress& p) { restartedBy.push_back(p.restartedBy); });
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(restartedBy, (Calls{"", "statuses", "thresholds"}));
+  EXPECT_EQ(opening.calls, (Calls{"geometry", "newton", "statuses",    // point 0 changed
+                                  "newton", "statuses", "thresholds",  // changed back: stale
+                                  "newton", "statuses", "thresholds", "geometry"}));
+  EXPECT_EQ(report.statusIterations, 2);
+  EXPECT_EQ(report.thresholdIterations, 1);
+
+  RecordingSystem closing;
+  closing.changedStatus = kForcedClosed;
+  closing.statusChangesScript = {1, 1, 0};
+  closing.thresholdMoves = {0.1, 0.0};
+  ASSERT_TRUE(runOneStep(closing, optionsFor("fixed-point")).converged);
+  EXPECT_EQ(closing.calls, (Calls{"geometry", "newton", "statuses", "newton", "statuses", "newton",
+                                  "statuses", "thresholds",  // the usual order
+                                  "newton", "statuses", "thresholds", "geometry"}));
 }
 
 }  // namespace

@@ -160,6 +160,36 @@ TEST(StaticSolverForcedTreatment, AViolatingStateThatNewtonCannotLeaveIsNamed) {
   EXPECT_NE(report.message.find("max-iterations"), std::string::npos) << report.message;
 }
 
+// A point forced closed holds the friction threshold it had when forced, and the threshold
+// fixed point's frozen value keeps it through its updates. Once the forcing is released the
+// thresholds are read from the law again, and a threshold that moves means the forced state is
+// not a solution: Newton goes on (the ironing under penalty and the fixed point ended with a
+// stick traction of 3.6 mu p otherwise).
+class ThresholdsMoveOnceReleased : public OnePointSystem {
+ public:
+  ThresholdsMoveOnceReleased() : OnePointSystem(/*natural=*/1.0) {}
+  int thresholdUpdates = 0;
+  double updateThresholds(const Vector&, double) override {
+    // The first update runs with the point forced; the second, once it is released, moves.
+    return ++thresholdUpdates == 2 ? 0.5 : 0.0;
+  }
+};
+
+TEST(StaticSolverForcedTreatment, ThresholdsHeldByTheForcingAreReadFromTheLawOnRelease) {
+  ThresholdsMoveOnceReleased system;
+  ScriptedNewton newton(system, /*naturalFails=*/false);
+  StaticSolverOptions options;
+  options.cyclingTreatment = "forced";
+  options.statusesInNewton = false;
+  options.thresholdsInNewton = false;
+  StaticSolver solver(system, &system, newton, options);
+  auto u = system.createVector();
+  const RunReport report = solver.run(*u, {});
+  ASSERT_TRUE(report.converged) << report.failure << ": " << report.message;
+  EXPECT_EQ(newton.solves, 2);  // once forced, once more from the released state
+  EXPECT_EQ(system.thresholdUpdates, 3);
+}
+
 // Fails the first attempt at every step and solves the retry: each step converges only after
 // a cut, so the step never grows back. After 100 solves it solves everything (the bound that
 // lets a run without the floor end instead of creeping towards t = 1 forever).
