@@ -144,7 +144,7 @@ void ContactProblem::freezeStatuses(bool frozen) {
 
 void ContactProblem::freezeThresholds(bool frozen) {
   for (ContactPoint& pt : points_)
-    pt.frozenThreshold = frozen ? pt.threshold : -1.0;
+    pt.frozenThreshold = frozen ? std::max(pt.threshold, 0.0) : -1.0;
 }
 
 void ContactProblem::evaluateAll(const Vector& x, double t) {
@@ -186,7 +186,9 @@ double ContactProblem::updateThresholds(const Vector& x, double t) {
   double change = 0, largest = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     ContactPoint& pt = points_[i];
-    pt.frozenThreshold = pt.threshold;
+    // A negative threshold (mu p^ of a point closed in tension) freezes at zero: a negative
+    // frozen threshold would mean "not frozen", its friction following the iterate.
+    pt.frozenThreshold = std::max(pt.threshold, 0.0);
     change = std::max(change, std::abs(pt.threshold - std::max(old[i], 0.0)));
     largest = std::max(largest, pt.threshold);
   }

@@ -283,6 +283,29 @@ TEST_P(ContactProblemTest, StackedBlocksTransmitThePressure) {
   EXPECT_NEAR(-s.topReaction, p, tol);
 }
 
+// The threshold fixed point reads mu p^ at each point; at a point closed in tension that is
+// negative, and a negative frozen threshold means "not frozen" (the friction then follows the
+// iterate). Such a point freezes at zero instead: back at a pressed, sliding state its friction
+// stays off until the thresholds are read again (the status fixed point reads them there when
+// it opens back points it closed, doc/algorithms.md "Cycling").
+TEST_P(ContactProblemTest, AThresholdReadInTensionFreezesAtZero) {
+  ContactRun run(pushedBlock(0.002), {floorZone(0.05, GetParam())}, 4);
+  ASSERT_TRUE(run.report.converged) << run.report.message;
+  ContactProblem& contact = run.contact;
+  contact.freezeStatuses(true);  // closed, as converged
+  contact.freezeThresholds(true);
+  auto lifted = contact.createVector();
+  lifted->update(-1.0, *run.x, 0.0);  // lifted, the multipliers pulling: tension
+  contact.updateThresholds(*lifted, 1.0);
+  auto residual = contact.createVector();
+  contact.assemble(*run.x, 1.0, residual.get(), false);
+  for (const ContactPointResult& r : contact.results()) {
+    ASSERT_NE(r.status, ContactStatus::Free) << "node " << r.node;
+    EXPECT_GT(r.pressure, 0) << "node " << r.node;
+    EXPECT_EQ(r.traction[0], 0.0) << "node " << r.node << " (" << GetParam() << ")";
+  }
+}
+
 TEST_P(ContactProblemTest, FrictionHoldsBelowTheThresholdAndSlidesAbove) {
   // The block is squeezed and its top pushed sideways in proportion (T/N about 0.065 on this
   // mesh, the free sides make the shear non-uniform): mu = 0.3 holds it, mu = 0.05 cannot.
