@@ -3,11 +3,10 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   blade-root, factorization-reuse, single-precision, peers, study-process) run only
-#   those tables,
-#   all by default (ironing3d and normal-field write doc/verification.md, study-process
-#   doc/studies.md; peers installs GetFEM
-#   and CalculiX with apt-get when they are missing).
+#   blade-root, factorization-reuse, single-precision, peers, study-process, scene-presets)
+#   run only those tables, all by default (ironing3d and normal-field write
+#   doc/verification.md, study-process doc/studies.md, scene-presets doc/algorithms.md; peers
+#   installs GetFEM and CalculiX with apt-get when they are missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
@@ -68,6 +67,11 @@ if want algorithms; then
   # Hertz (about 15 minutes).
   python3 bench/algorithms.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-algorithms" \
     --doc doc/performance.md
+fi
+if want scene-presets; then
+  # Every shipped scene under each algorithm preset (about 6 minutes).
+  python3 bench/scene_presets.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-scene-presets" \
+    --doc doc/algorithms.md
 fi
 if want critical-mu; then
   # Uniqueness diagnostic on the frictional 3D Hertz up to ~1 000 contact points (~3 minutes).
