@@ -88,7 +88,7 @@ struct StaticSolverOptions {
   bool geometryInNewton = false, thresholdsInNewton = true, statusesInNewton = true;
   int maxStatusIterations = 30;
   int maxThresholdIterations = 30;
-  double thresholdTolerance = 1e-6;
+  double thresholdTolerance = 1e-3;
   std::string cyclingTreatment = "none";  // none | automatic | forced
   double grazingTolerance = 1e-6;
   GeometricTerms geometricTerms = GeometricTerms::pairing;  // with the geometry in Newton
