@@ -75,7 +75,7 @@ class FixedPointLoop {
   virtual bool renewsInnerCaps() const { return false; }
   // Whether the last update that moved undid the one before it: a two-update cycle at the state
   // the loops around it hold frozen (the statuses under friction thresholds that are stale).
-  // StaticSolver then lets the enclosing fixed points update before Newton restarts.
+  // StaticSolver then lets the next enclosing fixed point update before Newton restarts.
   virtual bool cyclesAtFrozenSurroundings() const { return false; }
   // Whether an update that moved changed contact statuses, which the cycling detector then
   // watches as it watches Newton's iterates (a status flipping between updates cycles too).

@@ -289,12 +289,13 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     // A loop that cycles at what the fixed point around it holds frozen lets that one update
     // too before Newton restarts (the dragged pad: a stale friction threshold, with which no
     // status of its point held). Not a farther one: the geometry re-pairs from any state.
-    std::size_t outer = k + 1;
-    while (outer < loops_.size() && loops_[outer]->inNewton())
-      ++outer;
-    if (moved.cyclesAtFrozenSurroundings() && outer < loops_.size() &&
-        loops_[outer]->update(x, t) && !countUpdate(outer))
-      return fail(loops_[outer]->failure(), loops_[outer]->failureMessage());
+    if (moved.cyclesAtFrozenSurroundings()) {
+      std::size_t outer = k + 1;
+      while (outer < loops_.size() && loops_[outer]->inNewton())
+        ++outer;
+      if (outer < loops_.size() && loops_[outer]->update(x, t) && !countUpdate(outer))
+        return fail(loops_[outer]->failure(), loops_[outer]->failureMessage());
+    }
     const FixedPointLoop::MovedStateTest test = moved.testMovedState(x, t, reference, *residual);
     if (test.tested) {
       sr.residual = test.residual;

@@ -189,7 +189,7 @@ double ContactProblem::updateThresholds(const Vector& x, double t) {
     // A negative threshold (mu p^ of a point closed in tension) freezes at zero: a negative
     // frozen threshold would mean "not frozen", its friction following the iterate.
     pt.frozenThreshold = std::max(pt.threshold, 0.0);
-    change = std::max(change, std::abs(pt.threshold - std::max(old[i], 0.0)));
+    change = std::max(change, std::abs(pt.frozenThreshold - std::max(old[i], 0.0)));
     largest = std::max(largest, pt.threshold);
   }
   return largest > 0 ? change / largest : 0.0;
