@@ -55,7 +55,9 @@ struct NewtonOutcome {
   double assemblySeconds = 0, linearSolveSeconds = 0;
   int limitedUpdates = 0;       // updates scaled down to NewtonRequest::maxUpdate
   int unevaluableHalvings = 0;  // updates halved because their iterate could not be evaluated
-  double longestUpdate = 0;     // the largest displacement an update made (before any scaling)
+  // Converged at the round-off floor of the residual (residualRoundoff), above the target: 0 or 1.
+  int roundoffStops = 0;
+  double longestUpdate = 0;  // the largest displacement an update made (before any scaling)
 };
 
 class NewtonMethod {

@@ -247,6 +247,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     report.linearSolves += outcome.iterations;
     report.limitedUpdates += outcome.limitedUpdates;
     report.unevaluableHalvings += outcome.unevaluableHalvings;
+    report.roundoffStops += outcome.roundoffStops;
     sr.longestUpdate = std::max(sr.longestUpdate, outcome.longestUpdate);
     if (!outcome.failure.empty()) {
       // A NaN residual from an iterate the solid could not evaluate: say which and where.

@@ -130,21 +130,23 @@ struct RunReport {
   int geometryRetries = 0;      // failed steps solved again with the geometry in Newton
   int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
   int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
+  int roundoffStops = 0;        // Newton solves stopped at their residual's round-off floor
   CyclingCounts cycling{};
   PhaseSeconds seconds;
 
   // The counts as a step's run totals, and the counts a continued run starts from.
   RunTotals totals() const {
-    return {iterations,          linearSolves,     cuts,
-            lineSearchRetries,   geometryRetries,  limitedUpdates,
-            unevaluableHalvings, statusIterations, thresholdIterations,
-            geometryIterations,  cycling};
+    return {iterations,          linearSolves,       cuts,
+            lineSearchRetries,   geometryRetries,    limitedUpdates,
+            unevaluableHalvings, roundoffStops,      statusIterations,
+            thresholdIterations, geometryIterations, cycling};
   }
   void startFrom(const RunTotals& t) {
     iterations = t.iterations, linearSolves = t.linearSolves, cuts = t.cuts;
     lineSearchRetries = t.lineSearchRetries, geometryRetries = t.geometryRetries;
     limitedUpdates = t.limitedUpdates;
     unevaluableHalvings = t.unevaluableHalvings;
+    roundoffStops = t.roundoffStops;
     statusIterations = t.statusIterations, thresholdIterations = t.thresholdIterations;
     geometryIterations = t.geometryIterations, cycling = t.cycling;
   }

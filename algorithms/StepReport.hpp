@@ -24,6 +24,7 @@ struct RunTotals {
   int geometryRetries = 0;      // failed steps solved again with the geometry in Newton
   int limitedUpdates = 0;       // Newton updates scaled down to Newton/Max Update
   int unevaluableHalvings = 0;  // updates halved: their iterate could not be evaluated
+  int roundoffStops = 0;        // Newton solves stopped at their residual's round-off floor
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   CyclingCounts cycling{};
 };

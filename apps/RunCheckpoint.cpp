@@ -80,11 +80,13 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   run.linearSolves = static_cast<int>(file.integerAttribute("linear_solves"));
   run.cuts = static_cast<int>(file.integerAttribute("cuts"));
   // Absent from checkpoints written before Newton/Line Search Retry, Newton/Max Update, the
-  // halving of unevaluable updates and Newton/Geometry Retry: such a count starts at 0.
+  // halving of unevaluable updates, Newton/Geometry Retry and the round-off stop: such a count
+  // starts at 0.
   run.lineSearchRetries = countOrZero(file, "line_search_retries");
   run.geometryRetries = countOrZero(file, "geometry_retries");
   run.limitedUpdates = countOrZero(file, "limited_updates");
   run.unevaluableHalvings = countOrZero(file, "unevaluable_halvings");
+  run.roundoffStops = countOrZero(file, "roundoff_stops");
   run.statusIterations = static_cast<int>(file.integerAttribute("status_iterations"));
   run.thresholdIterations = static_cast<int>(file.integerAttribute("threshold_iterations"));
   run.geometryIterations = static_cast<int>(file.integerAttribute("geometry_iterations"));
@@ -175,6 +177,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("geometry_retries", static_cast<std::int64_t>(run.geometryRetries));
     file.writeAttribute("limited_updates", static_cast<std::int64_t>(run.limitedUpdates));
     file.writeAttribute("unevaluable_halvings", static_cast<std::int64_t>(run.unevaluableHalvings));
+    file.writeAttribute("roundoff_stops", static_cast<std::int64_t>(run.roundoffStops));
     file.writeAttribute("status_iterations", static_cast<std::int64_t>(run.statusIterations));
     file.writeAttribute("threshold_iterations", static_cast<std::int64_t>(run.thresholdIterations));
     file.writeAttribute("geometry_iterations", static_cast<std::int64_t>(run.geometryIterations));

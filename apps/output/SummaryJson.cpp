@@ -185,6 +185,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
                              .set("geometry_retries", report.geometryRetries))
       .set("limited_updates", report.limitedUpdates)
       .set("unevaluable_halvings", report.unevaluableHalvings)
+      .set("roundoff_stops", report.roundoffStops)
       .set("iterations", JsonValue::object()
                              .set("newton", report.iterations)
                              .set("status", report.statusIterations)
