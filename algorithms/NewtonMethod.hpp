@@ -27,6 +27,9 @@ struct NewtonRequest {
   // the solve's first one, or when the iterates repeat a two-iterate cycle (newtonCycles);
   // 0: never.
   int stallIterations = 0;
+  // Converged, too, at the round-off floor of the residual (residualRoundoff) above the target:
+  // for a solve a fixed-point update follows, not for one that ends a step (StaticSolver).
+  bool roundoffStop = false;
 };
 
 // A contact Newton whose iterates stay two orders of magnitude above where the solve started,

@@ -90,11 +90,12 @@ NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,
       return out;
     }
     if (newtonConverged(norm, withForcing, controls_, it)) return out;
-    // A residual at the round-off of its own evaluation is as converged as it can be computed:
-    // the iterate is the solution to working precision, and more iterations only shuffle that
-    // round-off (a body a frozen-open fixed point threw 7e5 times its size stalled there at
-    // 4e-8 of its start, above the 1e-8 asked, until the cycle detector failed the step).
-    if (norm > withForcing.target) {
+    // A residual at the round-off of its own evaluation is as converged as it can be computed,
+    // and more iterations only shuffle that round-off (a body a frozen-open fixed point threw
+    // 7e5 times its size stalled there at 4e-8 of its start, above the 1e-8 asked, until the
+    // cycle detector failed the step). Where the caller allows it: such an iterate may be a
+    // state no one wants (a perfectly plastic tube past its limit load, 100 times its size).
+    if (request.roundoffStop && norm > withForcing.target) {
       NewtonRequest atFloor = withForcing;
       atFloor.target = residualRoundoff(*system_.tangent(), x);
       if (newtonConverged(norm, atFloor, controls_, it)) {

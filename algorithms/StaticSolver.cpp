@@ -64,6 +64,20 @@ StaticSolver::GeometryInNewton::~GeometryInNewton() {
   solver_.controls_->setGeometricTerms(GeometricTerms::none);
 }
 
+StaticSolver::FullGeometricTerms::FullGeometricTerms(StaticSolver& solver) : solver_(solver) {
+  solver.controls_->setGeometricTerms(GeometricTerms::full);
+  if (solver.solver_) solver.solver_->takeAnyMatrix();  // as GeometryInNewton
+}
+
+StaticSolver::FullGeometricTerms::~FullGeometricTerms() {
+  solver_.controls_->setGeometricTerms(solver_.options_.geometricTerms);
+}
+
+bool StaticSolver::fullTermsRetryApplies() const {
+  return options_.geometryRetry && controls_ && options_.geometryInNewton &&
+         options_.geometricTerms != GeometricTerms::full && controls_->fullTermsAddToPairing();
+}
+
 bool StaticSolver::geometryRetryApplies() const {
   return options_.geometryRetry && controls_ && !geometryInNewton_;
 }
@@ -237,6 +251,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.geometryInNewton = geometryInNewton_;
   request.maxUpdate = maxUpdate;
   request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;
+  request.roundoffStop = true;
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;
@@ -265,6 +280,13 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
       // target (unless this one got there anyway).
       if (request.forcing > 0 && !newtonConverged(outcome.residual, request, controls_, 0)) {
         request.forcing = 0;
+        continue;
+      }
+      // Nor on a solve stopped at its round-off floor: that iterate was taken for what the fixed
+      // points would do from it, and it ends the step only if it reaches the target (the
+      // perfectly plastic tube past its limit load stopped so 100 times its size away).
+      if (outcome.roundoffStops > 0) {
+        request.roundoffStop = false;
         continue;
       }
       // A forced state that violates the model's law is not a solution: Newton goes on from
@@ -311,6 +333,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     // the residual by a fraction of the last one's (5 to 10 times less, converging), so
     // solving below Fixed Point Forcing times it buys nothing.
     request.forcing = options_.fixedPointForcing;
+    request.roundoffStop = true;
   }
 }
 
@@ -431,6 +454,22 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
         ++report.lineSearchRetries;
         ok = sr.lineSearchRetry =
             solveAgain(*retry_, 0, "line-search retry", "with the Backtrack line search");
+      }
+      // Generalized Newton's default `pairing` terms hold the master's normal in the tangent;
+      // where the master dents and its normal turns, that tangent is not the residual's and
+      // Newton may not settle even with a line search (the NAFEMS roller under its force),
+      // and the consistent one converges: a step the line-search retry did not save is solved
+      // again by it with the full terms, which the retry after it keeps (doc/algorithms.md
+      // "Geometry retry"). After the line-search retry: a failure of cycling statuses (a
+      // penalty's friction) costs the full steps nothing more.
+      std::optional<FullGeometricTerms> fullTerms;
+      if (!ok && retry_ && (lastTry || options_.lineSearchRetry == "every-failure") &&
+          fullTermsRetryApplies() && iteratesFailedToConverge(report.failure)) {
+        ++report.geometryRetries;
+        fullTerms.emplace(*this);
+        ok = sr.geometryRetry = solveAgain(*retry_, 0, "geometry retry",
+                                           "with the Backtrack line search and the geometry's "
+                                           "full terms");
       }
       // Full steps that failed through an update longer than the limit: a tangent nearly
       // singular (a perfectly plastic tube at its limit load before it meets the hole) threw the

@@ -254,6 +254,21 @@ class StaticSolver {
    private:
     StaticSolver& solver_;
   };
+  // The geometry already in Newton (generalized Newton) takes its full terms for the rest of
+  // a step's retries, then its own again (Newton/Geometry Retry).
+  class FullGeometricTerms {
+   public:
+    explicit FullGeometricTerms(StaticSolver& solver);
+    ~FullGeometricTerms();
+    FullGeometricTerms(const FullGeometricTerms&) = delete;
+    FullGeometricTerms& operator=(const FullGeometricTerms&) = delete;
+
+   private:
+    StaticSolver& solver_;
+  };
+  // Whether a failed step is solved again with the geometry's full terms: the geometry in
+  // Newton from the start with fewer terms.
+  bool fullTermsRetryApplies() const;
 
   NonlinearSystem& problem_;
   ContactControls* controls_;

@@ -87,7 +87,10 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "the geometry in Newton and its full terms (Algorithm/Geometric Terms: full, the "
          "consistent tangent; not symmetric on node-to-segment, so MUMPS' Mode automatic turns "
          "to general for the rest of the run), before the line-search retry, which then keeps "
-         "the geometry in Newton. Not when the geometry is already in Newton "
+         "the geometry in Newton. Where the geometry is in Newton already (generalized "
+         "Newton) with fewer terms (Geometric Terms: pairing or none) and a node-to-segment "
+         "zone (whose master normal the full terms add), a step the line-search retry did not "
+         "save is solved again by it with the full terms "
          "(doc/algorithms.md \"Geometry retry\")");
   p->set("Max Update", 0.05,
          "A step whose full Newton steps failed through an update that moved a node by more "

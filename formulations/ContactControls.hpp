@@ -105,6 +105,9 @@ class ContactControls {
   virtual void setFrictionScale(double scale) = 0;
   // Geometry in Newton: which derivatives of the geometry the tangent includes (GeometricTerms).
   virtual void setGeometricTerms(GeometricTerms terms) = 0;
+  // Whether the `full` terms differ from the `pairing` ones in this model (a node-to-segment
+  // zone): else a retry with them would solve the same tangent again.
+  virtual bool fullTermsAddToPairing() const { return false; }
 
   // A step of the solid alone (StaticSolver's solid-alone predictor), for a state where no point
   // carries a force yet (every point open, or closed at zero pressure: the touching points of an

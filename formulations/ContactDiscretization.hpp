@@ -79,6 +79,10 @@ class ContactDiscretization {
   // (finite differences of refreshGeometry); the nodes, beyond the point's own, its normal
   // depends on with `full` terms; and the point's geometry recomputed at the state's positions.
   virtual bool linearizesGeometry() const { return false; }
+  // Whether `full` terms add to `pairing` ones here: a normal that turns with other nodes than
+  // the point's own (a node-to-segment master's smoothed normal; an obstacle's follows the
+  // slave alone, in `pairing` already).
+  virtual bool fullTermsAddToPairing() const { return false; }
   virtual std::vector<std::int64_t> normalNodes(const ContactPoint& /*pt*/) const { return {}; }
   virtual void refreshGeometry(ContactPoint& /*pt*/, const ContactSurfaceState& /*state*/,
                                double /*t*/, GeometricTerms /*terms*/) const {}

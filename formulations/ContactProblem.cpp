@@ -347,6 +347,12 @@ bool ContactProblem::stepSolidAlone(Vector& x, double t, GO minimumDofs, const S
   return true;
 }
 
+bool ContactProblem::fullTermsAddToPairing() const {
+  for (const auto& d : discretizations_)
+    if (d->fullTermsAddToPairing()) return true;
+  return false;
+}
+
 void ContactProblem::setGeometricTerms(GeometricTerms terms) {
   if (terms != geometricTerms_) layoutChanged_ = true;  // columns change at the next pairing
   geometricTerms_ = terms;

@@ -94,6 +94,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   void seedInitialStatuses(Vector& x, double t) override;
   void markCycling(std::size_t point, int kind) override;
   void setGeometricTerms(GeometricTerms terms) override;
+  bool fullTermsAddToPairing() const override;
   void setFrictionScale(double scale) override;
   bool stepSolidAlone(Vector& x, double t, GO minimumDofs, const SolidSolve& solve) override;
 

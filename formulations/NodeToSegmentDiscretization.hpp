@@ -30,6 +30,7 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
       const ContactPoint& pt, const ContactSurfaceState& state, double t,
       std::map<std::int64_t, std::array<double, 9>>& blocks) const override;
   bool linearizesGeometry() const override { return true; }
+  bool fullTermsAddToPairing() const override { return true; }
   std::vector<std::int64_t> normalNodes(const ContactPoint& pt) const override;
   void refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state, double t,
                        GeometricTerms terms) const override;

@@ -1,7 +1,8 @@
 // Newton stops at the round-off floor of its residual (residualRoundoff) instead of cycling
 // there to a failure: R(x) = x - a with a = 1e12 and a round-off-like term of half (or twice)
 // eps |dR/dx| |x| whose sign alternates at each evaluation, so no iterate reaches the 1e-12
-// asked. The half passes as converged at the floor (counted); twice the floor does not.
+// asked. The half passes as converged at the floor (counted) where the request allows it (a
+// solve a fixed-point update follows); twice the floor does not, nor the half where it does not.
 #include "ScalarSystem.hpp"
 
 #include <cmath>
@@ -11,7 +12,7 @@
 namespace contactlab {
 namespace {
 
-NewtonOutcome solveWithNoise(double noiseOverFloor) {
+NewtonOutcome solveWithNoise(double noiseOverFloor, bool roundoffStop = true) {
   constexpr double a = 1e12;
   int evaluations = 0;
   test::ScalarSystem system(
@@ -23,7 +24,9 @@ NewtonOutcome solveWithNoise(double noiseOverFloor) {
   Klu2Solver solver({}, Tpetra::getDefaultComm());
   PlainNewton newton(system, solver, nullptr);
   auto x = system.createVector();
-  return newton.solve(*x, test::newtonRequest(1e-12, 10), {});
+  NewtonRequest request = test::newtonRequest(1e-12, 10);
+  request.roundoffStop = roundoffStop;
+  return newton.solve(*x, request, {});
 }
 
 TEST(RoundoffStop, AResidualAtItsRoundoffFloorIsConverged) {
@@ -31,6 +34,12 @@ TEST(RoundoffStop, AResidualAtItsRoundoffFloorIsConverged) {
   ASSERT_TRUE(out.failure.empty()) << out.failure << ": " << out.message;
   EXPECT_EQ(out.roundoffStops, 1);
   EXPECT_LE(out.iterations, 2);
+}
+
+TEST(RoundoffStop, NotWhereTheRequestDoesNotAllowIt) {
+  const NewtonOutcome out = solveWithNoise(0.5, false);
+  EXPECT_EQ(out.failure, "max-iterations");
+  EXPECT_EQ(out.roundoffStops, 0);
 }
 
 TEST(RoundoffStop, AResidualAboveTheFloorIsNot) {
