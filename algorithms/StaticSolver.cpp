@@ -40,37 +40,37 @@ StaticSolver::StaticSolver(NonlinearSystem& problem, ContactControls* controls,
       geometryInNewton_(options_.geometryInNewton) {
   slowDynamics_.requireMass(problem_);
   if (options_.lineSearchRetry == "never") retry_ = nullptr;
-  if (controls_)
-    controls_->setGeometricTerms(options_.geometryInNewton ? options_.geometricTerms
-                                                           : GeometricTerms::none);
+  if (controls_) controls_->setGeometricTerms(ownGeometricTerms());
 }
 
-StaticSolver::GeometryInNewton::GeometryInNewton(StaticSolver& solver) : solver_(solver) {
-  StaticSolverOptions options = solver.options_;
-  options.geometryInNewton = true;
-  if (solver.geometryInNewtonLoops_.empty())
-    solver.geometryInNewtonLoops_ = composeLoops(options, solver.problem_, solver.controls_);
-  std::swap(solver.loops_, solver.geometryInNewtonLoops_);
-  solver.geometryInNewton_ = true;
+GeometricTerms StaticSolver::ownGeometricTerms() const {
+  return options_.geometryInNewton ? options_.geometricTerms : GeometricTerms::none;
+}
+
+StaticSolver::FullGeometricTerms::FullGeometricTerms(StaticSolver& solver) : solver_(solver) {
   solver.controls_->setGeometricTerms(GeometricTerms::full);
   // The full terms differentiate a node-to-segment normal along one side only: a solver that
   // took the tangent as symmetric takes any matrix from now on (MUMPS: LU).
   if (solver.solver_) solver.solver_->takeAnyMatrix();
 }
 
+StaticSolver::FullGeometricTerms::~FullGeometricTerms() {
+  solver_.controls_->setGeometricTerms(solver_.ownGeometricTerms());
+}
+
+StaticSolver::GeometryInNewton::GeometryInNewton(StaticSolver& solver)
+    : solver_(solver), terms_(solver) {
+  StaticSolverOptions options = solver.options_;
+  options.geometryInNewton = true;
+  if (solver.geometryInNewtonLoops_.empty())
+    solver.geometryInNewtonLoops_ = composeLoops(options, solver.problem_, solver.controls_);
+  std::swap(solver.loops_, solver.geometryInNewtonLoops_);
+  solver.geometryInNewton_ = true;
+}
+
 StaticSolver::GeometryInNewton::~GeometryInNewton() {
   std::swap(solver_.loops_, solver_.geometryInNewtonLoops_);
   solver_.geometryInNewton_ = false;
-  solver_.controls_->setGeometricTerms(GeometricTerms::none);
-}
-
-StaticSolver::FullGeometricTerms::FullGeometricTerms(StaticSolver& solver) : solver_(solver) {
-  solver.controls_->setGeometricTerms(GeometricTerms::full);
-  if (solver.solver_) solver.solver_->takeAnyMatrix();  // as GeometryInNewton
-}
-
-StaticSolver::FullGeometricTerms::~FullGeometricTerms() {
-  solver_.controls_->setGeometricTerms(solver_.options_.geometricTerms);
 }
 
 bool StaticSolver::fullTermsRetryApplies() const {
@@ -276,16 +276,14 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     while (k < loops_.size() && (loops_[k]->inNewton() || !loops_[k]->update(x, t)))
       ++k;
     if (k == loops_.size()) {
-      // An inexact solve after which no fixed point moved: the step ends on a solve to its own
-      // target (unless this one got there anyway).
-      if (request.forcing > 0 && !newtonConverged(outcome.residual, request, controls_, 0)) {
+      // A solve allowed to stop short of the step's target (the forcing between fixed-point
+      // updates, or the round-off floor) after which no fixed point moved: the step ends on a
+      // solve to its own target (unless this one got there anyway). A floor stop is taken for
+      // what the fixed points would do from it, not as a solution: the perfectly plastic tube
+      // past its limit load stopped at its floor 100 times its size away.
+      if ((request.forcing > 0 || request.roundoffStop) &&
+          !newtonConverged(outcome.residual, request, controls_, 0)) {
         request.forcing = 0;
-        continue;
-      }
-      // Nor on a solve stopped at its round-off floor: that iterate was taken for what the fixed
-      // points would do from it, and it ends the step only if it reaches the target (the
-      // perfectly plastic tube past its limit load stopped so 100 times its size away).
-      if (outcome.roundoffStops > 0) {
         request.roundoffStop = false;
         continue;
       }

@@ -241,21 +241,12 @@ class StaticSolver {
   // Whether the step may end at x: true unless a forced treatment is in effect and the model's
   // own contact law, the forced statuses released, leaves a residual above `target` there.
   bool forcedStateHolds(const Vector& x, double t, double target, Vector& residual);
-  // While it lives, the steps are solved with the geometry in Newton and its full terms (the
-  // geometry retry): the loops composed so, the controls' geometric terms full, and the linear
-  // solver told that the tangent may not be symmetric.
-  class GeometryInNewton {
-   public:
-    explicit GeometryInNewton(StaticSolver& solver);
-    ~GeometryInNewton();
-    GeometryInNewton(const GeometryInNewton&) = delete;
-    GeometryInNewton& operator=(const GeometryInNewton&) = delete;
-
-   private:
-    StaticSolver& solver_;
-  };
-  // The geometry already in Newton (generalized Newton) takes its full terms for the rest of
-  // a step's retries, then its own again (Newton/Geometry Retry).
+  // The geometric terms the options give the contact controls: the preset's with the geometry
+  // in Newton, none with a geometric fixed point.
+  GeometricTerms ownGeometricTerms() const;
+  // While it lives, the controls' geometric terms are full (the consistent tangent) and the
+  // linear solver is told that the tangent may not be symmetric; then they are the options'
+  // own again. Generalized Newton's full-terms retry (Newton/Geometry Retry).
   class FullGeometricTerms {
    public:
     explicit FullGeometricTerms(StaticSolver& solver);
@@ -265,6 +256,19 @@ class StaticSolver {
 
    private:
     StaticSolver& solver_;
+  };
+  // While it lives, the steps are solved with the geometry in Newton and its full terms (the
+  // geometry retry): the loops composed so, and FullGeometricTerms.
+  class GeometryInNewton {
+   public:
+    explicit GeometryInNewton(StaticSolver& solver);
+    ~GeometryInNewton();
+    GeometryInNewton(const GeometryInNewton&) = delete;
+    GeometryInNewton& operator=(const GeometryInNewton&) = delete;
+
+   private:
+    StaticSolver& solver_;
+    FullGeometricTerms terms_;
   };
   // Whether a failed step is solved again with the geometry's full terms: the geometry in
   // Newton from the start with fewer terms.
