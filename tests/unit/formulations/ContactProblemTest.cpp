@@ -2,6 +2,8 @@
 // states with a known answer: a block pressed on a rigid plane (uniform pressure, with and
 // without friction) and two stacked blocks with matching meshes, for every formulation, on 1
 // and 2 ranks.
+#include "ContactTestZones.hpp"
+
 #include "algorithms/CriticalFriction.hpp"
 #include "algorithms/PatternCriticalFriction.hpp"
 #include "algorithms/RunStatic.hpp"
@@ -20,19 +22,10 @@
 namespace contactlab {
 namespace {
 
-constexpr double kE = 1000.0, kSqueeze = 0.01;
+using test::floorZone;
+using test::law;
 
-std::shared_ptr<const ContactLaw> law(const std::string& name) {
-  registerFormulations();
-  Teuchos::ParameterList p = *formulationRegistry().get(name).validParameters();
-  if (name == "penalty") p.set("Normal Penalty", 1e7), p.set("Tangential Penalty", 1e5);
-  if (name == "augmented-lagrangian" || name == "normal-field-augmented-lagrangian")
-    p.set("Normal Augmentation", 1e4), p.set("Tangential Augmentation", 10.0);
-  if (name == "lagrange")
-    p.set("Normal Complementarity Constant", 1e4),
-        p.set("Tangential Complementarity Constant", 10.0);
-  return formulationRegistry().get(name).build(p);
-}
+constexpr double kE = 1000.0, kSqueeze = 0.01;
 
 struct Solved {
   RunReport report;
@@ -117,18 +110,6 @@ SolidModel pushedBlock(double push) {
   side.value = push;
   model.dirichlet[1] = side;
   return model;
-}
-
-ContactZone floorZone(double mu, const std::string& formulation) {
-  ContactZone zone;
-  zone.name = "floor";
-  zone.slave = "bottom";
-  RigidObstacleSpec plane;
-  plane.direction = {0, 1, 0};
-  zone.obstacle = plane;
-  zone.friction = mu;
-  zone.law = law(formulation);
-  return zone;
 }
 
 // The low-rank critical friction factor of a slipping state's pattern equals the one of the

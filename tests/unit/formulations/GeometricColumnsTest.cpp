@@ -5,10 +5,11 @@
 // equal the frozen-geometry ones. With a difference step fixed at 1e-7 of the facet they were
 // 1e-4 off (the step rounded on coordinates of 1e6 and the residual's round-off over it), which
 // sent generalized Newton's next iterate 67 mm off the obstacle on code_aster's SSNV503.
+#include "ContactTestZones.hpp"
+
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "formulations/ContactProblem.hpp"
-#include "formulations/FormulationRegistry.hpp"
 
 #include <Tpetra_Core.hpp>
 
@@ -26,19 +27,8 @@ TEST(GeometricColumns, HoldOnAnIterateThrownFarThroughAPlane) {
   model.mesh = std::make_shared<Mesh>(generateRectangle(r));
   for (const auto& name : model.mesh->blockNames())
     model.materials[name] = std::make_shared<LinearElastic>(1000.0, 0.0);
-  registerFormulations();
-  Teuchos::ParameterList p = *formulationRegistry().get("augmented-lagrangian").validParameters();
-  p.set("Normal Augmentation", 1e4), p.set("Tangential Augmentation", 10.0);
-  ContactZone zone;
-  zone.name = "floor";
-  zone.slave = "bottom";
-  RigidObstacleSpec plane;
-  plane.direction = {0, 1, 0};
-  zone.obstacle = plane;
-  zone.friction = 0.3;
-  zone.law = formulationRegistry().get("augmented-lagrangian").build(p);
   Problem solid(model, Tpetra::getDefaultComm());
-  ContactProblem contact(solid, {zone});
+  ContactProblem contact(solid, {test::floorZone(0.3, "augmented-lagrangian")});
 
   auto x = contact.createVector();
   contact.updateGeometry(*x, 1.0);  // the first pairing, at rest (it refuses deep penetrations)
