@@ -32,6 +32,21 @@ def fresh_run(exe, scene, out, sets=(), timeout=300):
     return (json.load(open(path)) if os.path.exists(path) else None), run
 
 
+def required_summary(exe, scene, out, sets, name):
+    """fresh_run, ending the check script (FAIL, with the run's stderr) when the run wrote no
+    summary.json: a crash, not a named failure."""
+    summary, run = fresh_run(exe, scene, out, sets)
+    if summary is None:
+        sys.exit(f"FAIL: {name} wrote no summary.json\n{run.stderr}")
+    return summary
+
+
+def outcome(name, summary):
+    """"NAME: converged in N Newton iterations" (or the failure's name), a check's sentence."""
+    return (f"{name}: {summary['failure'] or 'converged'} in "
+            f"{summary['iterations']['newton']} Newton iterations")
+
+
 def scene_check_arguments():
     """The command line of a check that runs one scene and bounds an error: APP SCENE OUT TOL
     [--ranks N] [--set key=value ...]; the caller adds its own options and parses."""

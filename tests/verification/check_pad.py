@@ -25,19 +25,16 @@ import os, sys
 exe, scene, work, mu = sys.argv[1:5]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
-from contactlab_run import fresh_run  # noqa: E402
+from contactlab_run import required_summary  # noqa: E402
 
 checklist = Checklist()
 check, failures = checklist.check, checklist.failures
 
 
 def run(name, *sets, retry="never"):
-    summary, r = fresh_run(exe, scene, os.path.join(work, name),
-                           [f"Contact/floor/Friction={mu}", f"Newton/Line Search Retry={retry}",
-                            *sets])
-    if summary is None:
-        sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
-    return summary
+    return required_summary(exe, scene, os.path.join(work, name),
+                            [f"Contact/floor/Friction={mu}", f"Newton/Line Search Retry={retry}",
+                             *sets], name)
 
 
 converged = {}

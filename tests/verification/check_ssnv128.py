@@ -21,7 +21,7 @@ import csv, os, sys
 exe, scene, work, common = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
-from contactlab_run import fresh_run  # noqa: E402
+from contactlab_run import outcome, required_summary  # noqa: E402
 
 checklist = Checklist()
 check, failures = checklist.check, checklist.failures
@@ -45,16 +45,13 @@ runs = [
 ]
 states = {}
 for name, sets, must_converge in runs:
-    summary, r = fresh_run(exe, scene, os.path.join(work, name), ["Output/VTK=false", *common, *sets])
-    if summary is None:
-        sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
-    outcome = (f"{name}: {summary['failure'] or 'converged'} in "
-               f"{summary['iterations']['newton']} Newton iterations")
+    summary = required_summary(exe, scene, os.path.join(work, name),
+                               ["Output/VTK=false", *common, *sets], name)
     if not summary["converged"]:
-        check(outcome + (" (a named failure is allowed here)" if not must_converge else ""),
-              not must_converge and bool(summary["failure"]))
+        allowed = " (a named failure is allowed here)" if not must_converge else ""
+        check(outcome(name, summary) + allowed, not must_converge and bool(summary["failure"]))
         continue
-    check(outcome, True)
+    check(outcome(name, summary), True)
     rows = list(csv.DictReader(open(os.path.join(work, name, "contact.csv"))))
     ux = {}  # at the reference points (the mesh's nodes there, to round-off)
     for p in rows:

@@ -20,7 +20,7 @@ import csv, json, os, sys
 exe, scene, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
-from contactlab_run import fresh_run  # noqa: E402
+from contactlab_run import outcome, required_summary  # noqa: E402
 
 checklist = Checklist()
 check = checklist.check
@@ -36,12 +36,9 @@ runs += [(f"{f}-{pt:g}", pt, sets) for f, sets in (("lagrange", [FORMULATION + "
                                                    ("penalty", PENALTY)) for pt in (178.2, 181.8)]
 for name, pt, sets in runs:
     out = os.path.join(work, name)
-    summary, r = fresh_run(exe, scene, out,
-                           ["Output/VTK=false", f"Loads/tangential/Value={pt:g}", *sets])
-    if summary is None:
-        sys.exit(f"FAIL: {name} wrote no summary.json\n{r.stderr}")
-    if not check(f"{name}: {summary['failure'] or 'converged'} in "
-                 f"{summary['iterations']['newton']} Newton iterations", summary["converged"]):
+    summary = required_summary(exe, scene, out,
+                               ["Output/VTK=false", f"Loads/tangential/Value={pt:g}", *sets], name)
+    if not check(outcome(name, summary), summary["converged"]):
         continue
     c, springs = summary["contact"], summary["springs"]
     n, t = c["normal_force"], c["tangential_force_vector"][0]
