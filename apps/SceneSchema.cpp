@@ -279,7 +279,9 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         choices({"interpenetrated", "all", "none"}));
   p.set("Discretization", "node-to-segment",
         "Where the contact conditions hold: 'node-to-segment' (at each slave node against the "
-        "closest master point) or 'mortar' (weighted over the slave surface by the mortar "
+        "closest master point; a slave node beyond a free edge of the master surface, by more "
+        "than 5 % of the edge's facet, faces no master and is open) or 'mortar' (weighted over "
+        "the slave surface by the mortar "
         "integrals D and M, each slave facet against the master surface nearest to it that faces "
         "it; two bodies only; its geometry is a fixed point, doc/verification.md)",
         choices({"node-to-segment", "mortar"}));

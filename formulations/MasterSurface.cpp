@@ -1,9 +1,48 @@
 #include "formulations/MasterSurface.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace contactlab {
+
+namespace {
+
+// The sides of a reference facet: its end vertices (lines) or edges (corner pairs of triangles
+// and quadrilaterals, gmsh order), and whether reference coordinates xi lie on side k.
+struct FacetSides {
+  int corners = 2;
+  bool line = true;
+  bool triangle = false;
+};
+
+FacetSides sidesOf(ElementType type) {
+  switch (type) {
+    case ElementType::Line2:
+    case ElementType::Line3:
+      return {2, true, false};
+    case ElementType::Tri3:
+    case ElementType::Tri6:
+      return {3, false, true};
+    default:
+      return {4, false, false};  // quad4, quad8, quad9
+  }
+}
+
+bool onSide(const FacetSides& f, int k, const double* xi) {
+  constexpr double tol = 1e-8;
+  if (f.line) return std::abs(xi[0] - (k == 0 ? -1.0 : 1.0)) <= tol;
+  if (f.triangle) {
+    if (k == 0) return std::abs(xi[1]) <= tol;                // corners 0-1
+    if (k == 1) return std::abs(xi[0] + xi[1] - 1.0) <= tol;  // corners 1-2
+    return std::abs(xi[0]) <= tol;                            // corners 2-0
+  }
+  static constexpr int axis[4] = {1, 0, 1, 0};
+  static constexpr double value[4] = {-1.0, 1.0, 1.0, -1.0};  // corners 0-1, 1-2, 2-3, 3-0
+  return std::abs(xi[axis[k]] - value[k]) <= tol;
+}
+
+}  // namespace
 
 MasterSurface::MasterSurface(const Mesh& mesh, const std::string& group) {
   for (const CellGroup* g : mesh.findBoundaries(group)) {
@@ -14,6 +53,24 @@ MasterSurface::MasterSurface(const Mesh& mesh, const std::string& group) {
   nodesPerFacet_ = info(type_).nodes;
   for (std::size_t k = 0; k < facetNodes_.size(); ++k)
     nodeFacets_[facetNodes_[k]].push_back(static_cast<int>(k / nodesPerFacet_));
+  for (std::size_t f = 0; f < numFacets(); ++f)
+    for (int k = 0; k < sidesOf(type_).corners; ++k)
+      ++sideFacets_[side(f, k)];
+}
+
+std::pair<std::int64_t, std::int64_t> MasterSurface::side(std::size_t facet, int k) const {
+  const FacetSides f = sidesOf(type_);
+  if (f.line) return {node(facet, k), node(facet, k)};
+  const std::int64_t a = node(facet, k), b = node(facet, (k + 1) % f.corners);
+  return {std::min(a, b), std::max(a, b)};
+}
+
+bool MasterSurface::onFreeBoundary(int facet, const double* xi) const {
+  const FacetSides f = sidesOf(type_);
+  for (int k = 0; k < f.corners; ++k)
+    if (onSide(f, k, xi) && sideFacets_.at(side(static_cast<std::size_t>(facet), k)) == 1)
+      return true;
+  return false;
 }
 
 std::vector<int> MasterSurface::facetsAround(const std::vector<std::int64_t>& nodes) const {

@@ -30,6 +30,11 @@ class MasterSurface {
   // The facets (sorted) that touch any of `nodes`.
   std::vector<int> facetsAround(const std::vector<std::int64_t>& nodes) const;
 
+  // Whether the point of reference coordinates xi on `facet` lies on the free boundary of the
+  // surface: an end vertex (2D) or an edge (3D, its corners) that no other facet of the surface
+  // shares. A vertex between two facets, or an edge between two, is a kink, not a boundary.
+  bool onFreeBoundary(int facet, const double* xi) const;
+
   Facet currentFacet(const ContactSurfaceState& state, int facet) const;
   std::vector<Facet> currentFacets(const ContactSurfaceState& state) const;
 
@@ -38,6 +43,10 @@ class MasterSurface {
   int nodesPerFacet_ = 1;
   std::vector<std::int64_t> facetNodes_;
   std::map<std::int64_t, std::vector<int>> nodeFacets_;
+  // Side k of a facet: an end vertex (2D, as a pair of itself) or an edge's sorted corners.
+  std::pair<std::int64_t, std::int64_t> side(std::size_t facet, int k) const;
+  // The facets sharing each side (an end vertex in 2D, an edge's sorted corners in 3D).
+  std::map<std::pair<std::int64_t, std::int64_t>, int> sideFacets_;
 };
 
 }  // namespace contactlab

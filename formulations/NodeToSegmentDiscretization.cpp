@@ -10,6 +10,43 @@
 
 namespace contactlab {
 
+namespace {
+
+// The diagonal of the box of a facet's nodes: the facet's size.
+double facetSize(const Facet& facet, int nodes) {
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (int a = 0; a < nodes; ++a) {
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], facet.coords[3 * a + c]);
+      hi[c] = std::max(hi[c], facet.coords[3 * a + c]);
+    }
+  }
+  return std::sqrt(std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) +
+                   std::pow(hi[2] - lo[2], 2));
+}
+
+// A slave point whose closest master point is on the master surface's free boundary (an end
+// in 2D, an edge no other facet shares in 3D) and which lies off that boundary along the
+// surface, farther than kBeyondEdgeTolerance of the facet, faces no master. Paired with the
+// boundary, its gap (along the normal there) is its distance to the facet's extension: a slave
+// surface that continues the master's line (a block standing on a longer slave) was closed
+// there, its force applied at the boundary, a distance away (a couple). Within the tolerance it
+// stays paired: a slave node at the master's end, moved along it by round-off or a small strain.
+constexpr double kBeyondEdgeTolerance = 0.05;
+
+// The distance of xs from `point` across `normal` (in the surface's tangent plane).
+double offsetAlongSurface(const std::array<double, 3>& xs, const Projection& p) {
+  double v2 = 0, vn = 0;
+  for (int c = 0; c < 3; ++c) {
+    const double v = xs[c] - p.point[c];
+    v2 += v * v;
+    vn += v * p.normal[c];
+  }
+  return std::sqrt(std::max(0.0, v2 - vn * vn));
+}
+
+}  // namespace
+
 NodeToSegmentDiscretization::NodeToSegmentDiscretization(const ContactZone& zone, const Mesh& mesh,
                                                          int dim)
     : ContactDiscretization(dim, resolvedSearchDistance(zone, mesh)), master_(mesh, zone.master) {}
@@ -40,6 +77,13 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
       pairing.projection.xi[1] = kept.xi[1];
     }
   }
+  if (pairing.found) {
+    result.size = facetSize(search_->facets()[pairing.facet], nn);
+    if (!pairing.projection.inside &&
+        master_.onFreeBoundary(static_cast<int>(pairing.facet), pairing.projection.xi) &&
+        offsetAlongSurface(xs, pairing.projection) > kBeyondEdgeTolerance * result.size)
+      pairing.found = false;
+  }
   pt.paired = pairing.found;
   if (!pt.paired) return result;
   pt.facet = static_cast<int>(pairing.facet);
@@ -52,13 +96,7 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
   pt.normal = smoothedNormal(pt, nodalNormals_, pairing.projection.normal);
   for (int c = 0; c < 3; ++c)
     result.gap += pt.normal[c] * (xs[c] - pairing.projection.point[c]);
-  const auto& fc = search_->facets()[pt.facet].coords;
-  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (int a = 0; a < nn; ++a)
-    for (int c = 0; c < 3; ++c)
-      lo[c] = std::min(lo[c], fc[3 * a + c]), hi[c] = std::max(hi[c], fc[3 * a + c]);
-  result.size = std::sqrt(std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) +
-                          std::pow(hi[2] - lo[2], 2));
+  result.size = facetSize(search_->facets()[pt.facet], nn);
   return result;
 }
 

@@ -11,6 +11,7 @@
 #include "formulations/ContactPointKernel.hpp"
 #include "formulations/ContactSurfaceState.hpp"
 #include "formulations/FormulationRegistry.hpp"
+#include "formulations/MasterSurface.hpp"
 
 #include <Tpetra_Core.hpp>
 
@@ -127,7 +128,7 @@ struct StackedSurfaces {
 
 TEST(ContactDiscretization, NodeToSegmentPairsEachSlaveNodeAboveItsMasterPoint) {
   StackedSurfaces s(0.1);
-  s.moveUpper({0.05, -0.15});  // 0.05 into the lower block
+  s.moveUpper({0.01, -0.15});  // 0.05 into the lower block, 0.01 past its end (2 % of a facet)
   auto d = makeContactDiscretization(s.zone, *s.mesh, 2);
   d->prepare(*s.state, 1.0);
   for (ContactPoint pt : s.slavePoints()) {
@@ -137,12 +138,68 @@ TEST(ContactDiscretization, NodeToSegmentPairsEachSlaveNodeAboveItsMasterPoint) 
     EXPECT_NEAR(p.gap, -0.05, 1e-12);
     EXPECT_NEAR(pt.normal[1], 1.0, 1e-12);  // from the master towards the slave
     // The master point is under the slave (the shape values interpolate its x), clamped to the
-    // master surface's end for the slave node moved past it.
+    // master surface's end for the slave node moved past it (within 5 % of the facet).
     const auto xm = d->masterPoint(pt, xs, *s.state);
     EXPECT_NEAR(xm[0], std::min(xs[0], 1.0), 1e-12);
     EXPECT_NEAR(xm[1], 1.0, 1e-12);
     EXPECT_EQ(pt.master.size(), 2u);
   }
+}
+
+// A slave node beyond the free end of the master surface faces no master (NAFEMS CGS-4 with the
+// longer incline as slave: its nodes past the block's ends were closed against the block bottom's
+// extension, their forces applied at its corners 0.5 away, and Newton converged linearly). Moved
+// 0.05 past the end (10 % of the facet), on the master's line or below it, it is not paired.
+TEST(ContactDiscretization, NodeToSegmentLeavesASlaveNodeBeyondTheMastersFreeEndUnpaired) {
+  for (double down : {0.1, 0.15}) {  // on the master's line; 0.05 below it
+    StackedSurfaces s(0.1);
+    s.moveUpper({0.05, -down});
+    auto d = makeContactDiscretization(s.zone, *s.mesh, 2);
+    d->prepare(*s.state, 1.0);
+    int paired = 0;
+    for (ContactPoint pt : s.slavePoints()) {
+      const auto xs = s.state->position(pt.node);
+      d->pair(pt, xs, *s.state, 1.0);
+      EXPECT_EQ(pt.paired, xs[0] <= 1.0) << "slave node at x = " << xs[0] << ", down " << down;
+      paired += pt.paired;
+    }
+    EXPECT_EQ(paired, 3);  // x = 0.05, 0.383, 0.717
+  }
+}
+
+// The free boundary of a master surface: its ends in 2D, the edges of its outline in 3D; the
+// vertex or edge two facets share is a kink, not a boundary.
+TEST(MasterSurface, FreeBoundaryIsTheOutlineNotTheKinks) {
+  RectangleParams r;
+  r.lengths = {2.0, 1.0};
+  r.divisions = {2, 1};
+  const MasterSurface line(generateRectangle(r), "top");  // two line2 facets
+  int ends = 0, kinks = 0;
+  for (int f = 0; f < 2; ++f) {
+    for (double xi : {-1.0, 1.0}) {
+      const double at[2] = {xi, 0.0};
+      (line.onFreeBoundary(f, at) ? ends : kinks) += 1;
+    }
+    const double middle[2] = {0.3, 0.0};
+    EXPECT_FALSE(line.onFreeBoundary(f, middle));
+  }
+  EXPECT_EQ(ends, 2);   // the surface's two ends
+  EXPECT_EQ(kinks, 2);  // the shared vertex, seen from each facet
+
+  BoxParams b;
+  b.divisions = {2, 2, 1};
+  const MasterSurface top(generateBox(b), "zmax");  // 2 x 2 quad4 facets
+  int outline = 0, shared = 0;
+  for (int f = 0; f < 4; ++f) {
+    for (const std::array<double, 2> xi :
+         {std::array<double, 2>{0.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}}) {
+      (top.onFreeBoundary(f, xi.data()) ? outline : shared) += 1;
+    }
+    const double centre[2] = {0.0, 0.0};
+    EXPECT_FALSE(top.onFreeBoundary(f, centre));
+  }
+  EXPECT_EQ(outline, 8);  // each facet has two edges on the outline and two shared
+  EXPECT_EQ(shared, 8);
 }
 
 TEST(ContactDiscretization, MortarGapIsTheDistanceAndTheWeightsCoverTheInterface) {
