@@ -345,7 +345,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   std::unique_ptr<StepUniquenessCheck> uniqueness;
   if (sm.criticalMuCheck && contact)
     uniqueness = std::make_unique<StepUniquenessCheck>(sm, *contact, comm);
-  RunProgress progress(root && !options.quiet, sm.solverOptions.endTime);
+  RunProgress progress(root && !options.quiet, sm.solverOptions.endTime,
+                       root ? outDir + "/progress.log" : "", from.restart);
 
   // The contact block of the last converged step: after a failure, the contact state left in
   // the problem is the failed iterate's, which summary.json reports under a key of its own.
@@ -488,14 +489,15 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
             .set("correction_seconds", work.correctionSeconds)
             .set("solve_seconds", work.solveSeconds);
     summary.build(report, record, materialState, comm->getSize()).write(outDir + "/summary.json");
-    if (report.converged) {
-      std::cout << "contactlab: " << sm.scene.name << " converged in " << report.steps
-                << " step(s), " << report.iterations << " Newton iterations, " << elapsed()
-                << " s\n";
-    } else {
-      std::cout << "contactlab: " << sm.scene.name << " FAILED (" << report.failure
-                << "): " << report.message << "\n";
-    }
+    std::ostringstream closing;
+    if (report.converged)
+      closing << "contactlab: " << sm.scene.name << " converged in " << report.steps << " step(s), "
+              << report.iterations << " Newton iterations, " << elapsed() << " s";
+    else
+      closing << "contactlab: " << sm.scene.name << " FAILED (" << report.failure
+              << "): " << report.message;
+    std::cout << closing.str() << "\n";
+    progress.finish(closing.str());
     if (record.resultPvd)
       std::cout << "  results: " << std::filesystem::absolute(*record.resultPvd).string() << "\n";
     std::cout << "  summary: " << std::filesystem::absolute(outDir + "/summary.json").string()

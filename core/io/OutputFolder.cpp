@@ -30,7 +30,7 @@ bool isTemporary(const std::string& name) {
 bool isRunOutput(const std::string& name) {
   static const std::regex pattern(
       R"(result\.pvd|result_\d+(_p\d+)?\.(vtu|pvtu)|steps\.csv|contact(_t[^/]+)?\.csv)"
-      R"(|summary\.json|checkpoint\.h5)");
+      R"(|summary\.json|checkpoint\.h5|progress\.log)");
   return std::regex_match(name, pattern) || isTemporary(name);
 }
 

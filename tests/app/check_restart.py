@@ -222,6 +222,11 @@ def main():
         fail(f"the continued result.pvd has frames at {times}")
     print(f"ok   restart after a kill at step {k}: steps.csv and result.pvd hold each of the "
           f"{len(times) - 1} steps once")
+    # progress.log: the killed run's lines, then the continued run's after a separator.
+    log = open(os.path.join(killed, "progress.log")).read().splitlines()
+    if "  (continued from the checkpoint)" not in log or "converged in" not in log[-1]:
+        fail(f"the continued run's progress.log does not continue the killed run's: {log[-3:]}")
+    print("ok   progress.log continues the killed run's")
     # summary.json counts the whole run: every count the uninterrupted run's.
     counts = lambda out: {key: json.load(open(os.path.join(out, "summary.json")))[key]
                           for key in ("iterations", "linear_solves", "load_steps", "cycling")}
@@ -240,7 +245,7 @@ def main():
         fail(f"the chained run's steps are {step_times(second)}, not {k + 1}..8")
     compare(full, second, f"chained run (A to step {k}, B from A's checkpoint)")
     check_file_layout(first, k)
-    print("6 passed, 0 failed")
+    print("7 passed, 0 failed")
 
 
 if __name__ == "__main__":
