@@ -19,13 +19,15 @@ longer incline as slave, the closed points must lie under the block: its nodes b
 block's ends face no master.
 Every run also balances (the base's reaction against the push and G), every contact point
 slips with |T| = mu N, and F / G is the formula's value at the slope of the contact's own
-resultant (the friction acts along the interface the normal force says)."""
+resultant (the friction acts along the interface the normal force says). And the uniqueness
+diagnostic against the same equilibrium: a rigid block wedges at mu = 1 / tan(alpha) = 10, where
+F / G grows without bound; contactlab critical-mu on a stiff block (mortar) finds 10.0009."""
 import csv, json, os, sys
 
 exe, scenes, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from checklist import Checklist  # noqa: E402
-from contactlab_run import outcome, required_summary  # noqa: E402
+from contactlab_run import contactlab_run, outcome, required_summary  # noqa: E402
 
 checklist = Checklist()
 check = checklist.check
@@ -94,4 +96,16 @@ for name, dim, sets, ratio, bound in runs:
                     / float(s["time"]) for s in steps)
         check(f"{name}: at each of {len(steps)} steps F / G within {worst:.2e} t of the "
               f"rigid incline's", worst <= bound)
+# The uniqueness diagnostic (contactlab critical-mu) against the same equilibrium: a rigid block
+# sliding up the incline needs F = G (tan a + mu) / (1 - mu tan a), which grows without bound as
+# mu -> 1 / tan a = 10, where the slipping contact set's tangent turns singular (the block wedges).
+# A stiff block (E = 1.1e7) by mortar (its normals the block's own): mu_crit = 10.0009.
+out = os.path.join(work, "critical-mu-stiff-block")
+_, r = contactlab_run(exe, os.path.join(scenes, "nafems-cgs4-2d.yaml"), out,
+                      ["Output/VTK=false", "Materials/block/linear-elastic/E=1.1e7", MORTAR],
+                      options=["--quiet"], command="critical-mu")
+summary = json.load(open(os.path.join(out, "summary.json"))) if r.returncode == 0 else {}
+mu_crit = summary.get("critical_mu", {}).get("zones", {}).get("incline", float("nan"))
+check(f"critical-mu, stiff block: mu_crit = {mu_crit:.5g} against 1 / tan(alpha) = "
+      f"{1 / TAN:g} (within 1 %)", abs(mu_crit * TAN - 1) <= 0.01)
 sys.exit(1 if checklist.failures else 0)
