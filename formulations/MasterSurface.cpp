@@ -53,23 +53,21 @@ MasterSurface::MasterSurface(const Mesh& mesh, const std::string& group) {
   nodesPerFacet_ = info(type_).nodes;
   for (std::size_t k = 0; k < facetNodes_.size(); ++k)
     nodeFacets_[facetNodes_[k]].push_back(static_cast<int>(k / nodesPerFacet_));
-  for (std::size_t f = 0; f < numFacets(); ++f)
-    for (int k = 0; k < sidesOf(type_).corners; ++k)
-      ++sideFacets_[side(f, k)];
-}
-
-std::pair<std::int64_t, std::int64_t> MasterSurface::side(std::size_t facet, int k) const {
-  const FacetSides f = sidesOf(type_);
-  if (f.line) return {node(facet, k), node(facet, k)};
-  const std::int64_t a = node(facet, k), b = node(facet, (k + 1) % f.corners);
-  return {std::min(a, b), std::max(a, b)};
 }
 
 bool MasterSurface::onFreeBoundary(int facet, const double* xi) const {
   const FacetSides f = sidesOf(type_);
-  for (int k = 0; k < f.corners; ++k)
-    if (onSide(f, k, xi) && sideFacets_.at(side(static_cast<std::size_t>(facet), k)) == 1)
-      return true;
+  const auto at = static_cast<std::size_t>(facet);
+  for (int k = 0; k < f.corners; ++k) {
+    if (!onSide(f, k, xi)) continue;
+    // The side's corners (an end vertex is both): free when this facet alone holds them all.
+    const std::vector<int>& first = nodeFacets_.at(node(at, k));
+    const std::vector<int>& second = nodeFacets_.at(node(at, f.line ? k : (k + 1) % f.corners));
+    const auto sharing = std::count_if(first.begin(), first.end(), [&](int g) {
+      return std::find(second.begin(), second.end(), g) != second.end();
+    });
+    if (sharing == 1) return true;
+  }
   return false;
 }
 

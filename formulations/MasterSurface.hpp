@@ -43,10 +43,6 @@ class MasterSurface {
   int nodesPerFacet_ = 1;
   std::vector<std::int64_t> facetNodes_;
   std::map<std::int64_t, std::vector<int>> nodeFacets_;
-  // Side k of a facet: an end vertex (2D, as a pair of itself) or an edge's sorted corners.
-  std::pair<std::int64_t, std::int64_t> side(std::size_t facet, int k) const;
-  // The facets sharing each side (an end vertex in 2D, an edge's sorted corners in 3D).
-  std::map<std::pair<std::int64_t, std::int64_t>, int> sideFacets_;
 };
 
 }  // namespace contactlab

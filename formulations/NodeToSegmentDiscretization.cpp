@@ -12,19 +12,6 @@ namespace contactlab {
 
 namespace {
 
-// The diagonal of the box of a facet's nodes: the facet's size.
-double facetSize(const Facet& facet, int nodes) {
-  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (int a = 0; a < nodes; ++a) {
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], facet.coords[3 * a + c]);
-      hi[c] = std::max(hi[c], facet.coords[3 * a + c]);
-    }
-  }
-  return std::sqrt(std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) +
-                   std::pow(hi[2] - lo[2], 2));
-}
-
 // A slave point whose closest master point is on the master surface's free boundary (an end
 // in 2D, an edge no other facet shares in 3D) and which lies off that boundary along the
 // surface, farther than kBeyondEdgeTolerance of the facet, faces no master. Paired with the
@@ -78,7 +65,7 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
     }
   }
   if (pairing.found) {
-    result.size = facetSize(search_->facets()[pairing.facet], nn);
+    result.size = search_->facetSize(pairing.facet);
     if (!pairing.projection.inside &&
         master_.onFreeBoundary(static_cast<int>(pairing.facet), pairing.projection.xi) &&
         offsetAlongSurface(xs, pairing.projection) > kBeyondEdgeTolerance * result.size)
@@ -96,7 +83,7 @@ PointPairing NodeToSegmentDiscretization::pair(ContactPoint& pt, const std::arra
   pt.normal = smoothedNormal(pt, nodalNormals_, pairing.projection.normal);
   for (int c = 0; c < 3; ++c)
     result.gap += pt.normal[c] * (xs[c] - pairing.projection.point[c]);
-  result.size = facetSize(search_->facets()[pt.facet], nn);
+  result.size = search_->facetSize(static_cast<std::size_t>(pt.facet));
   return result;
 }
 

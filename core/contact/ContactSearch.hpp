@@ -69,6 +69,8 @@ class ContactSearch {
   Pairing findClosest(const double* slavePoint) const;
 
   const std::vector<Facet>& facets() const { return facets_; }
+  // Facet f's size: the diagonal of its nodes' box (the scale of the search's tolerances).
+  double facetSize(std::size_t f) const { return size_[f]; }
   double searchDistance() const { return searchDistance_; }
   const BoundingBoxTree& tree() const { return tree_; }
 
