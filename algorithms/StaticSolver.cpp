@@ -21,6 +21,10 @@ struct Interrupted {
   int signal;
 };
 
+// A step whose start's residual is below this fraction of the last loaded step's holds the
+// load (solveStep). A cut step's is about half its uncut one's; a held step's 1e-8 or less.
+constexpr double kHeldLoadFraction = 1e-3;
+
 }  // namespace
 
 StaticSolver::~StaticSolver() = default;
@@ -93,7 +97,7 @@ int StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRepo
   for (const CyclingEvent& e : events) {
     ++sr.cycling[static_cast<int>(e.kind)];
     controls_->markCycling(e.point, static_cast<int>(e.kind));
-    if (!treating_ || options_.cyclingTreatment == "none") continue;
+    if (!treating_ || untreated_ || options_.cyclingTreatment == "none") continue;
     const bool frictionCycle =
         e.kind == CyclingKind::StickSlip || e.kind == CyclingKind::SlipReversal;
     // 'combined': no coefficient breaks a friction cycle (in 2D the slip piece has no
@@ -115,6 +119,7 @@ int StaticSolver::treatCycling(const std::vector<CyclingEvent>& events, StepRepo
         (options_.cyclingTreatment == "automatic" && !controls_->scalingChangesForces(e.point));
     if (force) {
       forcedPoints_.push_back(e.point);
+      stepForced_ = true;
       const int status = e.kind == CyclingKind::StickSlip      ? 2
                          : e.kind == CyclingKind::SlipReversal ? 1
                                                                : kForcedClosed;
@@ -176,6 +181,15 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     problem_.assemble(x, t, residual.get(), false);
     if (!prediction.done) reference = residual->norm2();
   }
+  // A step that holds the load (a plateau of a time table, a stage that waits) starts from
+  // what the last step left, ~1e-8 of that step's start or a geometry update's leftover, and
+  // 1e-8 of that lies below the residual's round-off: a shrink fit in 3 steps asked 9e-13 of
+  // its second step and stalled at 5e-10 until max-iterations. Such a step's reference is at
+  // least kHeldLoadFraction of the last loaded step's: its neighbours' accuracy.
+  if (reference < kHeldLoadFraction * loadReference_)
+    reference = kHeldLoadFraction * loadReference_;
+  else
+    loadReference_ = reference;
   // The fixed points start from the statuses and thresholds of the predictor.
   for (const auto& loop : loops_)
     if (!loop->inNewton()) loop->freeze();
@@ -383,6 +397,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
   if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
+  loadReference_ = start.loadReference;
   slowDynamics_.start(u, start.time);
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
   struct StaticAfterRun {
@@ -408,6 +423,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     const bool atFloor = h / 2 < smallest * (1 - 1e-9);
     const bool lastTry = cuts == options_.maxCuts || atFloor;
     bool ok = false;
+    stepForced_ = false;
     try {
       ok = solveStep(newton_, u, *x, sr, report, onIteration);
       // A failed step solved again another way from its start (sr counts every attempt); a
@@ -469,6 +485,22 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                                            "with the Backtrack line search and the geometry's "
                                            "full terms");
       }
+      // A forced cycling status can be one the step cannot reach: pulling an expanded tube out
+      // of its tubesheet, every joint point's slip turns from the expansion's direction to the
+      // pull's, the slip reversals detected on the way are forced to stick, and the forced
+      // state climbs to ||R|| 1e10, with the line search too, down to the smallest cut. Without
+      // a treatment the line search converges (doc/algorithms.md "Untreated retry"). Only
+      // where a status was forced: elsewhere it would repeat the line-search retry.
+      if (!ok && retry_ && stepForced_ &&
+          (lastTry || options_.lineSearchRetry == "every-failure") &&
+          iteratesFailedToConverge(report.failure)) {
+        ++report.lineSearchRetries;
+        untreated_ = true;
+        ok = sr.lineSearchRetry = solveAgain(*retry_, 0, "untreated retry",
+                                             "with the Backtrack line search and no cycling "
+                                             "treatment");
+        untreated_ = false;
+      }
       // Full steps that failed through an update longer than the limit: a tangent nearly
       // singular (a perfectly plastic tube at its limit load before it meets the hole) threw the
       // iterate out, and ||R|| is flat along that mode, so the line search creeps; with the
@@ -526,6 +558,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;
+    sr.loadReference = loadReference_;
     sr.run = report.totals();
     const auto t0 = std::chrono::steady_clock::now();
     if (onStep) onStep(sr, u);

@@ -165,6 +165,8 @@ struct RunStart {
   // The last step's increment and plain start's residual (StepReport::increment, load), when
   // the checkpoint kept them: the first step extrapolates as the uninterrupted run's did.
   Teuchos::RCP<const Vector> increment, load;
+  // The last loaded step's reference residual (StepReport::loadReference; 0: none yet).
+  double loadReference = 0;
 };
 
 class StaticSolver {
@@ -288,12 +290,17 @@ class StaticSolver {
   // and whether the step being solved has the geometry in Newton.
   std::vector<std::unique_ptr<FixedPointLoop>> geometryInNewtonLoops_;
   StepExtrapolation extrapolation_;  // the last converged step, for Newton/Extrapolation
-  SlowDynamics slowDynamics_;        // the regularizing inertia and its history of converged states
+  // The reference residual of the last step that was not a held load (solveStep).
+  double loadReference_ = 0;
+  SlowDynamics slowDynamics_;  // the regularizing inertia and its history of converged states
   bool geometryInNewton_;
   // The step's forced points (cycling treatment 'forced'), and whether treatments may still act
   // in it: after a forced state failed the check, the step goes on with the model's own law.
   std::vector<std::size_t> forcedPoints_;
   bool treating_ = true;
+  // Whether a status was forced in any attempt at the current step, and whether the attempt
+  // being solved treats no cycling (the untreated retry).
+  bool stepForced_ = false, untreated_ = false;
   double forcedResidual_ = 0;
   MPI_Comm mpiComm_ = MPI_COMM_SELF;  // the system's ranks, which agree on an interruption
   const char* attempt_ = "";          // IterateProgress::attempt of the step being solved

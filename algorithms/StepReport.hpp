@@ -38,11 +38,14 @@ struct StepReport {
   bool geometryRetry = false;     // converged with the geometry in Newton (Newton/Geometry Retry)
   double longestUpdate = 0;       // the largest displacement a Newton update of the step made
   double nextStepSize = 0;        // the load-time increment the next step will try (a checkpoint's)
-  RunTotals run;                  // the run's totals up to this step
-  int iterations = 0;             // Newton iterations (linear solves), failed attempts included
-  int statusIterations = 0;       // status fixed-point updates that changed a status
-  int thresholdIterations = 0;    // threshold fixed-point updates that moved a threshold
-  int geometryIterations = 0;     // geometry updates that moved and restarted Newton
+  // The reference residual of the last step that did not hold the load (a checkpoint's): a held
+  // step's tolerance is relative to a fraction of it (StaticSolver::solveStep).
+  double loadReference = 0;
+  RunTotals run;                // the run's totals up to this step
+  int iterations = 0;           // Newton iterations (linear solves), failed attempts included
+  int statusIterations = 0;     // status fixed-point updates that changed a status
+  int thresholdIterations = 0;  // threshold fixed-point updates that moved a threshold
+  int geometryIterations = 0;   // geometry updates that moved and restarted Newton
   double residual = 0;
   CyclingCounts cycling{};
   PhaseSeconds seconds;

@@ -73,6 +73,10 @@ CheckpointInfo readInfo(const Hdf5Reader& file) {
   info.time = file.doubleAttribute("time");
   info.step = static_cast<int>(file.integerAttribute("step"));
   info.stepSize = file.doubleAttribute("step_size");
+  try {
+    info.loadReference = file.doubleAttribute("load_reference");
+  } catch (const InputError&) {  // written before it: a held first step asks 1e-8 of its start
+  }
   info.stepsRows = file.integerAttribute("steps_csv_rows");
   info.vtkFrames = file.integerAttribute("vtk_frames");
   RunTotals& run = info.totals;
@@ -167,6 +171,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     file.writeAttribute("time", info.time);
     file.writeAttribute("step", static_cast<std::int64_t>(info.step));
     file.writeAttribute("step_size", info.stepSize);
+    file.writeAttribute("load_reference", info.loadReference);
     file.writeAttribute("steps_csv_rows", info.stepsRows);
     file.writeAttribute("vtk_frames", info.vtkFrames);
     const RunTotals& run = info.totals;

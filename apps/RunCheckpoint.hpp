@@ -29,9 +29,10 @@ struct CheckpointInfo {
   std::string scenePath;
   std::vector<std::string> overrides;
   std::string sceneHash;
-  double time = 0;      // load time of the last converged step
-  int step = 0;         // its number
-  double stepSize = 0;  // the increment the next step tries (after cuts, smaller than nominal)
+  double time = 0;           // load time of the last converged step
+  int step = 0;              // its number
+  double stepSize = 0;       // the increment the next step tries (after cuts, smaller than nominal)
+  double loadReference = 0;  // StepReport::loadReference (0 in checkpoints written before it)
   // The output series so far (--restart keeps exactly these): rows of steps.csv, frames of
   // result.pvd.
   std::int64_t stepsRows = 0, vtkFrames = 0;

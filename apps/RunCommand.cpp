@@ -252,6 +252,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         from.start.step = from.info.step;
         from.start.increment = last.increment;
         from.start.load = last.load;
+        from.start.loadReference = from.info.loadReference;
         if (from.restart) {  // the same run: its cut step size and its counts go on
           from.start.stepSize = from.info.stepSize;
           from.start.totals = from.info.totals;
@@ -403,6 +404,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     checkpoint.time = s.time;
     checkpoint.step = s.step;
     checkpoint.stepSize = s.nextStepSize;
+    checkpoint.loadReference = s.loadReference;
     checkpoint.stepsRows = earlierRows + stepsThisRun;
     checkpoint.vtkFrames = vtk.frames();
     checkpoint.totals = s.run;

@@ -8,9 +8,12 @@
 
 namespace contactlab {
 
-std::vector<double> recoveredPressures(const Mesh& mesh, const std::vector<ContactZone>& zones,
-                                       const std::vector<ContactPointResult>& points) {
-  std::vector<double> recovered(points.size(), std::nan(""));
+RecoveredFields recoveredFields(const Mesh& mesh, const std::vector<ContactZone>& zones,
+                                const std::vector<ContactPointResult>& points) {
+  const double nan = std::nan("");
+  RecoveredFields recovered;
+  recovered.pressure.assign(points.size(), nan);
+  recovered.traction.assign(points.size(), {nan, nan, nan});
   for (std::size_t z = 0; z < zones.size(); ++z) {
     if (zones[z].discretization != Discretization::nodeToSegment) continue;
     // Quadratic 3D facets: on tri6 f / w is not a pressure (corner integrals 0), on quad8 the
@@ -26,17 +29,31 @@ std::vector<double> recoveredPressures(const Mesh& mesh, const std::vector<Conta
       projected |= g->type == ElementType::Tri6 || g->type == ElementType::Quad8 ||
                    g->type == ElementType::Quad9;
     if (!projected) continue;
-    std::map<std::int64_t, double> forces;
-    for (const ContactPointResult& p : points)
-      if (p.zone == static_cast<int>(z))
-        forces[p.node] = p.status == ContactStatus::Free ? 0.0 : p.weight * p.pressure;
-    const auto pressure =
-        pressureFromNodalForces(mesh, zones[z].slave, forces, zones[z].areaWeight);
+    auto inZone = [&](const ContactPointResult& p) { return p.zone == static_cast<int>(z); };
+    // The field of the nodal forces w_i v_i (an open point's are 0), at the zone's points.
+    auto field = [&](auto value) {
+      std::map<std::int64_t, double> forces;
+      for (const ContactPointResult& p : points)
+        if (inZone(p)) forces[p.node] = p.status == ContactStatus::Free ? 0.0 : p.weight * value(p);
+      return pressureFromNodalForces(mesh, zones[z].slave, forces, zones[z].areaWeight);
+    };
+    const auto pressure = field([](const ContactPointResult& p) { return p.pressure; });
     for (std::size_t i = 0; i < points.size(); ++i)
-      if (points[i].zone == static_cast<int>(z))
+      if (inZone(points[i]))
         // A field value, also at a node whose own force is ~0 (a tri6 corner, often open in
         // the law for that reason); the projection's undershoot at the zone's edge is cut at 0.
-        recovered[i] = std::max(0.0, pressure.at(points[i].node));
+        recovered.pressure[i] = std::max(0.0, pressure.at(points[i].node));
+    // The friction force's field too, so that a slipping point's traction is mu times the
+    // pressure beside it (the law's own f / w is not a traction wherever its pressure is not:
+    // at 0.45 to 1.05 mu p on a fully slipping quad8 ring, tube-pull-out-axisymmetric).
+    if (zones[z].friction == 0) continue;
+    // Where the pressure's undershoot was cut at 0, so is the traction: no friction without it.
+    for (int c = 0; c < 3; ++c) {
+      const auto traction = field([c](const ContactPointResult& p) { return p.traction[c]; });
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (inZone(points[i]))
+          recovered.traction[i][c] = recovered.pressure[i] > 0 ? traction.at(points[i].node) : 0.0;
+    }
   }
   return recovered;
 }

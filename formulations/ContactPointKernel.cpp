@@ -83,18 +83,26 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
   in.coefficientScale = pt.coefficientScale;
   in.stiffnessScale = zone.stiffnessScale;
-  LawOutput out;
-  law.evaluate(in, out);
-  pt.prescribedSlip = 0;
+  PrescribedSlip prescribed;
   if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_) {
     std::vector<std::array<double, 2>> symmetric;
     for (const auto& normal : pt.symmetryNormals)
       symmetric.push_back({dot(normal, pt.t1), nt > 1 ? dot(normal, pt.t2) : 0.0});
-    const PrescribedSlip prescribed =
-        prescribedSlip(B, nt, nu, pt.freeDofs, pt.removedDirections, symmetric);
-    pt.prescribedSlip = prescribed.prescribed;
-    dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
+    prescribed = prescribedSlip(B, nt, nu, pt.freeDofs, pt.removedDirections, symmetric);
   }
+  LawOutput out;
+  law.evaluate(in, out);
+  // A closed point the supports slide along a prescribed direction slips (PrescribedSlip.hpp):
+  // the law's slip branch, whatever the stick test says of a slip shorter than 1 / c_t.
+  if (prescribedDirectionSlides(prescribed, nt, in.slip, std::sqrt(dot(slip, slip)))) {
+    if (out.status == ContactStatus::Stick) {
+      in.frozenStatus = 2;
+      law.evaluate(in, out);
+    }
+    prescribed.prescribed = 0;
+  }
+  pt.prescribedSlip = prescribed.prescribed;
+  dropPrescribedFriction(prescribed, nt, pt.weight, in.Lambda, n, out);
   pt.threshold = out.threshold;
   // The multiplier rows as forces (LawOutput::normalRowForce), after any friction direction
   // was dropped (its row then holds its multiplier at 0): the rotation keeps the rows' norm.

@@ -468,7 +468,7 @@ void ContactProblem::commitState(const Vector& x, double t) {
     pt.slipIncrement = {0, 0, 0};
     if (pt.result.status != ContactStatus::Free) everInContact_ = true;
   }
-  recoveredPressure_ = recoveredPressures(*solid_.model().mesh, zones_, lawResults());
+  recovered_ = recoveredFields(*solid_.model().mesh, zones_, lawResults());
   convergedPairing_ = points_;
   state_->commit();
   kernel_->setConvergedTime(t);
@@ -507,8 +507,8 @@ std::vector<ContactPointResult> ContactProblem::lawResults() const {
 }
 
 double ContactProblem::outputPressure(std::size_t i) const {
-  const bool recovered = i < recoveredPressure_.size() && !std::isnan(recoveredPressure_[i]);
-  return recovered ? recoveredPressure_[i] : points_[i].result.pressure;
+  const bool recovered = i < recovered_.pressure.size() && !std::isnan(recovered_.pressure[i]);
+  return recovered ? recovered_.pressure[i] : points_[i].result.pressure;
 }
 
 std::vector<ContactPointResult> ContactProblem::results() const {
@@ -516,6 +516,8 @@ std::vector<ContactPointResult> ContactProblem::results() const {
   const auto values = state_->values();
   for (std::size_t i = 0; i < out.size(); ++i) {
     out[i].pressure = outputPressure(i);
+    if (i < recovered_.traction.size() && !std::isnan(recovered_.traction[i][0]))
+      out[i].traction = recovered_.traction[i];
     const ContactPoint& pt = points_[i];
     if (pt.multiplier < 0) continue;
     const auto names = zones_[pt.zone].law->pointUnknownNames(pt.nt, dim_);

@@ -29,6 +29,7 @@
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactControls.hpp"
 #include "formulations/ContactHistory.hpp"
+#include "formulations/ContactPointFields.hpp"
 #include "formulations/ContactPointResult.hpp"
 #include "formulations/ContactZone.hpp"
 
@@ -166,8 +167,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   LO ownedDisplacements_ = 0;
   Teuchos::RCP<const Map> map_;
   std::unordered_set<GO> constrainedSurfaceDofs_;  // Dirichlet dofs of the surface nodes
-  // The output pressure per point (SurfacePressure.hpp; NaN: the law's), at each commit.
-  std::vector<double> recoveredPressure_;
+  // The output pressure and traction per point (ContactPointFields.hpp; NaN: the law's), at
+  // each commit.
+  RecoveredFields recovered_;
   bool frozenOnce_ = false, everInContact_ = false, layoutChanged_ = false;
   // Why the last geometry update failed on an iterate (empty: it did not): assemble() then
   // returns NaN and assemblyFailure() names it "contact-geometry-failed".

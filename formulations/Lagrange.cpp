@@ -14,8 +14,8 @@ void Lagrange::writeNormalRow(const LawInput& in, const PointState& s, LawOutput
 }
 
 // tau Lambda: the multiplier Lambda (the slip direction) carries the friction force. Threshold
-// mu (p - c_n g): equal to mu p at convergence (g = 0 on active points), and already positive on
-// a first iterate that starts in contact with p = 0.
+// mu p once p > 0; before, mu (p - c_n g), already positive on a first iterate that starts in
+// contact with p = 0 (both mu p at convergence, where g = 0 on active points).
 void Lagrange::writeFrictionRow(const LawInput& in, const PointState& s, int k,
                                 LawOutput& out) const {
   const int nt = in.nt, g = 0, p = 1 + nt, v = 1 + k, L = 2 + nt + k;
@@ -23,7 +23,7 @@ void Lagrange::writeFrictionRow(const LawInput& in, const PointState& s, int k,
   out.r[v] = w * tau * in.Lambda[k];
   if (!s.thresholdFrozen) {
     jacobian(out, s, v, p) = w * in.mu * in.Lambda[k];
-    jacobian(out, s, v, g) = -w * in.mu * cn * in.Lambda[k];
+    if (!s.tauFromPressure) jacobian(out, s, v, g) = -w * in.mu * cn * in.Lambda[k];
   }
   jacobian(out, s, v, L) = w * tau;
   out.tangentialTraction[k] = -tau * in.Lambda[k];

@@ -2,8 +2,9 @@
 // Exact Lagrange multipliers with an active set (primal-dual active set, a semi-smooth Newton
 // on the complementarity functions of contact and Coulomb friction), at one point:
 //   active set             S_R = 1 if p - c_n g >= 0; stick if ||Lambda + c_t v|| < 1
-//   R_u  += -p dg + mu p^ Lambda . dv       (the multipliers carry the forces; the threshold
-//                                           mu p^, p^ = p - c_n g, is mu p at convergence)
+//   R_u  += -p dg + tau Lambda . dv         (the multipliers carry the forces; the threshold
+//                                           tau = mu p once p > 0, mu p^ = mu (p - c_n g)
+//                                           before, so that a point closed with p = 0 has one)
 //   R_p   = -(1/c_n) (p - S_R (p - c_n g))  (active: g = 0; inactive: p = 0)
 //   R_Lam = Lambda - S_R P_B(Lambda + c_t v)   (stick: v = 0; slip: Lambda = slip direction)
 // times the point's weight. c_n, c_t only pick the active set: the solution does not depend on
@@ -27,6 +28,10 @@ class Lagrange : public MultiplierLaw {
   void writeFrictionRow(const LawInput& in, const PointState& s, int k,
                         LawOutput& out) const override;
   double transmittedThreshold(const PointState& s) const override { return s.tau; }
+  // The normal force is p: a threshold mu p^ with an iterate deep in its master (p^ >> p) let
+  // friction exceed mu times the normal force the point applied, and the frictional
+  // axisymmetric tube's closing step diverged (doc/algorithms.md "Lagrange's threshold").
+  bool thresholdFromPressure() const override { return true; }
 };
 
 }  // namespace contactlab

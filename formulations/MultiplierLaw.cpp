@@ -40,7 +40,10 @@ void MultiplierLaw::evaluate(const LawInput& in, LawOutput& out) const {
   s.ball = projectOnBall(LamHat, nt, 1.0, in.frozenStatus);
   out.frictionIndicator = s.ball.excess;
   s.thresholdFrozen = in.frozenThreshold >= 0;
-  s.tau = s.thresholdFrozen ? in.frozenThreshold : in.mu * s.pHat;
+  s.tauFromPressure = !s.thresholdFrozen && thresholdFromPressure() && in.p > 0;
+  s.tau = s.thresholdFrozen   ? in.frozenThreshold
+          : s.tauFromPressure ? in.mu * in.p
+                              : in.mu * s.pHat;
   // A closed point with a zero threshold (p^ = 0, e.g. surfaces just touching, up to the
   // round-off of their gap) transmits no friction and Lambda = lambda_t / (mu lambda_n) is
   // undefined there: its friction rows take the open branch (Lambda = 0), a piece of the

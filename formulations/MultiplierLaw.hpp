@@ -30,7 +30,10 @@ class MultiplierLaw : public ContactLaw {
     bool closed = false;  // the contact status in use (natural or frozen)
     double SR = 0;        // 1 closed, 0 open
     bool thresholdFrozen = false;
-    double tau = 0;       // friction threshold: the frozen one, or mu p^
+    // Friction threshold: the frozen one, or mu p^, or mu p where thresholdFromPressure says so
+    // (tauFromPressure).
+    double tau = 0;
+    bool tauFromPressure = false;
     BallProjection ball;  // of Lambda^ = Lambda + c_t v
   };
 
@@ -51,6 +54,9 @@ class MultiplierLaw : public ContactLaw {
   // of out.J and out.tangentialTraction[k].
   virtual void writeFrictionRow(const LawInput& in, const PointState& s, int k,
                                 LawOutput& out) const = 0;
+  // Whether the threshold is mu p once the multiplier p is positive (mu p^ before): a law whose
+  // normal force is p itself, not p^.
+  virtual bool thresholdFromPressure() const { return false; }
   // The friction threshold the point transmits (LawOutput::threshold).
   virtual double transmittedThreshold(const PointState& s) const = 0;
 

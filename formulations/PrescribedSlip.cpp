@@ -66,9 +66,10 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
   // operator) took a multiplier of 8e7 at the next Newton iterate, and the step failed at every
   // cut. A direction that slides is far above: its free part is at least the square of a shape
   // value (the faceted hole's 2 %, 4e-4 here, is kept).
-  const double tiny = 1e-6 * scale;
+  const double tiny = 1e-6 * scale, roundoff = 1e-20 * scale;
   if (nt == 1) {
     s.prescribed = M[0][0] <= tiny ? 1 : 0;
+    s.bySupports = M[0][0] <= roundoff;
     return s;
   }
   if (!bySymmetry.empty()) {
@@ -93,9 +94,11 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
   const double small = mean - radius, large = mean + radius;
   if (large <= tiny) {
     s.prescribed = 2;
+    s.bySupports = large <= roundoff;
     return s;
   }
   if (small > tiny) return s;
+  s.bySupports = small <= roundoff;
   // The eigenvector of `large` is free; its normal is prescribed.
   double fx = M[0][1], fy = large - M[0][0];
   if (std::hypot(fx, fy) <= 1e-300) fx = large - M[1][1], fy = M[0][1];
@@ -103,6 +106,18 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
   s.prescribed = 1;
   s.basis = {{{fx / norm, -fy / norm}, {fy / norm, fx / norm}}};  // columns (fx, fy), (-fy, fx)
   return s;
+}
+
+bool prescribedDirectionSlides(const PrescribedSlip& slip, int nt, const std::array<double, 2>& v,
+                               double relativeMotion) {
+  if (slip.prescribed == 0 || !slip.bySupports) return false;
+  for (int c = nt - slip.prescribed; c < nt; ++c) {
+    double along = 0;
+    for (int i = 0; i < nt; ++i)
+      along += slip.basis[i][c] * v[i];
+    if (std::abs(along) > 1e-8 * relativeMotion) return true;
+  }
+  return false;
 }
 
 void dropPrescribedFriction(const PrescribedSlip& slip, int nt, double weight,

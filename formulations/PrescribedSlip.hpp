@@ -11,6 +11,14 @@
 // free directions. The other rows are rotated with the same orthonormal basis (an invertible
 // recombination of the equations, so the free direction's law is unchanged).
 //
+// Dropped only while the point does not slide along that direction. A node the supports move
+// along a fixed master (a tube's pulled end on its hole, an obstacle driven past a held node)
+// has a known, nonzero slip there: Coulomb's force is then mu p along it, a slip row of the law
+// (regular: its multiplier is fixed by the slip's direction), not the support's. Dropping it
+// there took the friction of the node away under Lagrange (its force is the multiplier: a pulled
+// tube's end node, 0.74 % of the pull-out force) and left only the regularized part c_t v of it
+// under the augmented Lagrangian.
+//
 // A slave node on a symmetry plane drops the friction along the plane's normal too, whatever B
 // says: the tangential traction across a symmetry plane is zero by symmetry. B alone misses it
 // where the master point lies a little inside a facet whose other nodes are off the plane (a
@@ -29,6 +37,10 @@ struct PrescribedSlip {
   // Orthonormal basis of the tangent plane in the point's (t1, t2) coordinates, as columns:
   // the free directions first, the prescribed ones last.
   std::array<std::array<double, 2>, 2> basis{{{1, 0}, {0, 1}}};
+  // The prescribed directions are fixed by the supports alone, to round-off: no symmetry plane
+  // and no sliver of free motion (a mortar row reaching a free master node by a shape value of
+  // 1e-3) prescribes them, so their slip is the supports' motion (prescribedDirectionSlides).
+  bool bySupports = false;
 };
 
 // B: (1 + nt) x nu row-major operators (row 0 the gap, rows 1..nt the slips) on the element's
@@ -42,6 +54,12 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
                               const std::vector<char>& free,
                               const std::vector<std::vector<double>>& removed = {},
                               const std::vector<std::array<double, 2>>& symmetric = {});
+
+// Whether the point slides along a direction the supports prescribe: `slip`, the slip increment
+// in (t1, t2); `relativeMotion`, the norm of the whole relative displacement increment (normal
+// part included), against which a slip of round-off (1e-8 of it) is none.
+bool prescribedDirectionSlides(const PrescribedSlip& slip, int nt, const std::array<double, 2>& v,
+                               double relativeMotion);
 
 // Replaces the friction multipliers' rows of `out` (law variables 2 + nt .. 1 + 2 nt, after the
 // kinematic ones and p) as described above. Lambda: the multipliers at the point.

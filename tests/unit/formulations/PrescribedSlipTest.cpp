@@ -107,6 +107,31 @@ TEST(PrescribedSlip, AMortarRowThatBarelyReachesFreeNodesIsPrescribed) {
   EXPECT_EQ(prescribedSlip(reaching, 1, 8, free).prescribed, 0);
 }
 
+TEST(PrescribedSlip, ADirectionTheSupportsSlideSlipsOneTheyHoldIsDropped) {
+  // A node on a fixed plane whose tangential dofs the supports fix (a pulled tube's end node).
+  const PrescribedSlip held = prescribedSlip(pointOnAPlane(0.3), 2, 3, {0, 0, 1});
+  ASSERT_EQ(held.prescribed, 2);
+  EXPECT_TRUE(held.bySupports);
+  // Moved by the supports along t1: it slips; held (or moved along the normal only, with the
+  // round-off of a rotated basis along t1): it does not.
+  EXPECT_TRUE(prescribedDirectionSlides(held, 2, {1e-3, 0}, 1e-3));
+  EXPECT_FALSE(prescribedDirectionSlides(held, 2, {0, 0}, 0));
+  EXPECT_FALSE(prescribedDirectionSlides(held, 2, {1e-20, 0}, 1e-3));
+  // A symmetry plane's direction is never the supports' (its traction is zero by symmetry), nor
+  // one prescribed because its free part is a sliver (the multiplier it would need).
+  const PrescribedSlip symmetric = prescribedSlip(slaveOnAPlaneAgainstAFacet(0.02), 2, 9,
+                                                  {1, 0, 1, 1, 0, 1, 1, 1, 1}, {}, {{0.0, 1.0}});
+  ASSERT_EQ(symmetric.prescribed, 1);
+  EXPECT_FALSE(prescribedDirectionSlides(symmetric, 2, {0, 1e-3}, 1e-3));
+  // One friction direction (t1 = x) whose operator reaches a free master dof by 1e-4.
+  const std::vector<double> B{0, 0, 1, 0,      // gap: z
+                              1, 0, 0, 1e-4};  // slip 1: x, and the master dof
+  const PrescribedSlip bySliver = prescribedSlip(B, 1, 4, {0, 0, 1, 1});
+  ASSERT_EQ(bySliver.prescribed, 1);
+  EXPECT_FALSE(bySliver.bySupports);
+  EXPECT_FALSE(prescribedDirectionSlides(bySliver, 1, {1e-3, 0}, 1e-3));
+}
+
 TEST(PrescribedSlip, TheDroppedMultiplierIsZeroAndTheOtherRowIsKept) {
   // A law of size 6 (g, v1, v2, p, L1, L2) with arbitrary rows for L1, L2.
   LawOutput out;
