@@ -31,11 +31,12 @@ RecoveredFields recoveredFields(const Mesh& mesh, const std::vector<ContactZone>
     if (!projected) continue;
     auto inZone = [&](const ContactPointResult& p) { return p.zone == static_cast<int>(z); };
     // The field of the nodal forces w_i v_i (an open point's are 0), at the zone's points.
+    const SurfaceProjection projection(mesh, zones[z].slave, zones[z].areaWeight);
     auto field = [&](auto value) {
       std::map<std::int64_t, double> forces;
       for (const ContactPointResult& p : points)
         if (inZone(p)) forces[p.node] = p.status == ContactStatus::Free ? 0.0 : p.weight * value(p);
-      return pressureFromNodalForces(mesh, zones[z].slave, forces, zones[z].areaWeight);
+      return projection.field(forces);
     };
     const auto pressure = field([](const ContactPointResult& p) { return p.pressure; });
     for (std::size_t i = 0; i < points.size(); ++i)

@@ -55,8 +55,8 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
                               const std::vector<std::vector<double>>& removed = {},
                               const std::vector<std::array<double, 2>>& symmetric = {});
 
-// Whether the point slides along a direction the supports prescribe: `slip`, the slip increment
-// in (t1, t2); `relativeMotion`, the norm of the whole relative displacement increment (normal
+// Whether the point slides along a direction the supports prescribe: `v`, the slip increment in
+// (t1, t2); `relativeMotion`, the norm of the whole relative displacement increment (normal
 // part included), against which a slip of round-off (1e-8 of it) is none.
 bool prescribedDirectionSlides(const PrescribedSlip& slip, int nt, const std::array<double, 2>& v,
                                double relativeMotion);

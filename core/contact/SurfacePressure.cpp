@@ -60,12 +60,10 @@ std::vector<double> solveMass(const std::vector<std::map<int, double>>& M,
 
 }  // namespace
 
-std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const std::string& group,
-                                                       const std::map<std::int64_t, double>& forces,
-                                                       const SurfaceWeight& weight) {
+SurfaceProjection::SurfaceProjection(const Mesh& mesh, const std::string& group,
+                                     const SurfaceWeight& weight) {
   const std::vector<const CellGroup*> facets = mesh.findBoundaries(group);
-  // The vertices numbered 0..n-1, and each surface node's hat-function values: phi_k(x_i) as
-  // (vertex, value) pairs (a vertex: itself with 1; a mid-edge node: its two ends with 1/2).
+  // The vertices numbered 0..n-1.
   std::map<std::int64_t, int> vertex;
   for (const CellGroup* g : facets)
     for (std::size_t c = 0; c < g->size(); ++c)
@@ -74,12 +72,15 @@ std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const s
   int n = 0;
   for (auto& [node, k] : vertex)
     k = n++;
-  std::map<std::int64_t, std::vector<std::pair<int, double>>> hats;
-  std::vector<std::map<int, double>> M1(n);
+  M1_.resize(n);
   for (const CellGroup* g : facets) {
     if (info(g->type).dim != mesh.dim - 1)
       throw std::invalid_argument(std::string("surface pressure: '") + info(g->type).name +
                                   "' is not a facet type");
+    // On lines (2D: axisymmetric rings) the lumped mass, p_k = g_k / sum_l M1_kl: still exact for
+    // a uniform traction, and it does not ring where the pressure drops to 0 over one facet at the
+    // zone's edge (the consistent M1 gave 0, 43, 0, 3 past a peak of 600 on the NAFEMS punch).
+    lines_ = lines_ && info(g->type).dim == 1;
     const ReferenceElement& ref = ReferenceElement::get(g->type);
     const ReferenceElement& linear = ReferenceElement::get(info(g->type).linear);
     const QuadratureRule& rule = quadratureRule(g->type, 2 * info(g->type).order + 1);
@@ -91,9 +92,9 @@ std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const s
       for (int a = 0; a < k; ++a) {
         for (int i = 0; i < 3; ++i)
           x[3 * a + i] = mesh.coords[3 * nodes[a] + i];
-        if (hats.count(nodes[a])) continue;
+        if (hats_.count(nodes[a])) continue;
         linear.shape(&ref.nodeCoordinates()[a * dim], phi.data());
-        auto& hat = hats[nodes[a]];
+        auto& hat = hats_[nodes[a]];
         for (int b = 0; b < corners; ++b)
           if (std::abs(phi[b]) > 1e-12) hat.emplace_back(vertex.at(nodes[b]), phi[b]);
       }
@@ -110,42 +111,47 @@ std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const s
         }
         for (int a = 0; a < corners; ++a)
           for (int b = 0; b < corners; ++b)
-            M1[vertex.at(nodes[a])][vertex.at(nodes[b])] += phi[a] * phi[b] * dA;
+            M1_[vertex.at(nodes[a])][vertex.at(nodes[b])] += phi[a] * phi[b] * dA;
       }
     }
   }
+}
+
+std::map<std::int64_t, double> SurfaceProjection::field(
+    const std::map<std::int64_t, double>& forces) const {
+  const int n = static_cast<int>(M1_.size());
   std::vector<double> g(n, 0.0);
   for (const auto& [node, force] : forces)
-    if (auto it = hats.find(node); it != hats.end())
+    if (auto it = hats_.find(node); it != hats_.end())
       for (const auto& [k, value] : it->second)
         g[k] += value * force;
-  // On lines (2D: axisymmetric rings) the lumped mass, p_k = g_k / sum_l M1_kl: still exact for a
-  // uniform traction, and it does not ring where the pressure drops to 0 over one facet at the
-  // zone's edge (the consistent M1 gave 0, 43, 0, 3 past a peak of 600 on the NAFEMS punch).
-  bool lines = true;
-  for (const CellGroup* g : facets)
-    lines = lines && info(g->type).dim == 1;
   std::vector<double> p;
-  if (lines) {
+  if (lines_) {
     p.assign(n, 0.0);
     for (int k = 0; k < n; ++k) {
       double sum = 0.0;
-      for (const auto& [l, value] : M1[k])
+      for (const auto& [l, value] : M1_[k])
         sum += value;
       p[k] = sum > 0 ? g[k] / sum : 0.0;
     }
   } else {
-    p = solveMass(M1, g);
+    p = solveMass(M1_, g);
   }
   std::map<std::int64_t, double> out;
   for (const auto& [node, force] : forces)
-    if (auto it = hats.find(node); it != hats.end()) {
+    if (auto it = hats_.find(node); it != hats_.end()) {
       double value = 0;
       for (const auto& [k, weight] : it->second)
         value += weight * p[k];
       out[node] = value;
     }
   return out;
+}
+
+std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const std::string& group,
+                                                       const std::map<std::int64_t, double>& forces,
+                                                       const SurfaceWeight& weight) {
+  return SurfaceProjection(mesh, group, weight).field(forces);
 }
 
 }  // namespace contactlab

@@ -24,14 +24,32 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace contactlab {
 
-// The field above over the facets of boundary group `group` (reference coordinates), for the
-// nodes in `forces` (the others carry no force); M1 p = g solved by conjugate gradients with a
-// diagonal preconditioner to 1e-12 relative, or with M1 lumped (row sums) on line facets. `weight`
-// weighs the measure (dA w(x): 2 pi r on an axisymmetric model's rings, whose nodal forces are per
-// ring; empty: w = 1). Returns p for the nodes of `forces`.
+// The field above over the facets of boundary group `group` (reference coordinates): the hat
+// functions and M1 built once, so that several force fields on one surface (a pressure and the
+// friction's components) share them. M1 p = g is solved by conjugate gradients with a diagonal
+// preconditioner to 1e-12 relative, or with M1 lumped (row sums) on line facets. `weight` weighs
+// the measure (dA w(x): 2 pi r on an axisymmetric model's rings, whose nodal forces are per ring;
+// empty: w = 1).
+class SurfaceProjection {
+ public:
+  SurfaceProjection(const Mesh& mesh, const std::string& group, const SurfaceWeight& weight = {});
+  // p for the nodes in `forces` (the others carry no force).
+  std::map<std::int64_t, double> field(const std::map<std::int64_t, double>& forces) const;
+
+ private:
+  // Each surface node's hat-function values phi_k(x_i) as (vertex, value) pairs (a vertex:
+  // itself with 1; a mid-edge node: its two ends with 1/2), and M1 on the vertices.
+  std::map<std::int64_t, std::vector<std::pair<int, double>>> hats_;
+  std::vector<std::map<int, double>> M1_;
+  bool lines_ = true;  // every facet a line: M1 lumped
+};
+
+// SurfaceProjection(mesh, group, weight).field(forces): one field.
 std::map<std::int64_t, double> pressureFromNodalForces(const Mesh& mesh, const std::string& group,
                                                        const std::map<std::int64_t, double>& forces,
                                                        const SurfaceWeight& weight = {});

@@ -50,6 +50,13 @@ N = 2 * math.pi * B_OUT * L * P
 EA = E * math.pi * (B_OUT**2 - A_IN**2)
 Q = MU * N / L
 U_FULL = (MU * N) ** 2 / (2 * EA * Q)
+
+
+def pulled(t):
+    """The pulled face's displacement at load time t."""
+    return PULL * (t - FIT_END) / (PULL_END - FIT_END)
+
+
 FORMULATION = "Contact/hole/Formulation/"
 PENALTY = [FORMULATION + "Type=penalty", FORMULATION + "penalty/Normal Penalty=1e7",
            FORMULATION + "penalty/Tangential Penalty=1e7"]
@@ -70,8 +77,7 @@ curves = {}
 for name, sets, bar_model in runs:
     out = os.path.join(work, name)
     summary = required_summary(exe, scene, out, ["Output/VTK=false", *sets], name)
-    check(outcome(name, summary), summary["converged"])
-    if not summary["converged"]:
+    if not check(outcome(name, summary), summary["converged"]):
         continue
     rows = list(csv.DictReader(open(os.path.join(out, "steps.csv"))))
     if bar_model:
@@ -80,8 +86,7 @@ for name, sets, bar_model in runs:
               abs(fit / N - 1) <= 1e-4)
     curve = []
     for r in rows:
-        t = float(r["time"])
-        u = PULL * (t - FIT_END) / (PULL_END - FIT_END)
+        u = pulled(float(r["time"]))
         force, normal = -float(r["contact_force_y"]), float(r["normal_force"])
         full_slip = int(r["stick_points"]) == 0 and u > 0
         if bar_model and u > 0:
@@ -106,8 +111,7 @@ for name, sets, bar_model in runs:
                         csv.DictReader(open(os.path.join(out, "contact_t0.4.csv"))))
         last_stick = max(z for z, s in points if s == "1")
         first_slip = min(z for z, s in points if s == "2")
-        u = PULL * (0.4 - FIT_END) / (PULL_END - FIT_END)
-        front = L - math.sqrt(2 * EA * u / Q)
+        front = L - math.sqrt(2 * EA * pulled(0.4) / Q)
         check(f"t = 0.4: stick up to z = {last_stick:g}, slip from z = {first_slip:g} (one front)",
               last_stick < first_slip and
               all((s == "1") == (z <= last_stick) for z, s in points))
@@ -129,9 +133,12 @@ for name, curve in curves.items():
     check(f"{name}: F(u) the defaults' to {worst:.1e} (1e-3)", worst <= 1e-3)
 # The expanded joint pulled out (and pushed in) after its release.
 EXPANDED = os.path.join(scenes, "tube-expansion-pull-out-axisymmetric.yaml")
-for name, sets, sign in [("expanded", [], -1), ("expanded-fixed-point", ["Algorithm/Method=fixed-point"], -1),
-                         ("expanded-node-to-segment", ["Contact/joint/Discretization=node-to-segment"], -1),
-                         ("expanded-pushed", ["Dirichlet/tube-axial/Value=0.05"], 1)]:
+# (name, --sets, the sign of the rig's force: -1 pulled out, +1 pushed in)
+expanded_runs = [("expanded", [], -1),
+                 ("expanded-fixed-point", ["Algorithm/Method=fixed-point"], -1),
+                 ("expanded-node-to-segment", ["Contact/joint/Discretization=node-to-segment"], -1),
+                 ("expanded-pushed", ["Dirichlet/tube-axial/Value=0.05"], 1)]
+for name, sets, sign in expanded_runs:
     out = os.path.join(work, name)
     summary = required_summary(exe, EXPANDED, out, ["Output/VTK=false", *sets], name)
     if not check(outcome(name, summary), summary["converged"]):
