@@ -277,14 +277,19 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "(formulations with multipliers only): a starting point, which changes the answer only "
         "where it is not unique (doc/algorithms.md)",
         choices({"interpenetrated", "all", "none"}));
-  p.set("Discretization", "node-to-segment",
-        "Where the contact conditions hold: 'node-to-segment' (at each slave node against the "
+  p.set("Discretization", "automatic",
+        "Where the contact conditions hold: 'automatic' (mortar on tri6 and quad8 slave facets, "
+        "i.e. tet10 and hex20 bodies, but for the normal-field formulation; node-to-segment "
+        "otherwise), 'node-to-segment' (at each slave node against the "
         "closest master point; a slave node beyond a free edge of the master surface, by more "
         "than 5 % of the edge's facet, faces no master and is open) or 'mortar' (weighted over "
         "the slave surface by the mortar "
         "integrals D and M, each slave facet against the master surface nearest to it that faces "
-        "it; two bodies only; its geometry is a fixed point, doc/verification.md)",
-        choices({"node-to-segment", "mortar"}));
+        "it; against an Obstacle, each slave node at its facets' D-weighted position against "
+        "the obstacle; its geometry is a fixed point, doc/verification.md). On tri6 and quad8 "
+        "slave facets node-to-segment collocates at corners that carry no share of a smooth "
+        "pressure; mortar is the sound choice there",
+        choices({"automatic", "node-to-segment", "mortar"}));
   p.set("Multiplier Basis", "dual",
         "mortar: the multiplier basis, 'dual' (biorthogonal to the slave's shape functions, "
         "built on the covered part of each facet: nodal pressures like lumped ones) or "

@@ -4,6 +4,7 @@
 #include "formulations/MortarDiscretization.hpp"
 #include "formulations/NodeToSegmentDiscretization.hpp"
 #include "formulations/ObstacleDiscretization.hpp"
+#include "formulations/ObstacleMortarDiscretization.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -72,10 +73,16 @@ void registerContactDiscretizations() {
          "Each slave node against its projection on an analytic rigid surface (plane, sphere, "
          "cylinder) that may translate",
          none, builder<ObstacleDiscretization>()});
+  r.add({"rigid-obstacle-mortar",
+         "Weighted over the slave facets against an analytic rigid surface: a point per slave "
+         "node at the facets' D-weighted position (mortar's multiplier basis)",
+         none, builder<ObstacleMortarDiscretization>()});
 }
 
 std::string discretizationName(const ContactZone& zone) {
-  if (zone.obstacle) return "rigid-obstacle";
+  if (zone.obstacle)
+    return zone.discretization == Discretization::mortar ? "rigid-obstacle-mortar"
+                                                         : "rigid-obstacle";
   return zone.discretization == Discretization::mortar ? "mortar" : "node-to-segment";
 }
 

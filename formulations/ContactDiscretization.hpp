@@ -8,6 +8,7 @@
 //   node-to-segment  NodeToSegmentDiscretization  a slave node against its closest master point
 //   mortar           MortarDiscretization          weighted over the slave facets (D and M)
 //   rigid-obstacle   ObstacleDiscretization        a slave node against an analytic surface
+//   rigid-obstacle-mortar  ObstacleMortarDiscretization  mortar's weighted gaps against one
 #include "base/Registry.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "formulations/ContactControls.hpp"
@@ -97,7 +98,8 @@ using ContactDiscretizationRegistry =
 ContactDiscretizationRegistry& contactDiscretizationRegistry();
 void registerContactDiscretizations();
 
-// The registry's name for a zone: rigid-obstacle with an obstacle, else its Discretization.
+// The registry's name for a zone: its Discretization, or with an obstacle rigid-obstacle
+// (node-to-segment) or rigid-obstacle-mortar.
 std::string discretizationName(const ContactZone& zone);
 // The zone's discretization, built through the registry (InputError for missing groups).
 std::unique_ptr<ContactDiscretization> makeContactDiscretization(const ContactZone& zone,

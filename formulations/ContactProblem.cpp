@@ -45,9 +45,11 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     std::map<std::int64_t, std::array<double, 3>> slaveNormals;
     if (zone.law->hasNormalField()) {
       if (zone.discretization == Discretization::mortar)
-        throw InputError("Contact/" + zone.name + ": " + zone.law->name() +
-                         " runs with node-to-segment or an obstacle, not mortar (its normal is "
-                         "the master's at a point, which mortar does not pair)");
+        throw InputError(
+            "Contact/" + zone.name + ": " + zone.law->name() +
+            " runs with node-to-segment (against a master surface or an obstacle), not "
+            "mortar (its normal is "
+            "the master's at a point, which mortar does not pair)");
       std::vector<std::int64_t> facetNodes;
       for (const CellGroup* g : mesh.findBoundaries(zone.slave))
         facetNodes.insert(facetNodes.end(), g->nodes.begin(), g->nodes.end());

@@ -10,11 +10,9 @@ ObstacleDiscretization::ObstacleDiscretization(const ContactZone& zone, const Me
 
 double ObstacleDiscretization::place(ContactPoint& pt, const std::array<double, 3>& xs,
                                      double t) const {
-  const ObstacleProjection proj = obstacle_.project(xs.data(), t);
+  const ObstacleProjection proj = obstacle_.projectAtRest(xs.data(), t);
   pt.normal = proj.normal;
-  const auto shift = obstacle_.translation(t);
-  for (int c = 0; c < 3; ++c)
-    pt.obstaclePoint[c] = proj.point[c] - shift[c];
+  pt.obstaclePoint = proj.point;
   return proj.gap;
 }
 
@@ -37,12 +35,7 @@ void ObstacleDiscretization::subtractMasterSide(const ContactPoint& pt,
                                                 const ContactSurfaceState& /*state*/, double t,
                                                 double tConverged, std::array<double, 3>& relative,
                                                 std::array<double, 3>& slip) const {
-  const auto now = obstacle_.translation(t);
-  const auto then = obstacle_.translation(tConverged);
-  for (int c = 0; c < 3; ++c) {
-    relative[c] -= pt.obstaclePoint[c] + now[c];
-    slip[c] -= now[c] - then[c];
-  }
+  obstacle_.subtractFrom(pt.obstaclePoint, t, tConverged, relative, slip);
 }
 
 std::array<double, 3> ObstacleDiscretization::currentNormal(const ContactPoint& pt,

@@ -121,7 +121,7 @@ def run_contactlab(exe, work, msh, delta):
     rn = re.search(r"r_n = E / h = (\S+)", done.stdout)
     return dict(program="contactlab",
                 settings=f"defaults: augmented Lagrangian (automatic r_n = "
-                         f"{rn.group(1) if rn else '?'}), node-to-segment, "
+                         f"{rn.group(1) if rn else '?'}), {summary['discretization']['floor']}, "
                          f"{summary['algorithm']['method']}, MUMPS {mode}",
                 dofs=f"{u['displacement']} + {u['contact_multipliers']}",
                 newton=summary["iterations"]["newton"], wall=wall, cpu=cpu, mib=mib,

@@ -594,6 +594,23 @@ std::vector<double> dualBasisCoefficients(const Facet& slave) {
   return wholeFacetDualBasis(slave, lumped, mass, facetBasisTransform(slave.type, lumped));
 }
 
+MortarIntegrals integrateWholeFacet(const Facet& slave, MultiplierBasis basis,
+                                    const SurfaceWeight& weight) {
+  const int spaceDim = checkFacet(slave);
+  if (weight && spaceDim != 2)
+    throw std::invalid_argument("mortar integration: a weighted measure is for 2D (line) facets");
+  const int ns = info(slave.type).nodes;
+  MortarIntegrals out;
+  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, &out.D, weight);
+  out.area = out.coveredArea = std::accumulate(lumped.begin(), lumped.end(), 0.0);
+  const std::vector<double> T = facetBasisTransform(slave.type, lumped);
+  if (basis == MultiplierBasis::Dual)
+    changeBasis(wholeFacetDualBasis(slave, lumped, out.D, T), ns, out);
+  else if (!isIdentity(T, ns))
+    changeBasis(T, ns, out);
+  return out;
+}
+
 MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<std::array<double, 3>>& slaveNormals,
                                 const std::vector<const Facet*>& masters, MultiplierBasis basis,

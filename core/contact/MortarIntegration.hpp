@@ -85,6 +85,13 @@ MortarIntegrals integrateMortar(const Facet& slave,
                                 const std::vector<const Facet*>& masters, MultiplierBasis basis,
                                 const SurfaceWeight& weight = {}, double searchDistance = HUGE_VAL);
 
+// D_jk = int_S Phi_j N_k dA over the whole of S (no master: a rigid obstacle covers every facet),
+// in the basis `basis` built as integrateMortar builds it on a fully covered facet (the dual
+// basis biorthogonal to T N, or T N itself); the row sums are the weights int_S Phi_j dA.
+// `masters` and `coveredArea` of the result are empty and the area. Throws as integrateMortar.
+MortarIntegrals integrateWholeFacet(const Facet& slave, MultiplierBasis basis,
+                                    const SurfaceWeight& weight = {});
+
 // Coefficients B (row major ns x ns) of the dual basis on `slave`, Phi = B N: B = A T with
 // A = D_e M_e^-1, D_e = diag(int_S T N dA), M_e = int_S T N (T N)^T dA over the whole facet.
 // Throws std::invalid_argument when some int_S (T N)_j dA <= 0 (a distorted facet).

@@ -43,6 +43,25 @@ std::array<double, 3> RigidObstacle::translation(double t) const {
           spaceDim_ == 3 ? spec_.displacement[2] * f : 0.0};
 }
 
+ObstacleProjection RigidObstacle::projectAtRest(const double* x, double t) const {
+  ObstacleProjection p = project(x, t);
+  const auto shift = translation(t);
+  for (int c = 0; c < 3; ++c)
+    p.point[c] -= shift[c];
+  return p;
+}
+
+void RigidObstacle::subtractFrom(const std::array<double, 3>& pointAtRest, double t,
+                                 double tConverged, std::array<double, 3>& relative,
+                                 std::array<double, 3>& slip) const {
+  const auto now = translation(t);
+  const auto then = translation(tConverged);
+  for (int c = 0; c < 3; ++c) {
+    relative[c] -= pointAtRest[c] + now[c];
+    slip[c] -= now[c] - then[c];
+  }
+}
+
 ObstacleProjection RigidObstacle::project(const double* x, double t) const {
   using Shape = RigidObstacleSpec::Shape;
   const auto shift = translation(t);

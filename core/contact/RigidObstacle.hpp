@@ -43,8 +43,15 @@ class RigidObstacle {
   // centre (normal undefined) gets the normal of the first coordinate axis orthogonal to the
   // cylinder axis, so the result is always finite.
   ObstacleProjection project(const double* x, double t) const;
+  // project(), its point taken back by the translation at t (where it sits on the obstacle at
+  // rest): what a contact point keeps of its pairing.
+  ObstacleProjection projectAtRest(const double* x, double t) const;
   // Rigid translation of the obstacle at time t.
   std::array<double, 3> translation(double t) const;
+  // The obstacle's side of a contact point's kinematics: subtracts `pointAtRest` translated to
+  // time t from `relative`, and the translation since tConverged from `slip`.
+  void subtractFrom(const std::array<double, 3>& pointAtRest, double t, double tConverged,
+                    std::array<double, 3>& relative, std::array<double, 3>& slip) const;
   const RigidObstacleSpec& spec() const { return spec_; }
 
  private:

@@ -89,6 +89,23 @@ TEST(MortarIntegration, DualBasisIsBiorthogonal) {
 // gaps would vanish or change sign. The transformed bases give every node a positive weight
 // sum_k D_jk = int Phi_j: tri6 2A/15 at corners and A/5 at mid-edges, quad8 A/20 and A/5
 // (alpha = 1/5), in both bases.
+// A rigid obstacle covers the whole facet: integrateWholeFacet's D is a fully covered
+// facet's, in either basis, for every facet type (ObstacleMortarDiscretization).
+TEST(MortarIntegration, AWholeFacetIsAFullyCoveredOne) {
+  for (ElementType t : kFacetTypes)
+    for (MultiplierBasis basis : kBases) {
+      const auto& [slave, masters, covered, exact, T, n] = matchingFacets(t, basis);
+      const MortarIntegrals whole = integrateWholeFacet(slave, basis);
+      SCOPED_TRACE(info(t).name);
+      EXPECT_TRUE(whole.masters.empty());
+      EXPECT_NEAR(whole.area, exact.area, 1e-14);
+      EXPECT_NEAR(whole.coveredArea, exact.area, 1e-14);
+      ASSERT_EQ(whole.D.size(), covered.D.size());
+      for (std::size_t i = 0; i < whole.D.size(); ++i)
+        EXPECT_NEAR(whole.D[i], covered.D[i], 1e-13 * exact.area);
+    }
+}
+
 TEST(MortarIntegration, QuadraticSlaveFacetsGetPositiveWeights) {
   for (ElementType t : {ElementType::Tri6, ElementType::Quad8}) {
     const Facet slave = makeFacet(t, unitSlave(t));

@@ -1,0 +1,136 @@
+#include "formulations/ObstacleMortarDiscretization.hpp"
+
+#include "base/InputError.hpp"
+#include "core/contact/TributaryAreas.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace contactlab {
+
+ObstacleMortarDiscretization::ObstacleMortarDiscretization(const ContactZone& zone,
+                                                           const Mesh& mesh, int dim)
+    : ContactDiscretization(dim, resolvedSearchDistance(zone, mesh)),
+      mesh_(mesh),
+      zoneName_(zone.name),
+      slave_(zone.slave),
+      basis_(zone.multiplierBasis),
+      areaWeight_(zone.areaWeight),
+      obstacle_(*zone.obstacle, dim) {}
+
+void ObstacleMortarDiscretization::prepare(const ContactSurfaceState& state, double t) {
+  rows_.clear();
+  for (const CellGroup* g : mesh_.findBoundaries(slave_)) {
+    const int n = g->nodesPerCell();
+    for (std::size_t c = 0; c < g->size(); ++c) {
+      Facet f;
+      f.type = g->type;
+      // A facet whose nodes are all beyond the search distance pairs none of them, and a node
+      // within it has all its facets integrated: its weight is whole.
+      bool near = false;
+      for (int a = 0; a < n; ++a) {
+        const auto x = state.position(g->nodes[c * n + a]);
+        f.coords.insert(f.coords.end(), x.begin(), x.end());
+        near |= obstacle_.project(x.data(), t).gap < searchDistance_;
+      }
+      if (!near) continue;
+      MortarIntegrals in;
+      try {
+        in = integrateWholeFacet(f, basis_, areaWeight_);
+      } catch (const std::invalid_argument& e) {
+        throw InputError("Contact/" + zoneName_ + ": mortar: " + e.what());
+      }
+      const double tiny = 1e-14 * in.area;
+      for (int j = 0; j < n; ++j) {
+        auto& row = rows_[g->nodes[c * n + j]];
+        for (int k = 0; k < n; ++k)
+          if (std::abs(in.D[j * n + k]) > tiny) row[g->nodes[c * n + k]] += in.D[j * n + k];
+      }
+    }
+  }
+  // The multiplier per nominal area, as mortar's (MortarDiscretization::prepare).
+  currentAreas_ = tributaryAreas(
+      mesh_, slave_, dim_, [&state](std::int64_t node) { return state.position(node); },
+      areaWeight_);
+}
+
+PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
+                                                const std::array<double, 3>& /*xs*/,
+                                                const ContactSurfaceState& state, double t) {
+  PointPairing result;
+  result.size = searchDistance_ / 2;
+  result.gap = searchDistance_;
+  pt.paired = false;
+  pt.self = 1.0;
+  pt.weight = pt.referenceWeight;
+  const auto it = rows_.find(pt.node);
+  if (it == rows_.end()) return result;
+  double w = 0;
+  for (const auto& entry : it->second)
+    w += entry.second;
+  if (!(w > 0)) return result;
+  pt.master.clear();
+  pt.N.clear();
+  for (const auto& [k, d] : it->second)
+    if (k == pt.node) {
+      pt.self = d / w;
+    } else {
+      pt.master.push_back(k);
+      pt.N.push_back(-d / w);
+    }
+  // FNV-1a of the coupled nodes (the nodes of the facets around it): a new key, a new graph.
+  std::uint32_t hash = 2166136261u;
+  for (std::int64_t node : pt.master)
+    hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
+  pt.facet = static_cast<int>(hash & 0x3fffffffu);
+  pt.weight = w * pt.referenceWeight / currentAreas_.at(pt.node);
+  // The weighted position, not the node's own xs.
+  const auto x = weightedPosition(pt, state);
+  const ObstacleProjection proj = obstacle_.projectAtRest(x.data(), t);
+  pt.normal = proj.normal;
+  pt.obstaclePoint = proj.point;
+  result.gap = proj.gap;
+  pt.paired = proj.gap < searchDistance_;
+  return result;
+}
+
+std::array<double, 3> ObstacleMortarDiscretization::weightedPosition(
+    const ContactPoint& pt, const ContactSurfaceState& state) const {
+  std::array<double, 3> x = state.position(pt.node);
+  for (int c = 0; c < 3; ++c)
+    x[c] *= pt.self;
+  for (std::size_t a = 0; a < pt.master.size(); ++a) {
+    const auto xa = state.position(pt.master[a]);
+    for (int c = 0; c < 3; ++c)
+      x[c] -= pt.N[a] * xa[c];
+  }
+  return x;
+}
+
+std::array<double, 3> ObstacleMortarDiscretization::masterPoint(
+    const ContactPoint& pt, const std::array<double, 3>& xs,
+    const ContactSurfaceState& state) const {
+  auto xm = ContactDiscretization::masterPoint(pt, xs, state);
+  for (int c = 0; c < 3; ++c)
+    xm[c] += pt.obstaclePoint[c];
+  return xm;
+}
+
+void ObstacleMortarDiscretization::subtractMasterSide(const ContactPoint& pt,
+                                                      const ContactSurfaceState& state, double t,
+                                                      double tConverged,
+                                                      std::array<double, 3>& relative,
+                                                      std::array<double, 3>& slip) const {
+  ContactDiscretization::subtractMasterSide(pt, state, t, tConverged, relative, slip);
+  obstacle_.subtractFrom(pt.obstaclePoint, t, tConverged, relative, slip);
+}
+
+std::array<double, 3> ObstacleMortarDiscretization::currentNormal(const ContactPoint& pt,
+                                                                  const ContactSurfaceState& state,
+                                                                  double t) const {
+  const auto x = weightedPosition(pt, state);
+  return obstacle_.project(x.data(), t).normal;
+}
+
+}  // namespace contactlab
