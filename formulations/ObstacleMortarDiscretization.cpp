@@ -37,15 +37,17 @@ void ObstacleMortarDiscretization::prepare(const ContactSurfaceState& state, dou
       if (!near) continue;
       MortarIntegrals in;
       try {
-        in = integrateWholeFacet(f, basis_, areaWeight_);
+        in = integrateWholeFacet(f, basis_, areaWeight_,
+                                 [&](const double* x) { return obstacle_.project(x, t).gap; });
       } catch (const std::invalid_argument& e) {
         throw InputError("Contact/" + zoneName_ + ": mortar: " + e.what());
       }
       const double tiny = 1e-14 * in.area;
       for (int j = 0; j < n; ++j) {
-        auto& row = rows_[g->nodes[c * n + j]];
+        Row& row = rows_[g->nodes[c * n + j]];
+        row.gap += in.field[j];
         for (int k = 0; k < n; ++k)
-          if (std::abs(in.D[j * n + k]) > tiny) row[g->nodes[c * n + k]] += in.D[j * n + k];
+          if (std::abs(in.D[j * n + k]) > tiny) row.D[g->nodes[c * n + k]] += in.D[j * n + k];
       }
     }
   }
@@ -67,12 +69,12 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
   const auto it = rows_.find(pt.node);
   if (it == rows_.end()) return result;
   double w = 0;
-  for (const auto& entry : it->second)
+  for (const auto& entry : it->second.D)
     w += entry.second;
   if (!(w > 0)) return result;
   pt.master.clear();
   pt.N.clear();
-  for (const auto& [k, d] : it->second)
+  for (const auto& [k, d] : it->second.D)
     if (k == pt.node) {
       pt.self = d / w;
     } else {
@@ -85,13 +87,20 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
     hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
   pt.facet = static_cast<int>(hash & 0x3fffffffu);
   pt.weight = w * pt.referenceWeight / currentAreas_.at(pt.node);
-  // The weighted position, not the node's own xs.
+  // At the weighted position (not the node's own xs), along the obstacle's normal there, with
+  // the obstacle point placed so that the point's gap is the integrated weighted gap: the same
+  // on a plane; on a curved obstacle the gap at x_j is not the mean of the gaps (a tet10 block
+  // on a sphere of radius 2, facets 0.025: the contact force 0.7 % below the mesh-converged one
+  // with the gap at x_j, 0.2 % above with the integrated one, as node-to-segment's 0.26 %).
   const auto x = weightedPosition(pt, state);
-  const ObstacleProjection proj = obstacle_.projectAtRest(x.data(), t);
+  const ObstacleProjection proj = obstacle_.project(x.data(), t);
+  const double gap = it->second.gap / w;
+  const auto shift = obstacle_.translation(t);
   pt.normal = proj.normal;
-  pt.obstaclePoint = proj.point;
-  result.gap = proj.gap;
-  pt.paired = proj.gap < searchDistance_;
+  for (int c = 0; c < 3; ++c)
+    pt.obstaclePoint[c] = x[c] - gap * proj.normal[c] - shift[c];
+  result.gap = gap;
+  pt.paired = gap < searchDistance_;
   return result;
 }
 

@@ -4,10 +4,12 @@
 // multiplier basis Phi of mortar (dual or standard; on tri6 and quad8 built on the transformed
 // functions whose corner integrals are positive). An obstacle covers every facet, so D_jk =
 // int_S Phi_j N_k dA is the whole facets' (integrateWholeFacet), and for a plane the weighted
-// gap is exactly the gap of the point x_j = sum_k D_jk x_k / w_j: self = D_jj / w_j and the
-// other slave nodes as `master` with N = -D_jk / w_j, against the obstacle's projection of x_j
-// (its point and normal). On a curved obstacle that is the weighted gap to second order in the
-// facet size. On linear facets with the dual basis D is diagonal and this is node-to-segment's
+// gap is the gap of the point x_j = sum_k D_jk x_k / w_j: self = D_jj / w_j and the other
+// slave nodes as `master` with N = -D_jk / w_j, along the obstacle's normal at x_j. On a curved
+// obstacle the weighted gap, integrated at the facets' quadrature points, is the point's gap at
+// the pairing (its obstacle point is placed so); Newton moves it along that normal, as it does
+// node-to-segment's between pairings. On linear facets with the dual basis D is diagonal and
+// this is node-to-segment's
 // obstacle pairing with its lumped areas. Why: node-to-segment collocates at tri6 and quad8
 // corners that carry no share of a smooth pressure; against a meshed master mortar is the sound
 // choice, and this makes it one against an obstacle too (doc/verification.md). Its geometry is
@@ -47,7 +49,12 @@ class ObstacleMortarDiscretization : public ContactDiscretization {
   MultiplierBasis basis_;
   SurfaceWeight areaWeight_;
   RigidObstacle obstacle_;
-  std::map<std::int64_t, std::map<std::int64_t, double>> rows_;  // D_jk at the last prepare()
+  // A slave node's D_jk and weighted gap int Phi_j g dA, summed over its facets.
+  struct Row {
+    std::map<std::int64_t, double> D;
+    double gap = 0.0;
+  };
+  std::map<std::int64_t, Row> rows_;             // at the last prepare()
   std::map<std::int64_t, double> currentAreas_;  // tributary areas at the last prepare()
 };
 

@@ -120,20 +120,25 @@ int shapeDegree(ElementType t) {
 // on straight and flat facets; a curved quadratic facet's dA is not polynomial, hence the extra
 // degrees.
 std::vector<double> wholeFacetIntegrals(const Facet& f, int spaceDim, std::vector<double>* mass,
-                                        const SurfaceWeight& weight = {}) {
+                                        const SurfaceWeight& weight = {},
+                                        const FacetField& field = {},
+                                        std::vector<double>* fieldIntegrals = nullptr) {
   const ReferenceElement& ref = ReferenceElement::get(f.type);
   const int n = ref.numNodes(), order = info(f.type).order;
   const QuadratureRule& rule = quadratureRule(f.type, 2 * order + (order > 1 ? 6 : 2));
   std::vector<double> lumped(n, 0.0);
   if (mass) mass->assign(static_cast<std::size_t>(n) * n, 0.0);
+  if (fieldIntegrals) fieldIntegrals->assign(n, 0.0);
   for (int q = 0; q < rule.size(); ++q) {
     FacetPoint p;
     evaluate(ref, f.coords.data(), &rule.points[q * ref.dim()], p);
     double normal[3];
     const double dA =
         rule.weights[q] * areaElement(f, spaceDim, p.dN, normal) * (weight ? weight(p.x) : 1.0);
+    const double value = fieldIntegrals ? field(p.x) : 0.0;
     for (int j = 0; j < n; ++j) {
       lumped[j] += p.N[j] * dA;
+      if (fieldIntegrals) (*fieldIntegrals)[j] += p.N[j] * value * dA;
       for (int k = 0; mass && k < n; ++k)
         (*mass)[j * n + k] += p.N[j] * p.N[k] * dA;
     }
@@ -595,19 +600,24 @@ std::vector<double> dualBasisCoefficients(const Facet& slave) {
 }
 
 MortarIntegrals integrateWholeFacet(const Facet& slave, MultiplierBasis basis,
-                                    const SurfaceWeight& weight) {
+                                    const SurfaceWeight& weight, const FacetField& field) {
   const int spaceDim = checkFacet(slave);
   if (weight && spaceDim != 2)
     throw std::invalid_argument("mortar integration: a weighted measure is for 2D (line) facets");
   const int ns = info(slave.type).nodes;
   MortarIntegrals out;
-  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, &out.D, weight);
+  std::vector<double> fieldIntegrals;
+  const std::vector<double> lumped = wholeFacetIntegrals(slave, spaceDim, &out.D, weight, field,
+                                                         field ? &fieldIntegrals : nullptr);
   out.area = out.coveredArea = std::accumulate(lumped.begin(), lumped.end(), 0.0);
   const std::vector<double> T = facetBasisTransform(slave.type, lumped);
-  if (basis == MultiplierBasis::Dual)
-    changeBasis(wholeFacetDualBasis(slave, lumped, out.D, T), ns, out);
-  else if (!isIdentity(T, ns))
-    changeBasis(T, ns, out);
+  const std::vector<double> B =
+      basis == MultiplierBasis::Dual ? wholeFacetDualBasis(slave, lumped, out.D, T) : T;
+  changeBasis(B, ns, out);
+  out.field.assign(field ? ns : 0, 0.0);
+  for (std::size_t j = 0; j < out.field.size(); ++j)
+    for (int k = 0; k < ns; ++k)
+      out.field[j] += B[j * ns + k] * fieldIntegrals[k];
   return out;
 }
 

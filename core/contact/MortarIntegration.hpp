@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace contactlab {
@@ -55,8 +56,12 @@ struct MortarMaster {
   std::vector<double> M;  // row major ns x nm (slave nodes x this master's nodes)
 };
 
+// A scalar field over a facet, at a point x (3 components) of it.
+using FacetField = std::function<double(const double* x)>;
+
 struct MortarIntegrals {
   std::vector<double> D;              // row major ns x ns
+  std::vector<double> field;          // integrateWholeFacet with a field: int Phi_j f dA
   std::vector<MortarMaster> masters;  // the masters that overlap S, in the order given
   double coveredArea = 0.0;           // area of S covered by the masters' projections
   double area = 0.0;                  // area (length in 2D) of S
@@ -88,9 +93,10 @@ MortarIntegrals integrateMortar(const Facet& slave,
 // D_jk = int_S Phi_j N_k dA over the whole of S (no master: a rigid obstacle covers every facet),
 // in the basis `basis` built as integrateMortar builds it on a fully covered facet (the dual
 // basis biorthogonal to T N, or T N itself); the row sums are the weights int_S Phi_j dA.
-// `masters` and `coveredArea` of the result are empty and the area. Throws as integrateMortar.
+// With `field`, also int_S Phi_j f(x) dA into `field` of the result (an obstacle's gap). Its
+// `masters` are empty and its coveredArea the area. Throws as integrateMortar.
 MortarIntegrals integrateWholeFacet(const Facet& slave, MultiplierBasis basis,
-                                    const SurfaceWeight& weight = {});
+                                    const SurfaceWeight& weight = {}, const FacetField& field = {});
 
 // Coefficients B (row major ns x ns) of the dual basis on `slave`, Phi = B N: B = A T with
 // A = D_e M_e^-1, D_e = diag(int_S T N dA), M_e = int_S T N (T N)^T dA over the whole facet.
