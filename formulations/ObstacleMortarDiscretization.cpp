@@ -57,8 +57,7 @@ void ObstacleMortarDiscretization::prepare(const ContactSurfaceState& state, dou
       areaWeight_);
 }
 
-PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
-                                                const std::array<double, 3>& /*xs*/,
+PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt, const std::array<double, 3>& xs,
                                                 const ContactSurfaceState& state, double t) {
   PointPairing result;
   result.size = searchDistance_ / 2;
@@ -66,8 +65,9 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
   pt.paired = false;
   pt.self = 1.0;
   pt.weight = pt.referenceWeight;
+  // Only a node within the search distance has every facet around it integrated (prepare()).
   const auto it = rows_.find(pt.node);
-  if (it == rows_.end()) return result;
+  if (it == rows_.end() || !(obstacle_.project(xs.data(), t).gap < searchDistance_)) return result;
   double w = 0;
   for (const auto& entry : it->second.D)
     w += entry.second;
@@ -87,7 +87,7 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt,
     hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
   pt.facet = static_cast<int>(hash & 0x3fffffffu);
   pt.weight = w * pt.referenceWeight / currentAreas_.at(pt.node);
-  // At the weighted position (not the node's own xs), along the obstacle's normal there, with
+  // At the weighted position (not the node's own), along the obstacle's normal there, with
   // the obstacle point placed so that the point's gap is the integrated weighted gap: the same
   // on a plane; on a curved obstacle the gap at x_j is not the mean of the gaps (a tet10 block
   // on a sphere of radius 2, facets 0.025: the contact force 0.7 % below the mesh-converged one
