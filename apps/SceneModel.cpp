@@ -7,6 +7,7 @@
 #include "apps/SceneTemperatures.hpp"
 #include "base/InputError.hpp"
 #include "base/NumberText.hpp"
+#include "core/contact/MortarIntegration.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
@@ -160,6 +161,14 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
+// The first facet group of `slave` whose corners carry no share of a smooth pressure (tri6,
+// quad8: hasTransformedBasis), or null.
+const CellGroup* cornerlessFacets(const Mesh& mesh, const std::string& slave) {
+  for (const CellGroup* g : mesh.findBoundaries(slave))
+    if (hasTransformedBasis(g->type)) return g;
+  return nullptr;
+}
+
 // Contact/<zone>: checked against the mesh (the same on every rank, so every rank agrees).
 ContactZone contactZone(const ParameterList& z, const std::string& name, const Mesh& mesh,
                         const SolidModel& model, double endTime, const std::string& where,
@@ -304,13 +313,11 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   // in tet10 with friction failed to converge); node-to-segment elsewhere, and for a normal
   // field, which mortar does not pair (doc/verification.md "Mortar against an obstacle").
   if (discretization == "automatic" && !zone.law->hasNormalField())
-    for (const CellGroup* g : mesh.findBoundaries(zone.slave))
-      if (g->type == ElementType::Tri6 || g->type == ElementType::Quad8) {
-        zone.discretization = Discretization::mortar;
-        notes.push_back("Contact/" + name + ": Discretization mortar (automatic: " +
-                        info(g->type).name + " slave facets)");
-        break;
-      }
+    if (const CellGroup* g = cornerlessFacets(mesh, zone.slave)) {
+      zone.discretization = Discretization::mortar;
+      notes.push_back("Contact/" + name + ": Discretization mortar (automatic: " +
+                      info(g->type).name + " slave facets)");
+    }
   if (zone.law->hasNormalField() && zone.discretization == Discretization::mortar)
     throw InputError(path + "/Formulation: " + zone.formulation +
                      " runs with node-to-segment (against a master surface or an obstacle), not "
@@ -500,17 +507,14 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   // negative) share of a smooth pressure: it runs, its forces are not consistent loads.
   for (const ContactZone& zone : sm.contact)
     if (zone.discretization == Discretization::nodeToSegment)
-      for (const CellGroup* g : mesh->findBoundaries(zone.slave))
-        if (g->type == ElementType::Tri6 || g->type == ElementType::Quad8) {
-          sm.advice.push_back(
-              "Contact/" + zone.name + ": node-to-segment on " + info(g->type).name +
-              " slave facets collocates at corners that carry no share of a smooth pressure "
-              "(a uniform pressure on tet10 comes out with a 7 % spread, 3D Hertz on two tet10 "
-              "bodies 5.5 % RMS off); 'Discretization: mortar' enforces contact on quadratic "
-              "facets soundly, against a master surface or an obstacle (1e-12 and 3.2 %, "
-              "doc/verification.md)");
-          break;
-        }
+      if (const CellGroup* g = cornerlessFacets(*mesh, zone.slave))
+        sm.advice.push_back(
+            "Contact/" + zone.name + ": node-to-segment on " + info(g->type).name +
+            " slave facets collocates at corners that carry no share of a smooth pressure "
+            "(a uniform pressure on tet10 comes out with a 7 % spread, 3D Hertz on two tet10 "
+            "bodies 5.5 % RMS off); 'Discretization: mortar' enforces contact on quadratic "
+            "facets soundly, against a master surface or an obstacle (1e-12 and 3.2 %, "
+            "doc/verification.md)");
   // Combinations that cannot work are refused here, with the reason.
   for (const ContactZone& zone : sm.contact)
     if (sm.solverOptions.cyclingTreatment == "automatic" && zone.law->coefficientsChangeSolution())

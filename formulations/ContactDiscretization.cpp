@@ -98,6 +98,13 @@ std::unique_ptr<ContactDiscretization> makeContactDiscretization(const ContactZo
   }
 }
 
+int couplingKey(const std::vector<std::int64_t>& nodes) {
+  std::uint32_t hash = 2166136261u;
+  for (std::int64_t node : nodes)
+    hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
+  return static_cast<int>(hash & 0x3fffffffu);
+}
+
 double resolvedSearchDistance(const ContactZone& zone, const Mesh& mesh) {
   if (zone.searchDistance > 0) return zone.searchDistance;
   double largest = 0;

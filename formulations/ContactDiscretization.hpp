@@ -104,6 +104,9 @@ std::string discretizationName(const ContactZone& zone);
 // The zone's discretization, built through the registry (InputError for missing groups).
 std::unique_ptr<ContactDiscretization> makeContactDiscretization(const ContactZone& zone,
                                                                  const Mesh& mesh, int dim);
+// A key of a point's coupled nodes (FNV-1a of `nodes`, in [0, 2^30)): a new key, a new pairing
+// and so a new graph (the mortar discretizations' ContactPoint::facet).
+int couplingKey(const std::vector<std::int64_t>& nodes);
 // The zone's search distance: its own, or automatic: twice the largest slave facet (a slave
 // point moves less than that in a step of a reasonable load history).
 double resolvedSearchDistance(const ContactZone& zone, const Mesh& mesh);

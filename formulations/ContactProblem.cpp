@@ -48,8 +48,7 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
         throw InputError(
             "Contact/" + zone.name + ": " + zone.law->name() +
             " runs with node-to-segment (against a master surface or an obstacle), not "
-            "mortar (its normal is "
-            "the master's at a point, which mortar does not pair)");
+            "mortar (its normal is the master's at a point, which mortar does not pair)");
       std::vector<std::int64_t> facetNodes;
       for (const CellGroup* g : mesh.findBoundaries(zone.slave))
         facetNodes.insert(facetNodes.end(), g->nodes.begin(), g->nodes.end());

@@ -78,11 +78,7 @@ PointPairing MortarDiscretization::pair(ContactPoint& pt, const std::array<doubl
       pt.N.push_back(m / w);
     }
     pt.weight = w * pt.referenceWeight / currentAreas_.at(pt.node);
-    // FNV-1a of the coupled nodes: a new key means a new pairing (a new graph).
-    std::uint32_t hash = 2166136261u;
-    for (std::int64_t node : pt.master)
-      hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
-    pt.facet = static_cast<int>(hash & 0x3fffffffu);
+    pt.facet = couplingKey(pt.master);
     for (int c = 0; c < 3; ++c)
       pt.normal[c] = -row.normal[c];  // from the master towards the slave
     const auto xm = masterPoint(pt, xs, state);

@@ -81,11 +81,7 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt, const std::arr
       pt.master.push_back(k);
       pt.N.push_back(-d / w);
     }
-  // FNV-1a of the coupled nodes (the nodes of the facets around it): a new key, a new graph.
-  std::uint32_t hash = 2166136261u;
-  for (std::int64_t node : pt.master)
-    hash = (hash ^ static_cast<std::uint32_t>(node)) * 16777619u;
-  pt.facet = static_cast<int>(hash & 0x3fffffffu);
+  pt.facet = couplingKey(pt.master);  // the nodes of the facets around it
   pt.weight = w * pt.referenceWeight / currentAreas_.at(pt.node);
   // At the weighted position (not the node's own), along the obstacle's normal there, with
   // the obstacle point placed so that the point's gap is the integrated weighted gap: the same
@@ -107,13 +103,9 @@ PointPairing ObstacleMortarDiscretization::pair(ContactPoint& pt, const std::arr
 std::array<double, 3> ObstacleMortarDiscretization::weightedPosition(
     const ContactPoint& pt, const ContactSurfaceState& state) const {
   std::array<double, 3> x = state.position(pt.node);
+  const auto side = ContactDiscretization::masterPoint(pt, x, state);
   for (int c = 0; c < 3; ++c)
-    x[c] *= pt.self;
-  for (std::size_t a = 0; a < pt.master.size(); ++a) {
-    const auto xa = state.position(pt.master[a]);
-    for (int c = 0; c < 3; ++c)
-      x[c] -= pt.N[a] * xa[c];
-  }
+    x[c] -= side[c];
   return x;
 }
 

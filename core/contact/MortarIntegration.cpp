@@ -189,12 +189,6 @@ std::vector<double> dualCoefficients(int n, const std::vector<double>& d,
 // quadratic mortar.
 constexpr double kTransformAlpha = 0.2;
 
-// Facet types whose multiplier bases are built on transformed functions (corner integrals zero
-// or negative: multiplierBasisTransform).
-bool hasTransformedBasis(ElementType type) {
-  return type == ElementType::Tri6 || type == ElementType::Quad8;
-}
-
 bool isIdentity(const std::vector<double>& T, int n) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
@@ -554,6 +548,10 @@ void toDualBasis(const std::vector<double>& whole, const std::vector<double>& T,
 }
 
 }  // namespace
+
+bool hasTransformedBasis(ElementType type) {
+  return type == ElementType::Tri6 || type == ElementType::Quad8;
+}
 
 std::vector<double> multiplierBasisTransform(ElementType type) {
   const int n = info(type).nodes;

@@ -108,6 +108,9 @@ std::vector<double> dualBasisCoefficients(const Facet& slave);
 // and a mid-edge function keeps 1 - 2 alpha of itself. int T N is then positive on undistorted
 // facets: tri6 2A/15 at corners, A/5 at mid-edges; quad8 A/20 and A/5.
 std::vector<double> multiplierBasisTransform(ElementType type);
+// The facet types whose corner shape functions integrate to zero or below (tri6, quad8): their
+// multiplier bases are built on T N, and node-to-segment's collocation there is not sound.
+bool hasTransformedBasis(ElementType type);
 
 // The transform a facet's multiplier bases are built on, from its whole-facet integrals
 // int N_j w dA: the type's, and on a line3 facet whose corner integrates to 0 under the weight
