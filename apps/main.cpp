@@ -90,11 +90,12 @@ const char* commandHelp(const std::string& command) {
   if (command == "study")
     return "usage: contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]\n"
            "\n"
-           "Runs a scene over the product of a study's axes, each run with a time limit, all in\n"
-           "one `contactlab batch` process (a crash or a timeout ends only its run; the study\n"
-           "key Process Per Run: true gives each run a process of its own), resumable, then\n"
-           "writes study.csv, study.md and plots and prints the comparison table and where they\n"
-           "are (doc/studies.md). `make run` runs scenes/studies/quick-comparison.yaml.\n";
+           "Runs a scene over the product of a study's axes, each run with a time limit, in\n"
+           "`contactlab batch` processes, as many runs at a time as the cores while the memory\n"
+           "allows (a crash or a timeout ends only its run; the study keys Parallel Runs and\n"
+           "Process Per Run change that); resumable. Writes study.csv, study.md and plots and\n"
+           "prints the comparison table and where they are (doc/studies.md). `make run` runs\n"
+           "scenes/studies/quick-comparison.yaml.\n";
   if (command == "batch")
     return "usage: contactlab batch [--quiet] < RUNS\n"
            "\n"

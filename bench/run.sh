@@ -133,8 +133,9 @@ if want single-precision; then
     "$BUILD/bench-single-precision" --cases "${cases[@]}" --doc doc/performance.md
 fi
 if want study-process; then
-  # Studies with their runs in one `contactlab batch` process against a process per run, and
-  # against one run (issue 19's 100-run study): five studies, about 6 minutes.
+  # Studies run the default way (as many runs at a time as the cores), in one `contactlab batch`
+  # process one at a time, and a process per run, and against one run (issue 19's 100-run
+  # study): five studies, about 8 minutes.
   python3 bench/study_process.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-study-process" \
     --doc doc/studies.md
 fi

@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""A study's runs in one `contactlab batch` process (the default) against a process per run
-(`Process Per Run: true`): the study's wall time both ways, and against one `contactlab run` of
-its first case (the issue's "a 100-run study costs <= 3x one run"). Checks that both ways give
-every run the same status, Newton iterations and contact force (to the solvers' tolerances: a run
-on one mesh may be solved through corrections of the last run's factors; see differences()) and
+"""A study's runs the default way (as many at a time as the cores, each `contactlab batch`
+process taking its share of the runs: Parallel Runs automatic), in one batch process one at a
+time (Parallel Runs: 1), and each in a process of its own, one at a time (Process Per Run: true):
+the study's wall time each way, and against one `contactlab run` of its first case (the issue's
+"a 100-run study costs <= 3x one run"). Checks that the default and a process per run give every
+run the same status, Newton iterations and contact force (to the solvers' tolerances: a run on
+one mesh may be solved through corrections of the last run's factors; see differences()) and
 exits non-zero otherwise.
 
 Studies: the shipped quick comparison (18 runs, 2D), the 2D Hertz formulation study (18), the
 extremes (78), 100 runs of the 2D Hertz scene (50 augmentations x 2 algorithms) and 9 runs of the 3D Hertz scene in tet10 at 46 572 dofs (3 augmentations x 3
-algorithms). About 6 minutes in all.
+algorithms). About 8 minutes in all.
 
 usage: study_process.py CONTACTLAB SCENES WORK [--only NAME ...] [--doc DOC]"""
 import argparse, csv, json, os, shutil, subprocess, sys, time
@@ -48,8 +50,8 @@ def studies(scenes, work):
     return out
 
 
-def with_process_per_run(path, work):
-    """A copy of the study file with Process Per Run: true (its Scene made absolute)."""
+def with_settings(path, work, suffix, **settings):
+    """A copy of the study file with `settings` (its Scene made absolute)."""
     import yaml
     doc = yaml.safe_load(open(path))
     s = doc["contactlab-study"]
@@ -58,8 +60,8 @@ def with_process_per_run(path, work):
         if "Scene" in case:
             case["Scene"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)),
                                                           case["Scene"]))
-    s["Process Per Run"] = True
-    copy = os.path.join(work, os.path.basename(path).replace(".yaml", "-own.yaml"))
+    s.update(settings)
+    copy = os.path.join(work, os.path.basename(path).replace(".yaml", f"-{suffix}.yaml"))
     yaml.safe_dump(doc, open(copy, "w"), sort_keys=False)
     return copy
 
@@ -127,23 +129,26 @@ def main():
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
     exe = os.path.abspath(args.exe)
-    table = ("| study | runs (converged) | process per run s | one process s | speed-up | one run s "
-             "| one process / one run | outcomes differing |\n|---|---|---|---|---|---|---|---|\n")
+    table = ("| study | runs (converged) | process per run s | one process s | default s | "
+             "speed-up | one run s | default / one run | outcomes differing |\n"
+             "|---|---|---|---|---|---|---|---|---|\n")
     failed = False
     for name, path in studies(args.scenes, args.work):
         if args.only and name not in args.only:
             continue
-        own_wall, own = run_study(exe, with_process_per_run(path, args.work),
-                                  os.path.join(args.work, name + "-own"))
+        own_wall, own = run_study(exe, with_settings(path, args.work, "own", **{
+            "Process Per Run": True, "Parallel Runs": 1}), os.path.join(args.work, name + "-own"))
+        serial_wall, _ = run_study(exe, with_settings(path, args.work, "serial", **{
+            "Parallel Runs": 1}), os.path.join(args.work, name + "-serial"))
         shared_wall, shared = run_study(exe, path, os.path.join(args.work, name + "-shared"))
         differ, roundoff = differences(shared, own)
         failed |= bool(differ)
         single = one_run(exe, path, shared[0]["sets"].split(";") if shared[0]["sets"] else [],
                          args.work)
         converged = sum(row["status"] == "converged" for row in shared)
-        line = (f"| {name} | {len(shared)} ({converged}) | {own_wall:.1f} | {shared_wall:.1f} | "
-                f"{own_wall / shared_wall:.2f} | {single:.2f} | {shared_wall / single:.1f} | "
-                f"{len(differ)} |")
+        line = (f"| {name} | {len(shared)} ({converged}) | {own_wall:.1f} | {serial_wall:.1f} | "
+                f"{shared_wall:.1f} | {own_wall / shared_wall:.2f} | {single:.2f} | "
+                f"{shared_wall / single:.1f} | {len(differ)} |")
         print(line, flush=True)
         for d in differ:
             print("  differs: " + d)

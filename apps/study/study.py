@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """contactlab study STUDY.yaml [--out DIR] [--retry-failed] [--no-plots]
 
-Runs one scene over the product of the study's axes (and its explicit cases), in one
-`contactlab batch` process (or each run its own process: Process Per Run), each run with a time
-limit, then writes study.csv, study.md and PNG
+Runs one scene over the product of the study's axes (and its explicit cases), in `contactlab
+batch` processes, as many runs at a time as the cores while the memory allows (Parallel Runs;
+or each run its own process: Process Per Run), each run with a time limit, then writes
+study.csv, study.md and PNG
 plots (doc/studies.md). A failure, a timeout or a crash of one run is recorded with its reason
 and the study goes on. Studies resume: a run whose folder already holds the same case's result
 is not run again (--retry-failed runs the failed ones again). Started by `contactlab study`,
@@ -14,6 +15,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 
 sys.dont_write_bytecode = True  # the scripts may run from the source tree
@@ -24,9 +26,9 @@ import study_process as process  # noqa: E402
 import study_report as report  # noqa: E402
 
 
-def run_case(batch, exe, scene, folder, sets, timeout, retry_failed):
-    """Runs one case in `folder` unless it is already there; returns its record. `batch`: the
-    shared process (None: a process of its own)."""
+def run_case(runner, scene, folder, sets, timeout, retry_failed):
+    """Runs one case in `folder` (with `runner`) unless it is already there; returns its
+    record."""
     os.makedirs(folder, exist_ok=True)
     case_file, record_file = (os.path.join(folder, f) for f in ("case.json", "record.json"))
     try:
@@ -42,11 +44,7 @@ def run_case(batch, exe, scene, folder, sets, timeout, retry_failed):
             os.remove(os.path.join(folder, f))
     json.dump({"scene": scene, "sets": sets}, open(case_file, "w"))
     start = time.time()
-    shared = batch is not None and batch.accepts(scene, folder, sets)
-    if shared:
-        code = batch.run(scene, folder, sets, timeout)
-    else:
-        code = process.run_own_process(exe, scene, folder, sets, timeout)
+    code, shared = runner.run(scene, folder, sets, timeout)
     # record.json says which process ran the case: the shared batch one or its own.
     record = {"wall_s": time.time() - start, "returncode": code,
               "process": "batch" if shared else "own"}
@@ -95,12 +93,46 @@ def metrics_row(study, name, point, sets, folder, record, reference):
     return row
 
 
-def run_all(study, todo, out, args, batch):
-    """The reference run (if any), then every case in order, with progress; the rows."""
+class Progress:
+    """The "[i/N] case ... status (wall, ETA)" lines, as runs finish (from any thread)."""
+
+    def __init__(self, total):
+        self.total, self.spent, self.ran, self.done = total, 0.0, 0, 0
+        self.runners = 1
+        self.lock = threading.Lock()
+
+    def report(self, i, name, rec):
+        with self.lock:
+            self.done += 1
+            if not rec.get("resumed"):
+                self.spent, self.ran = self.spent + rec["wall_s"], self.ran + 1
+            left = self.total - self.done
+            eta = (f", ETA {self.spent / self.ran * left / self.runners:.0f} s"
+                   if self.ran and left else "")
+            print(f"[{i + 1}/{self.total}] {name} ... {rec['status']}"
+                  f"{' ' + rec['reason'] if rec['reason'] else ''} ({rec['wall_s']:.1f} s"
+                  f"{', done earlier' if rec.get('resumed') else ''}{eta})", flush=True)
+
+
+def parallel_runs(setting, summaries, remaining):
+    """How many runs go at once (Parallel Runs; `summaries`: of the runs done so far)."""
+    if setting != "automatic":
+        return max(1, min(setting, remaining))
+    runners = min(process.usable_cores(), remaining)
+    peak = max([s.get("peak_memory_mb") or 0 for s in summaries if s] or [0])
+    memory = process.memory_mb()
+    if runners > 1 and (not peak or not memory or peak * runners > memory / 2):
+        return 1
+    return max(1, runners)
+
+
+def run_all(study, todo, out, args, runners):
+    """The reference run (if any), then every case, with progress; the rows, in case order.
+    `runners` holds one Runner; more are added when the runs go in parallel."""
     reference = {"points": None, "summary": None}
     if study["Reference"]["Type"] == "run":
         folder = os.path.join(out, "reference")
-        rec = run_case(batch, args.contactlab, study["Scene"], folder,
+        rec = run_case(runners[0], study["Scene"], folder,
                        study["Sets"] + [str(s) for s in study["Reference"]["Sets"]],
                        study["Timeout"], args.retry_failed)
         print(f"[reference] {rec['status']} {rec['reason']} ({rec['wall_s']:.1f} s)", flush=True)
@@ -111,20 +143,72 @@ def run_all(study, todo, out, args, batch):
             reference = {"points": metrics.read_contact(folder, study.get("Zone")),
                          "summary": metrics.load_summary(folder)}
 
-    rows, spent, ran = [], 0.0, 0
-    for i, (name, point, sets, scene) in enumerate(todo):
+    progress = Progress(len(todo))
+    records = {}
+
+    def run(i, runner):
+        name, _, sets, scene = todo[i]
         folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
-        print(f"[{i + 1}/{len(todo)}] {name} ...", end=" ", flush=True)
-        rec = run_case(batch, args.contactlab, scene, folder, study["Sets"] + sets,
-                       study["Timeout"], args.retry_failed)
-        if not rec.get("resumed"):
-            spent, ran = spent + rec["wall_s"], ran + 1
-        left = len(todo) - i - 1
-        eta = f", ETA {spent / ran * left:.0f} s" if ran and left else ""
-        print(f"{rec['status']}{' ' + rec['reason'] if rec['reason'] else ''} "
-              f"({rec['wall_s']:.1f} s{', done earlier' if rec.get('resumed') else ''}{eta})",
-              flush=True)
-        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, rec, reference))
+        records[i] = run_case(runner, scene, folder, study["Sets"] + sets, study["Timeout"],
+                              args.retry_failed)
+        progress.report(i, name, records[i])
+
+    # Parallel Runs automatic: the first case runs alone, its peak memory (and the reference
+    # run's) decides; the other runners start meanwhile, with their share of the BLAS threads.
+    first, count = 0, len(runners)
+    if todo and study["Parallel Runs"] == "automatic" and count > 1:
+        for runner in runners[1:]:
+            runner.start()
+        run(0, runners[0])
+        first = 1
+        summaries = [metrics.load_summary(os.path.join(out, "reference")),
+                     metrics.load_summary(os.path.join(out, "runs", study_file.run_folder(
+                         1, todo[0][0])))]
+        count = parallel_runs("automatic", summaries, len(todo) - 1)
+        if count < len(runners):
+            for runner in runners[count:]:
+                runner.close()
+            del runners[count:]
+            if count == 1:  # alone after all: every BLAS thread
+                runners[0].close()
+                runners[0] = process.Runner(args.contactlab, study["Process Per Run"])
+    if count > 1:
+        progress.runners = count
+        print(f"contactlab study: {count} runs at a time", flush=True)
+    # Runs go to the runners in a fixed order, not to whichever is free: a run's results may
+    # depend on the linear solver the run before it in its process left, so the assignment must
+    # not depend on timing. Dealt back and forth (runner 0, 1, ..., 1, 0, 0, 1, ...), so that
+    # neither a trend along the cases nor an axis that alternates (partial, generalized Newton)
+    # loads one runner more than the others.
+    def runner_of(i):
+        turn, seat = divmod(i - first, count)
+        return seat if turn % 2 == 0 else count - 1 - seat
+
+    lanes = [[i for i in range(first, len(todo)) if runner_of(i) == k] for k in range(count)]
+    errors = []
+
+    def lane(k):
+        try:
+            for i in lanes[k]:
+                run(i, runners[k])
+        except BaseException as e:  # raised again by the main thread
+            errors.append(e)
+
+    threads = [threading.Thread(target=lane, args=(k,), daemon=True) for k in range(1, count)]
+    for t in threads:
+        t.start()
+    for i in lanes[0]:  # in the main thread: an interruption stops the study at once
+        run(i, runners[0])
+    for t in threads:
+        while t.is_alive():
+            t.join(0.2)  # in short waits, so that Ctrl-C reaches the main thread
+    if errors:
+        raise errors[0]
+    rows = []
+    for i, (name, point, sets, _) in enumerate(todo):
+        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
+        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, records[i],
+                                reference))
     return rows
 
 
@@ -148,15 +232,20 @@ def main():
     print(f"contactlab study {study['Name']}: {len(todo)} run(s) of {study['Scene']} "
           f"-> {out}", flush=True)
 
-    batch = None if study["Process Per Run"] else process.BatchProcess(args.contactlab)
+    # As many runners as may be needed (automatic: the cores, if the first run's memory allows).
+    setting = study["Parallel Runs"]
+    count = parallel_runs(setting, [{"peak_memory_mb": 1}], len(todo))
+    env = process.blas_share(count)
+    runners = [process.Runner(args.contactlab, study["Process Per Run"], env)
+               for _ in range(count)]
     try:
-        rows = run_all(study, todo, out, args, batch)
+        rows = run_all(study, todo, out, args, runners)
     except BaseException:
-        if batch:
-            batch.stop()
+        for runner in runners:
+            runner.stop()
         raise
-    if batch:
-        batch.close()
+    for runner in runners:
+        runner.close()
 
     report.write_csv(os.path.join(out, "study.csv"), rows, axes)
     plots = []

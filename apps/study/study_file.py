@@ -30,6 +30,11 @@ KEYS = {
                        "paid once; a run takes the last run's linear solver, whose factors it "
                        "corrects where its matrices differ: the same results to the solver's "
                        "tolerance). A crash or a timeout ends only its run either way",
+    "Parallel Runs": "how many runs go at once, each batch process (or run) with an equal "
+                     "share of the cores' BLAS threads: a number, or automatic (the default): "
+                     "after the first run, as many as the cores while that many copies of its "
+                     "peak memory fit in half the machine's, else 1. Run i goes to process "
+                     "i mod N, so a study's results do not depend on which run finished first",
 }
 
 
@@ -78,6 +83,12 @@ def read_study(path):
     s.setdefault("Process Per Run", False)
     if not isinstance(s["Process Per Run"], bool):
         raise StudyError(f"{path}: Process Per Run must be true or false")
+    s.setdefault("Parallel Runs", "automatic")
+    if s["Parallel Runs"] != "automatic" and (
+            isinstance(s["Parallel Runs"], bool) or not isinstance(s["Parallel Runs"], int) or
+            s["Parallel Runs"] < 1):
+        raise StudyError(f"{path}: Parallel Runs must be a whole number of at least 1 or "
+                         f"automatic (got {s['Parallel Runs']!r})")
     s.setdefault("Accuracy Target", 0.05)
     s.setdefault("Sets", [])
     s.setdefault("Axes", {})

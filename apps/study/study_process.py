@@ -1,8 +1,9 @@
-"""How a study's runs are started: each its own `contactlab run` process, or all in one
+"""How a study's runs are started: each its own `contactlab run` process, or in a
 `contactlab batch` process (the default), which pays the start-up once and hands each run the
-linear solver the run before it left (doc/studies.md, "Process Per Run"). Either way a run has
-a time limit, and a crash or a timeout is the run's outcome, not the study's: the batch process
-is started again for the next run."""
+linear solver the run before it left (doc/studies.md, "Process Per Run"); a Runner is one such
+lane, and a study runs as many lanes at once as Parallel Runs says, each with its share of the
+BLAS threads. Either way a run has a time limit, and a crash or a timeout is the run's outcome,
+not the study's: the batch process is started again for the next run."""
 import os
 import select
 import signal
@@ -19,7 +20,36 @@ def _kill(proc):
     proc.wait()
 
 
-def run_own_process(exe, scene, folder, sets, timeout):
+def usable_cores():
+    """The processors this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:
+        return os.cpu_count() or 1
+
+
+def memory_mb():
+    """The machine's memory (MemTotal), in MiB; None where /proc/meminfo is not."""
+    try:
+        for line in open("/proc/meminfo"):
+            if line.startswith("MemTotal:"):
+                return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return None
+
+
+def blas_share(runners):
+    """The environment of a process that shares the cores with runners - 1 others: each gets
+    an equal share of BLAS threads (OpenBLAS' threads would otherwise take every core in every
+    process, and spin). A user's own OPENBLAS_NUM_THREADS or OMP_NUM_THREADS wins; None for one
+    runner (contactlab then shares the cores among its own ranks)."""
+    if runners <= 1 or "OPENBLAS_NUM_THREADS" in os.environ or "OMP_NUM_THREADS" in os.environ:
+        return None
+    return dict(os.environ, OPENBLAS_NUM_THREADS=str(max(1, usable_cores() // runners)))
+
+
+def run_own_process(exe, scene, folder, sets, timeout, env=None):
     """One `contactlab run`; its exit code, negative for a signal, None after the timeout."""
     cmd = [exe, "run", scene, "--out", folder]
     for s in sets:
@@ -27,7 +57,7 @@ def run_own_process(exe, scene, folder, sets, timeout):
     with open(os.path.join(folder, "run.log"), "w") as log:
         # A session of its own, so that a timeout stops the run and anything it started.
         proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
-                                start_new_session=True)
+                                start_new_session=True, env=env)
         try:
             return proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -39,8 +69,9 @@ class BatchProcess:
     """A `contactlab batch` process: run() sends it one run (a tab-separated line) and reads
     its answer, "exit CODE", within the timeout."""
 
-    def __init__(self, exe):
+    def __init__(self, exe, env=None):
         self.exe = exe
+        self.env = env
         self.proc = None
         self.pending = b""
 
@@ -49,13 +80,18 @@ class BatchProcess:
         """A run the line format can carry (no tab or newline in any field)."""
         return not any("\t" in f or "\n" in f for f in [scene, folder, *sets])
 
+    def start(self):
+        """Starts the process, if it is not running (its start-up then overlaps other work)."""
+        if self.proc is None:
+            self.proc = subprocess.Popen([self.exe, "batch"], stdin=subprocess.PIPE,
+                                         stdout=subprocess.PIPE, start_new_session=True,
+                                         env=self.env)
+            self.pending = b""
+
     def run(self, scene, folder, sets, timeout):
         """The run's exit code, negative for the signal that ended the process during it, None
         after the timeout (the process is then stopped; the next run starts another)."""
-        if self.proc is None:
-            self.proc = subprocess.Popen([self.exe, "batch"], stdin=subprocess.PIPE,
-                                         stdout=subprocess.PIPE, start_new_session=True)
-            self.pending = b""
+        self.start()
         line = "\t".join([os.path.abspath(folder), scene, *sets]) + "\n"
         try:
             self.proc.stdin.write(line.encode())
@@ -112,3 +148,32 @@ class BatchProcess:
         if self.proc is not None:
             _kill(self.proc)
             self.proc = None
+
+
+class Runner:
+    """Where some of a study's runs go, one after the other: a `contactlab batch` process (or a
+    process per run), started with `env`."""
+
+    def __init__(self, exe, own_process, env=None):
+        self.exe = exe
+        self.env = env
+        self.batch = None if own_process else BatchProcess(exe, env)
+
+    def run(self, scene, folder, sets, timeout):
+        """(exit code as BatchProcess.run gives it, whether the batch process ran it)."""
+        shared = self.batch is not None and self.batch.accepts(scene, folder, sets)
+        if shared:
+            return self.batch.run(scene, folder, sets, timeout), True
+        return run_own_process(self.exe, scene, folder, sets, timeout, self.env), False
+
+    def start(self):
+        if self.batch:
+            self.batch.start()
+
+    def close(self):
+        if self.batch:
+            self.batch.close()
+
+    def stop(self):
+        if self.batch:
+            self.batch.stop()

@@ -5,7 +5,8 @@ reference run. Checks that every run is recorded with its reason and the study g
 study.csv / study.md / the plots are written with the accuracy against the reference, that a
 second invocation resumes (runs nothing again), and that a bad study file is refused with a
 sentence. The runs share one `contactlab batch` process by default: the same study with
-Process Per Run gives the same table; a run that kills that process is recorded as a crash and
+Process Per Run gives the same table, and so does Parallel Runs 1 (the runs go as many at a
+time as the cores by default); a run that kills that process is recorded as a crash and
 the next run gets a new one; `contactlab batch` itself answers every line, a bad one too.
 
 usage: check_study.py CONTACTLAB SCENES_DIR WORKDIR"""
@@ -44,6 +45,9 @@ first = time.time() - start
 print(r.stdout[-3000:], r.stderr[-2000:])
 check("the study exits 0 although runs failed", r.returncode == 0)
 check("progress shows run i of N", "[7/7] too slow" in r.stdout and "ETA" in r.stdout)
+cores = len(os.sched_getaffinity(0))
+check(f"runs go {min(cores, 6)} at a time by default (Parallel Runs: automatic, {cores} cores)",
+      ("contactlab study: 2 runs at a time" in r.stdout) == (cores >= 2))
 rows = list(csv.DictReader(open(os.path.join(out, "study.csv"))))
 check(f"study.csv has one row per run ({len(rows)})", len(rows) == 7)
 by = {row["case"]: row for row in rows}
@@ -103,6 +107,20 @@ check(f"the runs share the batch process by default ({processes(out)}), each has
 check(f"a process per run: the same {len(own_rows)} rows as the shared process ({differ})",
       r.returncode == 0 and len(own_rows) == 6 and not differ)
 
+# One run at a time: the same rows as the runs in parallel (each process hands its runs the
+# solver its last run left, whichever process that is).
+serial = os.path.join(work, "serial.yaml")
+open(serial, "w").write(open(own).read().replace("  Process Per Run: true\n",
+                                                 "  Parallel Runs: 1\n"))
+r = subprocess.run([exe, "study", serial, "--out", os.path.join(work, "serial"), "--no-plots"],
+                   capture_output=True, text=True, timeout=600)
+serial_rows = {row["case"]: row for row in csv.DictReader(open(os.path.join(
+    work, "serial", "study.csv")))}
+differ = [(case, k) for case, row in serial_rows.items() for k in same if row[k] != by[case][k]]
+check(f"Parallel Runs 1: the same {len(serial_rows)} rows as the runs in parallel ({differ})",
+      r.returncode == 0 and len(serial_rows) == 6 and not differ and
+      "runs at a time" not in r.stdout)
+
 # A run that kills the shared process (at the end of its step 1, as a crash would): recorded
 # as a crash, and the next run starts a new process, which is killed the same way.
 crash = os.path.join(work, "crash.yaml")
@@ -139,4 +157,8 @@ check(f"a bad study file is refused with a sentence ({r.stderr.strip()})",
 open(bad, "w").write(f"contactlab-study:\n  Name: x\n  Scene: {study}\n  Axis: {{}}\n")
 r = subprocess.run([exe, "study", bad], capture_output=True, text=True, timeout=60)
 check(f"an unknown key is named ({r.stderr.strip()})", r.returncode == 2 and "Axis" in r.stderr)
+open(bad, "w").write(f"contactlab-study:\n  Name: x\n  Scene: {patch}\n  Parallel Runs: 0\n")
+r = subprocess.run([exe, "study", bad], capture_output=True, text=True, timeout=60)
+check(f"a bad Parallel Runs is refused with a sentence ({r.stderr.strip()})",
+      r.returncode == 2 and "Parallel Runs must be a whole number" in r.stderr)
 sys.exit(1 if failures else 0)
