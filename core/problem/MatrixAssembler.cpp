@@ -181,6 +181,26 @@ void MatrixAssembler::addDiagonal(LO row, double value) {
   matrix_->sumIntoLocalValues(row, 1, &value, &col);
 }
 
+void MatrixAssembler::keepValues() {
+  const auto local = matrix_->getLocalMatrixHost();
+  keptValues_.assign(local.values.data(), local.values.data() + local.values.extent(0));
+  const auto ghost = ghostMatrix_->getLocalMatrixHost();
+  keptGhostValues_.assign(ghost.values.data(), ghost.values.data() + ghost.values.extent(0));
+  kept_ = true;
+}
+
+void MatrixAssembler::beginFromKept() {
+  if (!kept_) throw std::logic_error("MatrixAssembler::beginFromKept: no values kept");
+  matrix_->resumeFill();
+  ghostMatrix_->resumeFill();
+  const auto local = matrix_->getLocalMatrixHost();
+  std::copy(keptValues_.begin(), keptValues_.end(), local.values.data());
+  const auto ghost = ghostMatrix_->getLocalMatrixHost();
+  std::copy(keptGhostValues_.begin(), keptGhostValues_.end(), ghost.values.data());
+  values_ = local.values.data();
+  rowStart_ = local.graph.row_map.data();
+}
+
 void MatrixAssembler::end() {
   ghostMatrix_->fillComplete(matrix_->getDomainMap(), matrix_->getRangeMap());
   if (ghostsAnywhere_) matrix_->doExport(*ghostMatrix_, *ghostExporter_, Tpetra::ADD);

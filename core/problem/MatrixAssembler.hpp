@@ -38,6 +38,14 @@ class MatrixAssembler {
   // Sends ghost rows to their owners and closes the matrix.
   void end();
 
+  // Keeps the values added since begin() (owned and ghost rows), so that a later assembly of
+  // the same element matrices starts from them (beginFromKept) instead of adding them again:
+  // a solid whose tangent does not change (Problem::assemble).
+  void keepValues();
+  bool keepsValues() const { return kept_; }
+  // begin(), with the kept values instead of zeros.
+  void beginFromKept();
+
  private:
   // add() over the element's nodes local(0), ..., local(m - 1).
   template <class Local>
@@ -57,6 +65,8 @@ class MatrixAssembler {
   bool ghostsAnywhere_ = false;
   double* values_ = nullptr;
   const std::size_t* rowStart_ = nullptr;
+  bool kept_ = false;
+  std::vector<double> keptValues_, keptGhostValues_;
 };
 
 }  // namespace contactlab

@@ -126,6 +126,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     }
     elements_.push_back(std::move(e));
   }
+  allLinear_ = std::all_of(elements_.begin(), elements_.end(),
+                           [](const LocalElement& e) { return e.linear; });
 
   // Inverted or degenerate elements are input errors: find them before anything runs.
   collectively(*comm, [&] { checkElementGeometry(); });
@@ -400,21 +402,31 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   auto uOverlap = overlapCopy(u);
   auto uo = uOverlap->getData(0);
   std::vector<double> r(residual ? dofs_->overlapMap()->getNodeNumElements() : 0, 0.0);
-  if (withTangent) assembler_->begin();
   const double c = inertia_.coefficient;
+  // A solid whose tangent never changes (every element linear, no mass or centrifugal term)
+  // adds its element matrices once: later tangents start from their kept sum. Measured on the
+  // 2D Hertz scene's runs and the peers' 125 730-dof tet10 model (doc/performance.md).
+  const bool constantBulk = withTangent && allLinear_ && c == 0 && centrifugal_.empty();
+  const bool fromKept = constantBulk && assembler_->keepsValues();
+  const bool addElements = withTangent && !fromKept;
+  if (fromKept)
+    assembler_->beginFromKept();
+  else if (withTangent)
+    assembler_->begin();
   const bool inertiaForce = c > 0 && inertia_.reference && residual;
   const double* reference = inertiaForce ? inertia_.reference->getData(0).getRawPtr() : nullptr;
   std::vector<double> x, ue, fe, ke, me, deformation;
   int failureCode = 0;  // 1: material-update-failed, 2: inverted-element
   std::string failureMessage;
   for (auto& e : elements_) {
+    if (!residual && !addElements) break;  // the kept tangent is all there is to do
     const std::size_t nd = e.rows.size();
     gatherCoordinates(e.nodes, x);
     ue.resize(nd);
     for (std::size_t i = 0; i < nd; ++i)
       ue[i] = uo[e.rows[i]];
     fe.assign(nd, 0.0);
-    if (withTangent) ke.assign(nd * nd, 0.0);
+    if (addElements) ke.assign(nd * nd, 0.0);
     try {
       if (e.linear) {
         if (e.stiffness.empty()) {
@@ -424,7 +436,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
         }
         linearElementForce(e.stiffness, ue, kernels_[e.kernel]->dim(), model_.axisymmetric,
                            deformation, fe);
-        if (withTangent) ke.assign(e.stiffness.begin(), e.stiffness.end());
+        if (addElements) ke.assign(e.stiffness.begin(), e.stiffness.end());
       } else {
         kernels_[e.kernel]->compute(x.data(), ue.data(), *blockMaterial_[e.block],
                                     e.stateOld.empty() ? nullptr : e.stateOld.data(),
@@ -460,8 +472,9 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
       for (std::size_t i = 0; i < nd; ++i)
         r[e.rows[i]] += fe[i];
     // Element-level elimination of constrained rows and columns (see Problem.hpp).
-    if (withTangent) assembler_->add(&e - elements_.data(), ke.data(), constrained_);
+    if (addElements) assembler_->add(&e - elements_.data(), ke.data(), constrained_);
   }
+  if (constantBulk && !fromKept) assembler_->keepValues();
   if (withTangent) {
     surfaceLoads_->addStiffness(t, uo.getRawPtr(), *assembler_, constrained_);
     nodal_->addSpringStiffness(*assembler_, constrained_);

@@ -190,6 +190,8 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<const Comm> comm_;
   std::unique_ptr<DofMap> dofs_;
   std::vector<LocalElement> elements_;
+  // Every element linear: the solid's tangent is the same at every assembly (assemble()).
+  bool allLinear_ = false;
   std::vector<std::unique_ptr<ElementKernel>> kernels_;   // one per element type and kinematics
   std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order
   std::vector<CentrifugalLoadKernel> centrifugal_;        // one per model_.centrifugalLoads

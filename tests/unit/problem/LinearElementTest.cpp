@@ -1,9 +1,11 @@
 // Linear elements (Problem.hpp: small strain, a Material::linear() law, no prescribed
 // temperature) keep the stiffness integrated at their first assembly and give the force as
-// K u. The same model with the law flagged non-linear integrates every element at every
-// assembly: both must give the same residual and tangent, whether the first assembly asked for
-// the tangent or not, at a second state after the first (where the kept stiffness is used: the
-// linear law is not evaluated there, the other one is).
+// K u; a model of only such elements also keeps the assembled sum of their matrices, from which
+// every later tangent starts. The same model with the law flagged non-linear integrates every
+// element at every assembly: both must give the same residual and tangent, whether the first
+// assembly asked for the tangent or not, at a second state after the first (where the kept
+// stiffness is used: the linear law is not evaluated there, the other one is), and a tangent
+// alone after a residual alone.
 // Distorted meshes of every 2D and 3D element type, and axisymmetric rings, on 1 and 2 ranks.
 #include "ProblemTestSupport.hpp"
 
@@ -99,6 +101,14 @@ TEST_P(LinearElement, KeptStiffnessGivesTheIntegratedResidualAndTangent) {
     integrated.tangent()->apply(*second, *k2);
     ASSERT_GT(k2->normInf(), 0.0);
     EXPECT_LE(maxDifference(*k1, *k2), 1e-12 * k2->normInf()) << "tangent";
+    // A tangent alone, after a residual alone: the kept model starts it from the element
+    // matrices' kept sum (MatrixAssembler::beginFromKept), and it is the tangent as before.
+    kept.assemble(*first, 0.0, r1.get(), false);
+    kept.assemble(*first, 0.0, nullptr, true);
+    integrated.assemble(*first, 0.0, nullptr, true);
+    kept.tangent()->apply(*second, *k1);
+    integrated.tangent()->apply(*second, *k2);
+    EXPECT_LE(maxDifference(*k1, *k2), 1e-12 * k2->normInf()) << "tangent alone";
   }
 }
 
