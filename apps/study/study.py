@@ -114,16 +114,20 @@ class Progress:
                   f"{', done earlier' if rec.get('resumed') else ''}{eta})", flush=True)
 
 
+def most_runs_at_once(setting, cases):
+    """Parallel Runs as a number: the cores for automatic, at most one a case, at least 1."""
+    return max(1, min(process.usable_cores() if setting == "automatic" else setting, cases))
+
+
 def parallel_runs(setting, summaries, remaining):
-    """How many runs go at once (Parallel Runs; `summaries`: of the runs done so far)."""
-    if setting != "automatic":
-        return max(1, min(setting, remaining))
-    runners = min(process.usable_cores(), remaining)
+    """How many runs go at once (Parallel Runs; `summaries`: of the runs done so far, whose
+    peak memory decides for automatic: that many copies must fit in half the machine's)."""
+    runners = most_runs_at_once(setting, remaining)
+    if setting != "automatic" or runners == 1:
+        return runners
     peak = max([s.get("peak_memory_mb") or 0 for s in summaries if s] or [0])
     memory = process.memory_mb()
-    if runners > 1 and (not peak or not memory or peak * runners > memory / 2):
-        return 1
-    return max(1, runners)
+    return 1 if not peak or not memory or peak * runners > memory / 2 else runners
 
 
 def run_all(study, todo, out, args, runners):
@@ -132,9 +136,14 @@ def run_all(study, todo, out, args, runners):
     reference = {"points": None, "summary": None}
     if study["Reference"]["Type"] == "run":
         folder = os.path.join(out, "reference")
-        rec = run_case(runners[0], study["Scene"], folder,
+        # Usually the finest run: alone, with every BLAS thread (the runners have a share).
+        alone = runners[0] if len(runners) == 1 else process.Runner(
+            args.contactlab, study["Process Per Run"])
+        rec = run_case(alone, study["Scene"], folder,
                        study["Sets"] + [str(s) for s in study["Reference"]["Sets"]],
                        study["Timeout"], args.retry_failed)
+        if alone is not runners[0]:
+            alone.close()
         print(f"[reference] {rec['status']} {rec['reason']} ({rec['wall_s']:.1f} s)", flush=True)
         if rec["status"] != "converged":
             print("contactlab: warning: the reference run did not converge: no accuracy "
@@ -233,8 +242,7 @@ def main():
           f"-> {out}", flush=True)
 
     # As many runners as may be needed (automatic: the cores, if the first run's memory allows).
-    setting = study["Parallel Runs"]
-    count = parallel_runs(setting, [{"peak_memory_mb": 1}], len(todo))
+    count = most_runs_at_once(study["Parallel Runs"], len(todo))
     env = process.blas_share(count)
     runners = [process.Runner(args.contactlab, study["Process Per Run"], env)
                for _ in range(count)]
