@@ -49,8 +49,10 @@ def blas_share(runners):
     return dict(os.environ, OPENBLAS_NUM_THREADS=str(max(1, usable_cores() // runners)))
 
 
-def run_own_process(exe, scene, folder, sets, timeout, env=None):
-    """One `contactlab run`; its exit code, negative for a signal, None after the timeout."""
+def run_own_process(exe, scene, folder, sets, timeout, env=None, started=None):
+    """One `contactlab run`; its exit code, negative for a signal, None after the timeout.
+    `started(proc)`, if given, is told the process (so that another thread can stop it); an
+    interruption stops it too."""
     cmd = [exe, "run", scene, "--out", folder]
     for s in sets:
         cmd += ["--set", s]
@@ -58,11 +60,16 @@ def run_own_process(exe, scene, folder, sets, timeout, env=None):
         # A session of its own, so that a timeout stops the run and anything it started.
         proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
                                 start_new_session=True, env=env)
+        if started:
+            started(proc)
         try:
             return proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
             _kill(proc)
             return None
+        except BaseException:  # the study was interrupted: its run goes with it
+            _kill(proc)
+            raise
 
 
 class BatchProcess:
@@ -158,13 +165,22 @@ class Runner:
         self.exe = exe
         self.env = env
         self.batch = None if own_process else BatchProcess(exe, env)
+        self.stopped = False
+        self.own = None  # the running process of its own, if any
 
     def run(self, scene, folder, sets, timeout):
-        """(exit code as BatchProcess.run gives it, whether the batch process ran it)."""
+        """(exit code as BatchProcess.run gives it, whether the batch process ran it). After
+        stop(), raises: an interrupted study starts no new process (another thread may still be
+        on its way to its next run)."""
+        if self.stopped:
+            raise RuntimeError("the study was stopped")
         shared = self.batch is not None and self.batch.accepts(scene, folder, sets)
         if shared:
             return self.batch.run(scene, folder, sets, timeout), True
-        return run_own_process(self.exe, scene, folder, sets, timeout, self.env), False
+        code = run_own_process(self.exe, scene, folder, sets, timeout, self.env,
+                               lambda proc: setattr(self, "own", proc))
+        self.own = None
+        return code, False
 
     def start(self):
         if self.batch:
@@ -175,5 +191,8 @@ class Runner:
             self.batch.close()
 
     def stop(self):
+        self.stopped = True
         if self.batch:
             self.batch.stop()
+        if self.own is not None:
+            _kill(self.own)
