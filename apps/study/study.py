@@ -155,11 +155,13 @@ def run_all(study, todo, out, args, runners):
     progress = Progress(len(todo))
     records = {}
 
+    def folder_of(i):
+        return os.path.join(out, "runs", study_file.run_folder(i + 1, todo[i][0]))
+
     def run(i, runner):
         name, _, sets, scene = todo[i]
-        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
-        records[i] = run_case(runner, scene, folder, study["Sets"] + sets, study["Timeout"],
-                              args.retry_failed)
+        records[i] = run_case(runner, scene, folder_of(i), study["Sets"] + sets,
+                              study["Timeout"], args.retry_failed)
         progress.report(i, name, records[i])
 
     # Parallel Runs automatic: the first case runs alone, its peak memory (and the reference
@@ -171,8 +173,7 @@ def run_all(study, todo, out, args, runners):
         run(0, runners[0])
         first = 1
         summaries = [metrics.load_summary(os.path.join(out, "reference")),
-                     metrics.load_summary(os.path.join(out, "runs", study_file.run_folder(
-                         1, todo[0][0])))]
+                     metrics.load_summary(folder_of(0))]
         count = parallel_runs("automatic", summaries, len(todo) - 1)
         if count < len(runners):
             for runner in runners[count:]:
@@ -213,12 +214,8 @@ def run_all(study, todo, out, args, runners):
             t.join(0.2)  # in short waits, so that Ctrl-C reaches the main thread
     if errors:
         raise errors[0]
-    rows = []
-    for i, (name, point, sets, _) in enumerate(todo):
-        folder = os.path.join(out, "runs", study_file.run_folder(i + 1, name))
-        rows.append(metrics_row(study, name, point, study["Sets"] + sets, folder, records[i],
-                                reference))
-    return rows
+    return [metrics_row(study, name, point, study["Sets"] + sets, folder_of(i), records[i],
+                        reference) for i, (name, point, sets, _) in enumerate(todo)]
 
 
 def main():
