@@ -105,6 +105,12 @@ if(_contactlab_in_config)
   endforeach()
 endif()
 
+# Our MUMPS libraries as one link item that records them even where nothing references them
+# (as-needed off around them), for a library whose link line also brings in Trilinos' targets,
+# which carry Debian's PORD-only MUMPS (algorithms/CMakeLists.txt).
+set(CONTACTLAB_MUMPS_FIRST
+    "-Wl,--no-as-needed,${MUMPS_LIBRARY},${MUMPS_SINGLE_LIBRARY},${MUMPS_COMMON_LIBRARY},--as-needed")
+
 foreach(lib GMSH METIS MUMPS)
   if(NOT TARGET contactlab::${lib})
     add_library(contactlab::${lib} INTERFACE IMPORTED)

@@ -26,19 +26,27 @@ import study_process as process  # noqa: E402
 import study_report as report  # noqa: E402
 
 
+def finished_record(folder, scene, sets, retry_failed):
+    """The record of the same case already run in `folder` (to be kept), else None."""
+    try:
+        done = json.load(open(os.path.join(folder, "case.json"))) == \
+            {"scene": scene, "sets": sets} and json.load(open(os.path.join(folder, "record.json")))
+    except (OSError, ValueError):
+        return None
+    if not done or (retry_failed and done["status"] != "converged"):
+        return None
+    done["resumed"] = True
+    return done
+
+
 def run_case(runner, scene, folder, sets, timeout, retry_failed):
     """Runs one case in `folder` (with `runner`) unless it is already there; returns its
     record."""
+    done = finished_record(folder, scene, sets, retry_failed)
+    if done:
+        return done
     os.makedirs(folder, exist_ok=True)
     case_file, record_file = (os.path.join(folder, f) for f in ("case.json", "record.json"))
-    try:
-        done = json.load(open(case_file)) == {"scene": scene, "sets": sets} and \
-            json.load(open(record_file))
-    except (OSError, ValueError):
-        done = None
-    if done and not (retry_failed and done["status"] != "converged"):
-        done["resumed"] = True
-        return done
     for f in ("summary.json", "record.json"):
         if os.path.exists(os.path.join(folder, f)):
             os.remove(os.path.join(folder, f))
@@ -238,8 +246,12 @@ def main():
     print(f"contactlab study {study['Name']}: {len(todo)} run(s) of {study['Scene']} "
           f"-> {out}", flush=True)
 
-    # As many runners as may be needed (automatic: the cores, if the first run's memory allows).
-    count = most_runs_at_once(study["Parallel Runs"], len(todo))
+    # As many runners as may be needed (automatic: the cores, if the first run's memory allows);
+    # a resumed study counts only the runs it has left (none left: no process is started).
+    left = sum(finished_record(os.path.join(out, "runs", study_file.run_folder(i + 1, name)),
+                               scene, study["Sets"] + sets, args.retry_failed) is None
+               for i, (name, _, sets, scene) in enumerate(todo))
+    count = most_runs_at_once(study["Parallel Runs"], left)
     env = process.blas_share(count)
     runners = [process.Runner(args.contactlab, study["Process Per Run"], env)
                for _ in range(count)]
@@ -253,6 +265,10 @@ def main():
         runner.close()
 
     report.write_csv(os.path.join(out, "study.csv"), rows, axes)
+    # The table first: the plots take a second more (matplotlib's import alone half of it).
+    converged = sum(r["status"] == "converged" for r in rows)
+    print(f"\ncontactlab study {study['Name']}: {converged} of {len(rows)} converged\n")
+    print("\n".join(report.terminal_table(rows, axes, bool(study["Cases"]))), flush=True)
     plots = []
     if not args.no_plots:
         plot = subprocess.run([sys.executable, os.path.join(os.path.dirname(
@@ -264,9 +280,6 @@ def main():
         plots = [tuple(line.split("\t", 1)) for line in plot.stdout.splitlines()
                  if line.split("\t")[0].endswith(".png") and "\t" in line]
     report.write_md(os.path.join(out, "study.md"), study, rows, axes, plots)
-    converged = sum(r["status"] == "converged" for r in rows)
-    print(f"\ncontactlab study {study['Name']}: {converged} of {len(rows)} converged\n")
-    print("\n".join(report.terminal_table(rows, axes, bool(study["Cases"]))))
     print(f"\nstudy.md  {os.path.join(out, 'study.md')}  (sorted table, Pareto front, "
           "recommendation, plots)")
     if plots:

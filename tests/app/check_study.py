@@ -80,6 +80,8 @@ again = subprocess.run([exe, "study", study, "--out", out, "--no-plots"], captur
                        text=True, timeout=600)
 check(f"a second invocation resumes: nothing run again ({time.time() - start:.1f} s, first "
       f"{first:.1f} s)", again.returncode == 0 and again.stdout.count("done earlier") == 7)
+check("with nothing left to run, no batch process is dealt runs (no 'runs at a time')",
+      "runs at a time" not in again.stdout)
 
 # The same runs, each in a process of its own: the same outcomes, iterations and accuracy.
 own = os.path.join(work, "own.yaml")

@@ -104,6 +104,42 @@ TEST_P(SinglePrecisionFactors, SolvesReachTheBackwardErrorOfADirectSolveInDouble
 INSTANTIATE_TEST_SUITE_P(BothModes, SinglePrecisionFactors,
                          ::testing::Values(Mode::general, Mode::symmetricIndefinite));
 
+// The single-precision MUMPS must be the same build as the double one: Trilinos' Amesos also
+// loads Debian's PORD-only libsmumps, and where it came first in the process's search order
+// `smumps_c` resolved to it, so that single factors were ordered by PORD while double ones had
+// SCOTCH (INFOG(7) says which ordering was used).
+TEST(SinglePrecisionFactors, AreOrderedAsTheDoubleOnes) {
+  const auto A = test::laplacian3D(18, Layout::scattered, world());
+  const auto b = test::rightHandSide(*A, 1);
+  MumpsSolver single(options(Mode::symmetricIndefinite, Precision::singlePrecision), world());
+  MumpsSolver dbl(options(Mode::symmetricIndefinite, Precision::doublePrecision), world());
+  EXPECT_FALSE(test::solved(single, A, *b).is_null());
+  EXPECT_FALSE(test::solved(dbl, A, *b).is_null());
+  ASSERT_TRUE(single.singlePrecisionFactors());
+  ASSERT_TRUE(single.orderingUsed().has_value() && dbl.orderingUsed().has_value());
+  EXPECT_EQ(*single.orderingUsed(), *dbl.orderingUsed());
+  if (MumpsSolver::hasScotch()) {
+    EXPECT_EQ(*single.orderingUsed(), MumpsSolver::Ordering::scotch);
+  }
+}
+
+// Precision automatic analyses in double first (its flop count decides for single): the single
+// analysis then takes the double's pivot order rather than ordering the pattern again, and the
+// refined solve is as accurate as the double's.
+TEST(SinglePrecisionFactors, AutomaticTakesTheDoubleAnalysisPivotOrder) {
+  const auto A = test::laplacian3D(36, Layout::scattered, world());
+  const auto b = test::rightHandSide(*A, 1);
+  MumpsSolver solver(options(Mode::symmetricIndefinite, Precision::automatic), world());
+  const auto x = test::solved(solver, A, *b);
+  ASSERT_TRUE(solver.singlePrecisionFactors());  // above the flop threshold
+  EXPECT_EQ(solver.stats().analyses, 2);         // double (the count), then single
+  ASSERT_TRUE(solver.orderingUsed().has_value());
+  if (MumpsSolver::hasScotch()) {
+    EXPECT_EQ(*solver.orderingUsed(), MumpsSolver::Ordering::scotch);
+  }
+  EXPECT_LT(test::backwardError(*A, *b, *x), 1e-13);
+}
+
 // Springs on a few rows of a Laplacian large enough for a correction to pay: solved through a
 // low-rank correction of the single factors, refined to the same backward error.
 TEST(SinglePrecisionFactors, CorrectionsOfSingleFactorsAreRefined) {
