@@ -70,7 +70,7 @@ bool ContactProblem::pairAndFreeze(const Vector& x, double t) {
         pt.master.clear();
         pt.N.clear();
       }
-      tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+      tangentBasisFollowing(dim_, pt.normal, pt.t1, pt.t2);
       if (!frozenOnce_ && pt.paired && pairing.gap < -pairing.size)
         deep.push_back(slaveNodeName(pt) + " is " + std::to_string(-pairing.gap) +
                        " inside its master, more than the facet size " +

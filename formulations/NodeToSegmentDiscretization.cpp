@@ -182,7 +182,7 @@ void NodeToSegmentDiscretization::refreshGeometry(ContactPoint& pt,
   // `pairing`: the smoothed normal (and its tangents) is held, only the master point moves.
   if (terms != GeometricTerms::full) return;
   pt.normal = smoothedNormal(pt, nodalNormalsAround(pt, state), proj.normal);
-  tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+  tangentBasisFollowing(dim_, pt.normal, pt.t1, pt.t2);
 }
 
 }  // namespace contactlab

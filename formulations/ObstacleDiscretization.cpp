@@ -48,7 +48,7 @@ std::array<double, 3> ObstacleDiscretization::currentNormal(const ContactPoint& 
 void ObstacleDiscretization::refreshGeometry(ContactPoint& pt, const ContactSurfaceState& state,
                                              double t, GeometricTerms /*terms*/) const {
   place(pt, state.position(pt.node), t);
-  tangentBasis(dim_, pt.normal, pt.t1, pt.t2);
+  tangentBasisFollowing(dim_, pt.normal, pt.t1, pt.t2);
 }
 
 }  // namespace contactlab

@@ -17,6 +17,16 @@ namespace contactlab {
 void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
                   std::array<double, 3>& t2);
 
+// The frame of a point that already has one (t1 in, the new t1 out): as tangentBasis, but 3D
+// keeps the axis the old t1 was built from while it stays far enough from n. A normal on a tie
+// (|n_x| = |n_y| on a symmetric mesh's diagonal) would otherwise let round-off turn t1 by 90
+// degrees between two updates, and with it the tangential multipliers and the friction history
+// held in that frame: obstacle-sphere-3d's mortar run reported a converged state whose traction
+// at one node was its multipliers read in the other frame. t1 = 0 (a first frame):
+// tangentBasis's.
+void tangentBasisFollowing(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
+                           std::array<double, 3>& t2);
+
 // Unit normal at each node of `facets` (facetNodes: the mesh nodes of facet f at
 // [f * nodesPerFacet, (f + 1) * nodesPerFacet)): the normalized sum of the normals of the
 // facets around the node, each evaluated at that node.

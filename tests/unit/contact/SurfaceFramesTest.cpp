@@ -30,6 +30,42 @@ TEST(TangentBasis, OrthonormalAndRightHandedIn3D) {
   }
 }
 
+// A normal on the tie |n_x| = |n_y| (a node on a symmetric mesh's diagonal): two updates whose
+// round-off orders n_x and n_y differently turn tangentBasis's t1 by some 84 degrees; the following
+// frame keeps its axis, and is tangentBasis's own frame wherever that axis is the chosen one.
+TEST(TangentBasis, TheFollowingFrameDoesNotTurnOnATie) {
+  const auto unit = [](std::array<double, 3> v) {
+    const double norm = std::sqrt(dot(v, v));
+    for (double& c : v)
+      c /= norm;
+    return v;
+  };
+  const auto xFirst = unit({0.3, 0.3 + 1e-12, 0.9}), yFirst = unit({0.3 + 1e-12, 0.3, 0.9});
+  std::array<double, 3> a1, a2, b1, b2;
+  tangentBasis(3, xFirst, a1, a2);
+  tangentBasis(3, yFirst, b1, b2);
+  EXPECT_LT(std::abs(dot(a1, b1)), 0.2);  // turned by more than 78 degrees
+  std::array<double, 3> f1 = a1, f2 = a2;
+  tangentBasisFollowing(3, yFirst, f1, f2);
+  EXPECT_GT(dot(a1, f1), 1 - 1e-12);
+  EXPECT_GT(dot(a2, f2), 1 - 1e-12);
+  EXPECT_NEAR(dot(f1, yFirst), 0, 1e-15);
+  // Where the kept axis is the least aligned one, the same frame to the last bit.
+  std::array<double, 3> g1 = b1, g2 = b2;
+  tangentBasisFollowing(3, yFirst, g1, g2);
+  EXPECT_EQ(g1, b1);
+  EXPECT_EQ(g2, b2);
+  // A first frame (t1 = 0) is tangentBasis's; an axis turned close to n is given up.
+  std::array<double, 3> z1{}, z2{};
+  tangentBasisFollowing(3, xFirst, z1, z2);
+  EXPECT_EQ(z1, a1);
+  const auto nearX = unit({0.95, 0.2, 0.1});
+  std::array<double, 3> h1 = a1, h2 = a2, r1, r2;
+  tangentBasisFollowing(3, nearX, h1, h2);
+  tangentBasis(3, nearX, r1, r2);
+  EXPECT_EQ(h1, r1);
+}
+
 TEST(TangentBasis, RotatedNormalIn2D) {
   std::array<double, 3> t1, t2;
   tangentBasis(2, {0.6, 0.8, 0}, t1, t2);
