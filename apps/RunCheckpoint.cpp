@@ -205,6 +205,7 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
       file.writeDoubles("contact/resistance", history.resistance, 3, "force per area");
       file.writeDoubles("contact/slip", history.slip, 3, "length (the mesh's unit)");
       file.writeIntegers("contact/facet", history.facet);
+      file.writeDoubles("contact/frame", history.frame, 3);
     }
     if (hasLast) {
       file.writeDoubles("last_step/increment/displacement", lastStep[0], mesh.dim,
@@ -267,6 +268,7 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
     history.resistance = file.doubles("contact/resistance");
     history.slip = file.doubles("contact/slip");
     history.facet = file.integers("contact/facet");
+    if (file.hasDataset("contact/frame")) history.frame = file.doubles("contact/frame");
     history.everInContact = file.integerAttribute("contact_ever_closed") != 0;
   });
   // The same data on every rank: a mismatch throws on every rank alike.

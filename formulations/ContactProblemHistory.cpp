@@ -47,6 +47,7 @@ ContactHistory ContactProblem::convergedHistory(const Vector& x) {
     h.resistance.insert(h.resistance.end(), pt.resistanceOld.begin(), pt.resistanceOld.end());
     h.slip.insert(h.slip.end(), pt.slipTotal.begin(), pt.slipTotal.end());
     h.facet.push_back(pt.paired ? pt.facet : -1);
+    h.frame.insert(h.frame.end(), pt.t1.begin(), pt.t1.end());
   }
   h.everInContact = everInContact_;
   return h;
@@ -56,7 +57,8 @@ void ContactProblem::restoreHistory(const ContactHistory& h, Vector& x, double t
   // The history arrives whole on every rank, so every rank finds the same mismatch.
   const std::size_t n = points_.size();
   if (h.node.size() != n || h.zone.size() != n || h.unknownOffsets.size() != n + 1 ||
-      h.resistance.size() != 3 * n || h.slip.size() != 3 * n || h.facet.size() != n)
+      h.resistance.size() != 3 * n || h.slip.size() != 3 * n || h.facet.size() != n ||
+      (!h.frame.empty() && h.frame.size() != 3 * n))
     throw InputError("the checkpoint has " + std::to_string(h.node.size()) +
                      " contact points, this scene's contact zones " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i) {
@@ -74,6 +76,7 @@ void ContactProblem::restoreHistory(const ContactHistory& h, Vector& x, double t
     for (int c = 0; c < 3; ++c) {
       pt.resistanceOld[c] = h.resistance[3 * i + c];
       pt.slipTotal[c] = h.slip[3 * i + c];
+      if (!h.frame.empty()) pt.t1[c] = h.frame[3 * i + c];
     }
     pt.slipIncrement = {0, 0, 0};
     pt.result.slip = pt.slipTotal;

@@ -1,6 +1,6 @@
 // RunCheckpoint: a state written to checkpoint.h5 and read into a freshly built model of the same
 // scene comes back exactly (displacements and contact unknowns, internal variables, friction
-// history), and the file's layout is the documented one (doc/scenes.md, "Checkpoints").
+// history, the points' tangent frames), and the file's layout is the documented one (doc/scenes.md, "Checkpoints").
 #include "apps/RunCheckpoint.hpp"
 #include "apps/SceneModel.hpp"
 #include "base/InputError.hpp"
@@ -84,6 +84,7 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   for (std::size_t i = 0; i < history.resistance.size(); ++i) {
     history.resistance[i] = pattern(i, 0.5);
     history.slip[i] = pattern(i, -2e-3);
+    history.frame[i] = pattern(i, 0.25);  // the tangential unknowns' frames (t1)
   }
   history.everInContact = true;
   a.contact->restoreHistory(history, *a.x, 0.375);
@@ -134,6 +135,7 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   EXPECT_EQ(h.resistance, history.resistance);
   EXPECT_EQ(h.slip, history.slip);
   EXPECT_EQ(h.facet, history.facet);
+  EXPECT_EQ(h.frame, history.frame);
   EXPECT_TRUE(h.everInContact);
 
   // The layout doc/scenes.md documents: ids and displacement rows, one row per node.
@@ -143,6 +145,7 @@ TEST(RunCheckpoint, WriteThenReadRestoresTheStateExactly) {
   EXPECT_EQ(file.doubles("nodes/displacement").size(), 2 * a.sm.model.mesh->numNodes());
   EXPECT_EQ(file.integers("elements/id").size(), a.sm.model.mesh->numElements());
   EXPECT_EQ(file.doubles("contact/slip").size(), 3 * history.node.size());
+  EXPECT_EQ(file.doubles("contact/frame").size(), 3 * history.node.size());
   std::filesystem::remove(path);
 }
 
