@@ -308,8 +308,10 @@ void MumpsSolver::analyse(bool singlePrecision) {
     // single analysis takes that pivot order (ICNTL(7) = 1) instead of ordering the same
     // pattern again. The peers' 125 730-dof Hertz: 3.1 -> 1.9 s of analysis (SCOTCH's 1.2 s
     // once, not twice; doc/performance.md, "Single-precision factors").
-    if (m.isRoot()) m.pivotOrder.assign(m.dbl.id.sym_perm, m.dbl.id.sym_perm + m.dbl.id.n);
-    analyseOn(*m.sgl, 1, m.isRoot() ? m.pivotOrder.data() : nullptr);
+    // MUMPS reads PERM_IN during this analysis only.
+    std::vector<MUMPS_INT> pivotOrder;
+    if (m.isRoot()) pivotOrder.assign(m.dbl.id.sym_perm, m.dbl.id.sym_perm + m.dbl.id.n);
+    analyseOn(*m.sgl, 1, m.isRoot() ? pivotOrder.data() : nullptr);
   } else if (singlePrecision) {
     analyseOn(*m.sgl, m.ordering, nullptr);
   } else {

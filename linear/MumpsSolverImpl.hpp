@@ -39,8 +39,6 @@ struct MumpsSolver::Impl {
   std::vector<double> values;
   std::vector<float> singleValues;  // `values` rounded, for the single-precision instance
   MUMPS_INT ordering = 0;           // ICNTL(7) for the analyses of this pattern
-  // The double analysis' pivot order (SYM_PERM, on rank 0), given to the single-precision one.
-  std::vector<MUMPS_INT> pivotOrder;
   // Right-hand side and solution are centralized on rank 0.
   Teuchos::RCP<const Map> rootMap;
   Teuchos::RCP<const Import> toRoot, fromRoot;

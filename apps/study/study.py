@@ -26,6 +26,11 @@ import study_process as process  # noqa: E402
 import study_report as report  # noqa: E402
 
 
+def case_folder(out, i, name):
+    """The folder of the study's case i (0-based) named `name`."""
+    return os.path.join(out, "runs", study_file.run_folder(i + 1, name))
+
+
 def finished_record(folder, scene, sets, retry_failed):
     """The record of the same case already run in `folder` (to be kept), else None."""
     try:
@@ -164,7 +169,7 @@ def run_all(study, todo, out, args, runners):
     records = {}
 
     def folder_of(i):
-        return os.path.join(out, "runs", study_file.run_folder(i + 1, todo[i][0]))
+        return case_folder(out, i, todo[i][0])
 
     def run(i, runner):
         name, _, sets, scene = todo[i]
@@ -248,8 +253,8 @@ def main():
 
     # As many runners as may be needed (automatic: the cores, if the first run's memory allows);
     # a resumed study counts only the runs it has left (none left: no process is started).
-    left = sum(finished_record(os.path.join(out, "runs", study_file.run_folder(i + 1, name)),
-                               scene, study["Sets"] + sets, args.retry_failed) is None
+    left = sum(finished_record(case_folder(out, i, name), scene, study["Sets"] + sets,
+                               args.retry_failed) is None
                for i, (name, _, sets, scene) in enumerate(todo))
     count = most_runs_at_once(study["Parallel Runs"], left)
     env = process.blas_share(count)
