@@ -103,13 +103,12 @@ void checkSymmetry(const Problem& problem, const LinearSolver& solver, const std
                    "facets)");
 }
 
-// Whether the assembled tangent is symmetric: every material's, no follower load, every
+// Whether the assembled tangent is symmetric: the solid's (its materials and element
+// technologies, no follower load), every
 // contact law's for its friction, and no node-to-segment geometric terms (the geometry in
 // Newton with Geometric Terms pairing or full differentiate the normal along one side only).
 bool tangentIsSymmetric(const SceneModel& sm, const Problem& problem) {
-  if (!problem.followerLoads().empty()) return false;
-  for (const auto& [block, material] : sm.model.materials)
-    if (!material->symmetricTangent()) return false;
+  if (!problem.tangentSymmetric()) return false;
   const StaticSolverOptions& o = sm.solverOptions;
   const bool geometricTerms = o.geometryInNewton && o.geometricTerms != GeometricTerms::none;
   const int nt = sm.model.mesh->dim - 1;
@@ -118,6 +117,18 @@ bool tangentIsSymmetric(const SceneModel& sm, const Problem& problem) {
     if (geometricTerms && zone.discretization == Discretization::nodeToSegment) return false;
   }
   return true;
+}
+
+// What `automatic` chose where it changed something or could not: a line per such block.
+void reportElementTechnologies(const Problem& problem) {
+  for (const BlockTechnology& t : problem.elementTechnologies()) {
+    if (t.requested != "automatic") continue;
+    if (t.name != "full")
+      std::cout << "contactlab: block '" << t.block << "': element technology " << t.name
+                << " (automatic: " << t.reason << ")\n";
+    else if (t.reason.find(", but ") != std::string::npos)
+      std::cerr << "contactlab: block '" << t.block << "': full integration: " << t.reason << "\n";
+  }
 }
 
 // MUMPS' Mode 'automatic' (the default): LDL^T with 2x2 pivots (SYM = 2) on a symmetric
@@ -214,6 +225,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       if (message.find(sm.scene.path) != std::string::npos) throw;
       throw InputError(sm.scene.path + ": " + message);
     }
+    if (root) reportElementTechnologies(*problem);
     if (!sm.contact.empty()) {
       try {
         contact = std::make_unique<ContactProblem>(*problem, sm.contact);

@@ -395,6 +395,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
     } catch (const std::invalid_argument& e) {
       throw InputError(where + ": Materials/" + block + ": " + e.what());
     }
+    sm.model.elementTechnologies[block] = m.get<std::string>("Element Technology");
   }
 
   const double endTime = sm.solverOptions.endTime;

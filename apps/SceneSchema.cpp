@@ -6,6 +6,7 @@
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
+#include "core/problem/ElementTechnology.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
@@ -303,6 +304,25 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
   return p;
 }
 
+// A block's material (typed by the material registry) and how its elements form the strain.
+ParameterList materialItem(const ParameterList& user, const std::string& where,
+                           const std::string& path) {
+  ParameterList item = typedSection(materialRegistry(), &user, "linear-elastic", where, path);
+  std::vector<std::string> technologies = {"automatic"};
+  for (const auto& name : elementTechnologyRegistry().names())
+    technologies.push_back(name);
+  item.set("Element Technology", "automatic",
+           "How the block's elements form the strain their material sees (one of: automatic, " +
+               elementTechnologyRegistry().joinedNames() +
+               "). 'automatic' takes a locking-free one where the volume barely changes "
+               "(plastic flow, or nu >= 0.45): b-bar (small strain) or f-bar (finite strain) on "
+               "quad4/hex8, mixed-up on quadratic cells; and full integration elsewhere (plane "
+               "stress, tri3/tet4, compressible elastic laws). doc/scenes.md, 'Element "
+               "technology'",
+           choices(technologies));
+  return item;
+}
+
 ParameterList geometrySection() {
   ParameterList p("Geometry");
   p.set("Type", "plane-strain",
@@ -384,6 +404,7 @@ ParameterList outputSection(const ParameterList* user, const std::string& where)
 void registerAll() {
   registerMeshSources();
   registerMaterials();
+  registerElementTechnologies();
   registerLinearSolvers();
   registerFormulations();
 }
@@ -401,8 +422,7 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
                                          }));
   valid.set("Materials", namedSection(userSublist(&scene, "Materials"), "Materials", where,
                                       [&](const ParameterList& user, const std::string& path) {
-                                        return typedSection(materialRegistry(), &user,
-                                                            "linear-elastic", where, path);
+                                        return materialItem(user, where, path);
                                       }));
   valid.set("Dirichlet",
             namedSection(userSublist(&scene, "Dirichlet"), "Dirichlet", where,

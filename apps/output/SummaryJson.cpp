@@ -68,6 +68,17 @@ JsonValue SummaryJson::contactBlock(const ContactResultants& r) const {
       .set("surfaces_met", contact_->everInContact());
 }
 
+// Per block: the element technology used, what the scene asked for and automatic's reason.
+JsonValue SummaryJson::elementTechnologies() const {
+  JsonValue blocks = JsonValue::object();
+  for (const BlockTechnology& t : problem_.elementTechnologies()) {
+    JsonValue block = JsonValue::object().set("technology", t.name).set("requested", t.requested);
+    if (!t.reason.empty()) block.set("reason", t.reason);
+    blocks.set(t.block, block);
+  }
+  return blocks;
+}
+
 // Per zone: its formulation with parameters, friction, and whether the master is an obstacle.
 JsonValue SummaryJson::formulations() const {
   if (!contact_) return JsonValue();
@@ -167,6 +178,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
       .set("message", orNull(report.message))
       .set("dimension", problem_.dim())
       .set("mesh", typedSection(params.sublist("Mesh")))
+      .set("element_technology", elementTechnologies())
       .set("formulation", formulations())
       .set("discretization", discretizations())
       .set("algorithm", algorithm())

@@ -42,6 +42,7 @@ class SummaryJson {
                   const MaterialStateSummary& materialState, int ranks) const;
 
  private:
+  JsonValue elementTechnologies() const;
   JsonValue formulations() const;
   JsonValue discretizations() const;
   JsonValue algorithm() const;

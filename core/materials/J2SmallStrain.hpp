@@ -63,6 +63,7 @@ class J2SmallStrain : public Material {
   // an elastic step); both are required. out.stateNew may alias in.stateOld.
   void evaluate(const MaterialInput& in, MaterialOutput& out) const override;
   double density() const override { return parameters_.density; }
+  bool isochoricFlow() const override { return true; }
   double equivalentPlasticStrain(const double* state) const override {
     return state[kEquivalentPlasticStrain];
   }

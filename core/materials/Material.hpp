@@ -71,6 +71,9 @@ class Material {
   // temperature): a small-strain element's force is then K u with K computed once, which the
   // problem keeps instead of integrating again (Problem::assemble).
   virtual bool linear() const { return false; }
+  // Whether its inelastic flow preserves volume (J2 plasticity): fully integrated elements that
+  // cannot change volume lock under it, which the automatic element technology avoids.
+  virtual bool isochoricFlow() const { return false; }
   // Accumulated equivalent plastic strain of a state (0 for laws without plasticity): the
   // kernels output it and flag a point plastic when a step increased it.
   virtual double equivalentPlasticStrain(const double* /*state*/) const { return 0.0; }

@@ -33,6 +33,7 @@ class PlaneStress : public Material {
   bool symmetricTangent() const override { return law_->symmetricTangent(); }
   // A linear law stays linear: sigma = (C condensed) eps.
   bool linear() const override { return law_->linear(); }
+  bool isochoricFlow() const override { return law_->isochoricFlow(); }
   double equivalentPlasticStrain(const double* state) const override {
     return law_->equivalentPlasticStrain(state);
   }

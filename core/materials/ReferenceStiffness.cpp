@@ -8,7 +8,14 @@
 
 namespace contactlab {
 
-double referenceYoungModulus(const Material& material) {
+namespace {
+
+struct Lame {
+  double lambda;
+  double mu;
+};
+
+Lame restLame(const Material& material) {
   MaterialInput in;
   in.F = {1, 0, 0, 0, 1, 0, 0, 0, 1};
   std::vector<double> stateOld(static_cast<std::size_t>(material.stateSize())),
@@ -35,7 +42,19 @@ double referenceYoungModulus(const Material& material) {
     throw std::invalid_argument(
         material.name() + " has no stable isotropic stiffness at rest (mu = " + numberText(mu) +
         ", lambda = " + numberText(lambda) + ")");
+  return {lambda, mu};
+}
+
+}  // namespace
+
+double referenceYoungModulus(const Material& material) {
+  const auto [lambda, mu] = restLame(material);
   return mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
+}
+
+double referencePoissonRatio(const Material& material) {
+  const auto [lambda, mu] = restLame(material);
+  return lambda / (2.0 * (lambda + mu));
 }
 
 }  // namespace contactlab

@@ -87,6 +87,7 @@ class SimoMiehe : public Material {
   std::optional<double> referenceTemperature() const override {
     return parameters_.expansion.referenceTemperature;
   }
+  bool isochoricFlow() const override { return true; }
   double equivalentPlasticStrain(const double* state) const override {
     return state[kEquivalentPlasticStrain];
   }

@@ -8,6 +8,7 @@
 #include "core/problem/AxisymmetricModel.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/ElementKernel.hpp"
+#include "core/problem/ElementTechnology.hpp"
 #include "core/problem/ElementUpdateError.hpp"
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
@@ -21,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace contactlab {
 
@@ -92,15 +94,25 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     for (const auto& temperature : model_.temperatures)
       if (temperature.block == mesh.blocks[b].name) blockTemperature_[b] = &temperature;
 
-  std::map<std::pair<ElementType, Kinematics>, int> kernelOf;
+  // Every rank resolves every block's technology, so that a refusal is the same everywhere.
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const auto& block = mesh.blocks[b];
+    const auto requested = model_.elementTechnologies.find(block.name);
+    blockTechnology_.push_back(resolveBlockTechnology(
+        block.name, requested == model_.elementTechnologies.end() ? "automatic" : requested->second,
+        *blockMaterial_[b], elementSetting(static_cast<int>(b))));
+  }
+
+  std::map<std::tuple<ElementType, Kinematics, std::string>, int> kernelOf;
   const int dim = mesh.dim;
   for (const auto& ref : dofs_->localElements()) {
     const auto& block = mesh.blocks[ref.block];
     const Kinematics kinematics = blockMaterial_[ref.block]->kinematics();
-    auto [it, inserted] =
-        kernelOf.emplace(std::make_pair(block.type, kinematics), static_cast<int>(kernels_.size()));
+    const BlockTechnology& technology = blockTechnology_[ref.block];
+    auto [it, inserted] = kernelOf.emplace(std::make_tuple(block.type, kinematics, technology.name),
+                                           static_cast<int>(kernels_.size()));
     if (inserted) {
-      kernels_.push_back(makeElementKernel(block.type, kinematics, -1, model_.axisymmetric));
+      kernels_.push_back(technology.technology->kernel(elementSetting(ref.block)));
       massKernels_.push_back(std::make_unique<MassKernel>(block.type, model_.axisymmetric));
     }
     LocalElement e;
@@ -167,6 +179,23 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   });
   nodal_ = std::make_unique<NodalAssembler>(model_, *dofs_);
   buildGraph();
+}
+
+ElementSetting Problem::elementSetting(int block) const {
+  ElementSetting setting;
+  setting.type = model_.mesh->blocks[block].type;
+  setting.kinematics = blockMaterial_[block]->kinematics();
+  setting.axisymmetric = model_.axisymmetric;
+  setting.planeStress = model_.planeStress;
+  return setting;
+}
+
+bool Problem::tangentSymmetric() const {
+  if (!followerLoads().empty()) return false;
+  for (std::size_t b = 0; b < blockTechnology_.size(); ++b)
+    if (!blockMaterial_[b]->symmetricTangent() || !blockTechnology_[b].technology->keepsSymmetry())
+      return false;
+  return true;
 }
 
 void Problem::checkElementGeometry() const {

@@ -16,6 +16,7 @@
 #include "core/io/MeshPiece.hpp"
 #include "core/problem/CentrifugalLoadKernel.hpp"
 #include "core/problem/DofMap.hpp"
+#include "core/problem/ElementTechnology.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 #include "core/problem/SolidModel.hpp"
 
@@ -131,6 +132,11 @@ class Problem : public NonlinearSystem {
   // SurfaceLoadAssembler.hpp), the same on every rank. Their load stiffness makes the tangent
   // unsymmetric: a linear solver that assumes symmetry must not solve it.
   const std::vector<std::string>& followerLoads() const;
+  // Whether the solid's tangent is symmetric: every block's material tangent and element
+  // technology keep it (f-bar does not), and no follower load.
+  bool tangentSymmetric() const;
+  // Each mesh block's element technology (in Mesh::blocks order), resolved at construction.
+  const std::vector<BlockTechnology>& elementTechnologies() const { return blockTechnology_; }
 
   // This rank's elements and nodes with displacement, stress (cell average, Cauchy), von_mises,
   // material (block index) and rank, and with plasticity equivalent_plastic_strain (cell
@@ -175,6 +181,7 @@ class Problem : public NonlinearSystem {
     std::vector<double> stiffness;
   };
   void checkModel() const;
+  ElementSetting elementSetting(int block) const;
   void checkElementGeometry() const;
   void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;
   void buildGraph();
@@ -192,7 +199,9 @@ class Problem : public NonlinearSystem {
   std::vector<LocalElement> elements_;
   // Every element linear: the solid's tangent is the same at every assembly (assemble()).
   bool allLinear_ = false;
-  std::vector<std::unique_ptr<ElementKernel>> kernels_;   // one per element type and kinematics
+  std::vector<BlockTechnology> blockTechnology_;  // per mesh block
+  // One per element type, kinematics and technology.
+  std::vector<std::unique_ptr<ElementKernel>> kernels_;
   std::vector<std::unique_ptr<MassKernel>> massKernels_;  // same order
   std::vector<CentrifugalLoadKernel> centrifugal_;        // one per model_.centrifugalLoads
   // The inertia term of setInertia(), its reference on the overlap map.

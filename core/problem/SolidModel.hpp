@@ -16,6 +16,9 @@ namespace contactlab {
 struct SolidModel {
   std::shared_ptr<const Mesh> mesh;
   std::map<std::string, std::shared_ptr<const Material>> materials;  // by block name
+  // How each block's elements form their strain (ElementTechnology.hpp): a registry name or
+  // "automatic", by block name; a block without an entry is "automatic".
+  std::map<std::string, std::string> elementTechnologies;
   std::vector<DirichletCondition> dirichlet;
   std::vector<SymmetryCondition> symmetries;
   // The symmetry planes normal to an axis, which resolveSymmetryConditions turns into Dirichlet

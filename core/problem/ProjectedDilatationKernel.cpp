@@ -1,0 +1,174 @@
+#include "core/problem/ProjectedDilatationKernel.hpp"
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/problem/AxisymmetricKernel.hpp"
+#include "core/problem/PressureSpace.hpp"
+#include "core/problem/SlotOperator.hpp"
+
+#include <stdexcept>
+
+namespace contactlab {
+
+int fullIntegrationDegree(ElementType type, bool axisymmetric) {
+  return axisymmetric ? AxisymmetricKernel::defaultQuadratureDegree(type)
+                      : stiffnessQuadratureDegree(type);
+}
+
+ProjectedDilatationKernel::ProjectedDilatationKernel(ElementType type, int pressureDegree,
+                                                     bool axisymmetric, int quadratureDegree)
+    : ElementKernel(
+          type, quadratureDegree < 0 ? fullIntegrationDegree(type, axisymmetric) : quadratureDegree,
+          axisymmetric),
+      pressureDegree_(pressureDegree) {
+  PressureSpace::checkKernel("ProjectedDilatationKernel", pressureDegree, numPoints_);
+}
+
+void ProjectedDilatationKernel::evaluate(const double* x, const double* u, const Material& material,
+                                         const double* stateOld, double* stateNew, double* residual,
+                                         double* tangent, double* pointStress,
+                                         double* averageStress,
+                                         const std::optional<double>& temperature) const {
+  constexpr int P = PressureSpace::kMaxPoints, S = PressureSpace::kMaxSize;
+  constexpr int D = SlotOperator::kMaxDofs, R = SlotOperator::kMaxRows;
+  const int n = numNodes_, nq = numPoints_, nd = numDofs();
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
+  double volume = 0.0;
+
+  // The points' gradients, measures and positions; the pressure space over them.
+  double dNdx[P][kMaxNodes * 3], w[P], points[3 * P];
+  for (int q = 0; q < nq; ++q) {
+    w[q] = gradients(q, x, dNdx[q]);
+    interpolatePosition(n, x, &N_[q * n], &points[3 * q]);
+  }
+  PressureSpace space(pressureDegree_, dim_);
+  space.setElement(nq, points, w);
+  const int np = space.size();
+
+  // theta_bar = sum_i psi_i beta_i . u, beta_i = sum_q weight(i, q) b_q, b_q = m^T B_q.
+  SlotOperator op;
+  double beta[S][D] = {};
+  for (int q = 0; q < nq; ++q) {
+    smallStrainOperator(dim_, axisymmetric_, n, &N_[q * n], dNdx[q], points[3 * q], op);
+    for (int k = 0; k < nd; ++k) {
+      double b = 0.0;
+      for (int r = 0; r < op.rows; ++r)
+        if (op.volumetric[r]) b += op.B[r][k];
+      for (int i = 0; i < np; ++i)
+        beta[i][k] += space.weight(i, q) * b;
+    }
+  }
+  double thetaCoefficient[S] = {};
+  for (int i = 0; i < np; ++i)
+    for (int k = 0; k < nd; ++k)
+      thetaCoefficient[i] += beta[i][k] * u[k];
+
+  // Only the upper node blocks are accumulated while every point's C is symmetric (mirrored at
+  // the end); an unsymmetric C at a point mirrors what was accumulated and goes on in full.
+  bool symmetric = true;
+  double pressureMoment[S] = {};          // sum_q w psi_i tr sigma
+  double h[S][D] = {}, hT[S][D] = {};     // sum_q w psi_i B^T P C m (and with C^T)
+  double volumetricStiffness[S][S] = {};  // sum_q w psi_i psi_j m^T C m
+  MaterialInput in;
+  in.temperature = temperature;
+  MaterialOutput out;
+  for (int q = 0; q < nq; ++q) {
+    smallStrainOperator(dim_, axisymmetric_, n, &N_[q * n], dNdx[q], points[3 * q], op);
+    const int rows = op.rows;
+    const double invn = 1.0 / op.volumetricCount;
+    double e[R];
+    op.apply(u, e);
+    double trace = 0.0, theta = 0.0;
+    for (int r = 0; r < rows; ++r)
+      if (op.volumetric[r]) trace += e[r];
+    for (int i = 0; i < np; ++i)
+      theta += space.basis(q, i) * thetaCoefficient[i];
+    in.strain.fill(0.0);
+    for (int r = 0; r < rows; ++r)
+      in.strain[op.slot[r]] = e[r] + (op.volumetric[r] ? invn * (theta - trace) : 0.0);
+    evaluateSmallStrainPoint(q, w[q], material, stateOld, stateNew, in, out, pointStress,
+                             averageStress, volume);
+    if (residual) {
+      double sigma[R], traceSigma = 0.0;
+      for (int r = 0; r < rows; ++r) {
+        sigma[r] = out.stress[op.slot[r]];
+        if (op.volumetric[r]) traceSigma += sigma[r];
+      }
+      for (int r = 0; r < rows; ++r)
+        if (op.volumetric[r]) sigma[r] -= invn * traceSigma;  // P sigma
+      op.addTransposeProduct(sigma, w[q], residual);
+      for (int i = 0; i < np; ++i)
+        pressureMoment[i] += w[q] * space.basis(q, i) * traceSigma;
+    }
+    if (!tangent) continue;
+    double C[R * R], Cm[R] = {}, mC[R] = {}, mCm = 0.0;
+    restrictToSlots(op, out.tangent.data(), 6, C);
+    for (int r = 0; r < rows && symmetric; ++r)
+      for (int m = 0; m < r; ++m)
+        if (C[r * rows + m] != C[m * rows + r]) {
+          mirrorUpperBlocks(nd, dim_, tangent);
+          symmetric = false;
+          break;
+        }
+    for (int r = 0; r < rows; ++r)
+      for (int m = 0; m < rows; ++m) {
+        if (op.volumetric[m]) Cm[r] += C[r * rows + m];
+        if (op.volumetric[r]) mC[m] += C[r * rows + m];
+      }
+    for (int r = 0; r < rows; ++r)
+      if (op.volumetric[r]) mCm += Cm[r];
+    // C' = P C P, P = I - m m^T / n.
+    double Cp[R * R];
+    for (int r = 0; r < rows; ++r)
+      for (int m = 0; m < rows; ++m) {
+        const double mr = op.volumetric[r] ? 1.0 : 0.0, mm = op.volumetric[m] ? 1.0 : 0.0;
+        Cp[r * rows + m] =
+            C[r * rows + m] - invn * (mr * mC[m] + Cm[r] * mm) + invn * invn * mr * mm * mCm;
+      }
+    op.addProduct(Cp, w[q], tangent, symmetric);
+    double PCm[R], PCTm[R];
+    for (int r = 0; r < rows; ++r) {
+      PCm[r] = Cm[r] - (op.volumetric[r] ? invn * mCm : 0.0);
+      PCTm[r] = mC[r] - (op.volumetric[r] ? invn * mCm : 0.0);
+    }
+    double hq[D] = {}, hTq[D] = {};
+    op.addTransposeProduct(PCm, w[q], hq);
+    op.addTransposeProduct(PCTm, w[q], hTq);
+    for (int i = 0; i < np; ++i) {
+      const double psi = space.basis(q, i);
+      for (int k = 0; k < nd; ++k) {
+        h[i][k] += psi * hq[k];
+        hT[i][k] += psi * hTq[k];
+      }
+      for (int j = 0; j < np; ++j)
+        volumetricStiffness[i][j] += w[q] * psi * space.basis(q, j) * mCm;
+    }
+  }
+  const double invn = 1.0 / op.volumetricCount;
+  if (residual)
+    for (int i = 0; i < np; ++i)
+      for (int k = 0; k < nd; ++k)
+        residual[k] += invn * pressureMoment[i] * beta[i][k];
+  if (tangent) {
+    // K += sum_i (g_i beta_i^T + beta_i gT_i^T), g_i = h_i / n + sum_j S_ij beta_j / (2 n^2):
+    // the cross terms B^T P C m b_bar^T / n (and their transposes) and the volumetric one
+    // b_bar (m^T C m) b_bar^T / n^2 with b_bar = sum_i psi_i beta_i.
+    for (int i = 0; i < np; ++i) {
+      double g[D], gT[D];
+      for (int k = 0; k < nd; ++k) {
+        double s = 0.0;
+        for (int j = 0; j < np; ++j)
+          s += volumetricStiffness[i][j] * beta[j][k];
+        g[k] = invn * h[i][k] + 0.5 * invn * invn * s;
+        gT[k] = symmetric ? g[k] : invn * hT[i][k] + 0.5 * invn * invn * s;
+      }
+      addOuterProduct(g, beta[i], 1.0, nd, dim_, tangent, symmetric);
+      addOuterProduct(beta[i], gT, 1.0, nd, dim_, tangent, symmetric);
+    }
+    if (symmetric) mirrorUpperBlocks(nd, dim_, tangent);
+  }
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
+}
+
+}  // namespace contactlab

@@ -1,0 +1,199 @@
+#include "core/problem/ProjectedJacobianKernel.hpp"
+
+#include "core/fem/IsoparametricMap.hpp"
+#include "core/materials/Tensor3.hpp"
+#include "core/problem/ElementUpdateError.hpp"
+#include "core/problem/PressureSpace.hpp"
+#include "core/problem/ProjectedDilatationKernel.hpp"
+#include "core/problem/SlotOperator.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace contactlab {
+namespace {
+
+constexpr int kPoints = PressureSpace::kMaxPoints;
+constexpr int kDofs = SlotOperator::kMaxDofs;
+constexpr int kRows = SlotOperator::kMaxRows;
+
+// What the element's passes keep of each quadrature point.
+struct PointData {
+  double w = 0;                  // measure
+  double X[3] = {};              // reference position
+  std::array<double, 9> F{};     // deformation gradient
+  std::array<double, 9> Finv{};  // its inverse
+  double J = 0;
+  double theta = 0;     // Pi(J) at the point
+  double alpha = 0;     // (theta / J)^(1/n)
+  double tau = 0;       // alpha P_bar : F
+  double c[kDofs];      // d ln J / du
+  double e[kDofs];      // d ln theta / du
+  double delta[kDofs];  // d ln alpha / du = (e - c) / n
+  double P[kRows];      // P(F_bar) in the operator's rows
+  double A[kRows * kRows];
+};
+
+struct ElementData {
+  PointData point[kPoints];
+  double dNdX[kPoints][81];
+};
+
+}  // namespace
+
+ProjectedJacobianKernel::ProjectedJacobianKernel(ElementType type, int pressureDegree,
+                                                 bool axisymmetric, int quadratureDegree)
+    : ElementKernel(
+          type, quadratureDegree < 0 ? fullIntegrationDegree(type, axisymmetric) : quadratureDegree,
+          axisymmetric),
+      pressureDegree_(pressureDegree) {
+  PressureSpace::checkKernel("ProjectedJacobianKernel", pressureDegree, numPoints_);
+}
+
+void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const Material& material,
+                                       const double* stateOld, double* stateNew, double* residual,
+                                       double* tangent, double* pointStress, double* averageStress,
+                                       const std::optional<double>& temperature) const {
+  const int n = numNodes_, nq = numPoints_, nd = numDofs();
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
+  double volume = 0.0;
+  static thread_local ElementData data;  // large: kept off the stack
+  SlotOperator op;
+  auto operatorAt = [&](int q) {
+    deformationGradientOperator(dim_, axisymmetric_, n, &N_[q * n], data.dNdX[q],
+                                data.point[q].X[0], op);
+  };
+
+  // Pass 1: F, J and d ln J / du at each point; theta = Pi(J) and its derivative.
+  double points[3 * kPoints], measures[kPoints];
+  for (int q = 0; q < nq; ++q) {
+    PointData& p = data.point[q];
+    p.w = gradients(q, x, data.dNdX[q]);
+    interpolatePosition(n, x, &N_[q * n], p.X);
+    operatorAt(q);
+    p.F = deformationGradient(op, u);
+    p.J = tensor3::determinant(p.F);
+    if (!(p.J > 0)) {
+      std::ostringstream s;
+      s << "det F = " << p.J << " <= 0: the displacement turns the element inside out";
+      throw ElementUpdateError("inverted-element", q, s.str());
+    }
+    p.Finv = tensor3::inverse(p.F, p.J);
+    double g[kRows];
+    logJacobianGradient(op, p.Finv, g);
+    for (int k = 0; k < nd; ++k)
+      p.c[k] = 0.0;
+    op.addTransposeProduct(g, 1.0, p.c);
+    for (int i = 0; i < 3; ++i)
+      points[3 * q + i] = p.X[i];
+    measures[q] = p.w;
+  }
+  const double nv = op.volumetricCount;
+  PressureSpace space(pressureDegree_, dim_);
+  space.setElement(nq, points, measures);
+  const int np = space.size();
+  double thetaCoefficient[PressureSpace::kMaxSize] = {};
+  double eCoefficient[PressureSpace::kMaxSize][kDofs] = {};  // sum_q weight(i, q) J_q c_q
+  for (int i = 0; i < np; ++i)
+    for (int q = 0; q < nq; ++q) {
+      const double wJ = space.weight(i, q) * data.point[q].J;
+      thetaCoefficient[i] += wJ;
+      for (int k = 0; k < nd; ++k)
+        eCoefficient[i][k] += wJ * data.point[q].c[k];
+    }
+
+  // Pass 2: the material at F_bar; the residual f = sum_q w (alpha B^T P + tau delta).
+  MaterialInput in;
+  in.temperature = temperature;
+  MaterialOutput out;
+  for (int q = 0; q < nq; ++q) {
+    PointData& p = data.point[q];
+    p.theta = 0.0;
+    for (int i = 0; i < np; ++i)
+      p.theta += space.basis(q, i) * thetaCoefficient[i];
+    if (!(p.theta > 0))
+      throw ElementUpdateError("inverted-element", q,
+                               "the element's projected volume change is not positive");
+    for (int k = 0; k < nd; ++k) {
+      double e = 0.0;
+      for (int i = 0; i < np; ++i)
+        e += space.basis(q, i) * eCoefficient[i][k];
+      p.e[k] = e / p.theta;
+      p.delta[k] = (p.e[k] - p.c[k]) / nv;
+    }
+    operatorAt(q);
+    p.alpha = std::pow(p.theta / p.J, 1.0 / nv);
+    in.F = p.F;
+    for (int r = 0; r < op.rows; ++r)
+      in.F[op.slot[r]] = p.alpha * p.F[op.slot[r]];
+    evaluateFiniteStrainPoint(q, p.w, material, stateOld, stateNew, in, out, pointStress,
+                              averageStress, volume);
+    p.tau = 0.0;
+    for (int r = 0; r < op.rows; ++r) {
+      p.P[r] = out.P[op.slot[r]];
+      p.tau += p.alpha * p.P[r] * p.F[op.slot[r]];
+    }
+    restrictToSlots(op, out.dPdF.data(), 9, p.A);
+    if (!residual) continue;
+    op.addTransposeProduct(p.P, p.w * p.alpha, residual);
+    for (int k = 0; k < nd; ++k)
+      residual[k] += p.w * p.tau * p.delta[k];
+  }
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
+  if (!tangent) return;
+
+  // Pass 3: K = sum_q w [alpha^2 B^T A B + y_R delta^T + delta y_L^T + (tau + alpha^2 F:A:F)
+  // delta delta^T + tau d delta], d delta = (d e - d c) / n, d c = B^T L B (L the Hessian of
+  // ln J), d e = (1 / theta) Pi(J (c c^T + B^T L B)) - e e^T; the projection's terms gathered
+  // per point through kappa_q = J_q sum_i weight(i, q) rho_i, rho_i = sum_q w tau psi_i / (n
+  // theta).
+  const bool symmetric = material.symmetricTangent();
+  double rho[PressureSpace::kMaxSize] = {};
+  for (int q = 0; q < nq; ++q)
+    for (int i = 0; i < np; ++i)
+      rho[i] +=
+          data.point[q].w * data.point[q].tau * space.basis(q, i) / (nv * data.point[q].theta);
+  for (int q = 0; q < nq; ++q) {
+    const PointData& p = data.point[q];
+    operatorAt(q);
+    const int rows = op.rows;
+    double kappa = 0.0;
+    for (int i = 0; i < np; ++i)
+      kappa += space.weight(i, q) * rho[i];
+    kappa *= p.J;
+    double L[kRows * kRows], M[kRows * kRows];
+    logJacobianHessian(op, p.Finv, L);
+    const double a2 = p.alpha * p.alpha;
+    for (int k = 0; k < rows * rows; ++k)
+      M[k] = p.w * a2 * p.A[k] + (kappa - p.w * p.tau / nv) * L[k];
+    op.addProduct(M, 1.0, tangent, symmetric);
+    double AF[kRows] = {}, AtF[kRows] = {}, phi = 0.0;
+    for (int r = 0; r < rows; ++r)
+      for (int m = 0; m < rows; ++m) {
+        AF[r] += p.A[r * rows + m] * p.F[op.slot[m]];
+        AtF[r] += p.A[m * rows + r] * p.F[op.slot[m]];
+      }
+    for (int r = 0; r < rows; ++r)
+      phi += p.F[op.slot[r]] * AF[r];
+    double yR[kDofs] = {}, yL[kDofs] = {};
+    op.addTransposeProduct(p.P, p.alpha, yR);
+    op.addTransposeProduct(AF, a2, yR);
+    op.addTransposeProduct(p.P, p.alpha, yL);
+    op.addTransposeProduct(AtF, a2, yL);
+    const double half = 0.5 * (p.tau + a2 * phi);
+    for (int k = 0; k < nd; ++k) {
+      yR[k] += half * p.delta[k];
+      yL[k] += half * p.delta[k];
+    }
+    addOuterProduct(yR, p.delta, p.w, nd, dim_, tangent, symmetric);
+    addOuterProduct(p.delta, yL, p.w, nd, dim_, tangent, symmetric);
+    addOuterProduct(p.c, p.c, kappa, nd, dim_, tangent, symmetric);
+    addOuterProduct(p.e, p.e, -p.w * p.tau / nv, nd, dim_, tangent, symmetric);
+  }
+  if (symmetric) mirrorUpperBlocks(nd, dim_, tangent);
+}
+
+}  // namespace contactlab
