@@ -14,7 +14,7 @@ Line(2) = {2, 3};
 Line(3) = {3, 4};
 Line(4) = {4, 5};
 Line(5) = {5, 1};
-Curve Loop(1) = {1, 2, 3, 4, 5};
+Curve Loop(1) = {-5, -4, -3, -2, -1};  // counter-clockwise
 Plane Surface(1) = {1};
 // The punch, meshed apart (its nodes are not the soil's).
 Point(6) = {0, 0, 0, h};

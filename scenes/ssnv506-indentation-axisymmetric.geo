@@ -14,7 +14,7 @@ Line(1) = {1, 2};
 Line(2) = {2, 3};
 Line(3) = {3, 4};
 Line(4) = {4, 1};
-Curve Loop(1) = {1, 2, 3, 4};
+Curve Loop(1) = {-4, -3, -2, -1};  // counter-clockwise
 Plane Surface(1) = {1};
 // The sphere (a quarter disc): centre (0, R), lowest point (0, 0) apart from the block's top.
 Point(5) = {0, R, 0, H};
