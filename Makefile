@@ -12,8 +12,9 @@ CTEST_ARGS ?=
 
 .PHONY: run test build deps configure clean format bench docs
 
+# Missing packages: a line per phase, apt's output in $(BUILD_DIR)/install-deps.log.
 deps:
-	@./cmake/install-deps.sh
+	@CONTACTLAB_DEPS_LOG=$(BUILD_DIR)/install-deps.log ./cmake/install-deps.sh
 
 $(BUILD_DIR)/build.ninja: | deps
 	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release

@@ -124,7 +124,7 @@ void checkIds(const std::vector<std::int64_t>& file, const std::vector<std::int6
 }  // namespace
 
 std::string checkpointPath(const std::string& folder) {
-  return folder + "/checkpoint.h5";
+  return folder + "/" + kCheckpointFile;
 }
 
 std::string sceneHash(const Teuchos::ParameterList& scene) {

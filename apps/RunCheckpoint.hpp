@@ -48,6 +48,7 @@ struct LastStep {
 };
 
 // The file in a run's output folder.
+constexpr const char* kCheckpointFile = "checkpoint.h5";
 std::string checkpointPath(const std::string& folder);
 
 // A hash of the validated scene (every value, defaults included; comments and layout do not

@@ -2,6 +2,7 @@
 
 #include "algorithms/RunStatic.hpp"
 #include "algorithms/SlowDynamics.hpp"
+#include "apps/Console.hpp"
 #include "apps/DefaultScene.hpp"
 #include "apps/LinearSolverPool.hpp"
 #include "apps/RunCheckpoint.hpp"
@@ -18,6 +19,7 @@
 #include "base/InputError.hpp"
 #include "base/NumberText.hpp"
 #include "core/io/OutputFolder.hpp"
+#include "core/io/OutputManifest.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
@@ -167,6 +169,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   const auto start = clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
   const bool root = comm->getRank() == 0;
+  const Console console(options.quiet, root);
 
   // 1. Read, validate and build everything that can fail on bad input: nothing is written yet.
   SceneModel sm;
@@ -212,12 +215,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         throw InputError(sm.scene.path + ": Initial State/From: " + e.what());
       }
     }
-    if (root) {
-      for (const std::string& sentence : sm.notes)
-        std::cout << "contactlab: " << sentence << "\n";
-      for (const std::string& sentence : sm.advice)
-        std::cerr << "contactlab: " << sentence << "\n";
-    }
+    for (const std::string& sentence : sm.notes)
+      console.info(sentence);
+    for (const std::string& sentence : sm.advice)
+      console.warning(sentence);
     try {
       problem = std::make_unique<Problem>(sm.model, comm);
     } catch (const InputError& e) {
@@ -289,9 +290,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (contact && options.criticalMu && hasFriction(sm))
       requireDeterminantSolver(sm, "critical-mu");
     if (options.validateOnly) {
-      if (root)
-        std::cout << sm.scene.path << ": valid (" << sm.model.mesh->numNodes() << " nodes, "
-                  << sm.model.mesh->numElements() << " elements)\n";
+      console.result(sm.scene.path + ": valid (" + std::to_string(sm.model.mesh->numNodes()) +
+                     " nodes, " + std::to_string(sm.model.mesh->numElements()) + " elements)");
     } else if (!from.restart) {
       // Before solving: a folder that cannot be written is found now, not after step 1.
       const std::string folder =
@@ -300,8 +300,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
         if (!root) return;
         const std::vector<std::string> stale = prepareOutputFolder(folder);
         if (!stale.empty())
-          std::cerr << "contactlab: " << folder << ": removed " << stale.size()
-                    << " file(s) of an earlier run\n";
+          console.info(folder + ": removed " + std::to_string(stale.size()) +
+                       " file(s) of an earlier run");
       });
     }
   } catch (const InputError& e) {
@@ -318,18 +318,19 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   const int steps = sm.solverOptions.steps;
   NonlinearSystem& system = contact ? static_cast<NonlinearSystem&>(*contact) : *problem;
   const long long multipliers = contact ? static_cast<long long>(contact->numMultipliers()) : 0;
-  if (root)
-    std::cerr << "contactlab: " << sm.scene.name << ": " << problem->dofs().numGlobalDofs()
-              << " dofs"
-              << (multipliers ? " + " + std::to_string(multipliers) + " multipliers" : "") << " on "
-              << comm->getSize() << " rank(s), " << steps << " load step(s)\n";
+  console.info(sm.scene.name + ": " + std::to_string(problem->dofs().numGlobalDofs()) + " dofs" +
+               (multipliers ? " + " + std::to_string(multipliers) + " multipliers" : "") + " on " +
+               std::to_string(comm->getSize()) + " rank(s), " + std::to_string(steps) +
+               " load step(s)");
 
   // 2. Solve; each converged step is written at once.
-  StepsCsv stepsCsv(outDir + "/steps.csv", sm.criticalMuCheck && contact);
-  ContactCsv contactCsv(outDir + "/contact.csv");
+  // Every file the run writes into outDir is listed first in the folder's manifest, which the
+  // next run there reads to remove this one's files, and nothing else.
+  OutputManifest folder(outDir, root);
+  StepsCsv stepsCsv(folder, sm.criticalMuCheck && contact);
   ProbeValues probes(sm, *problem);
   const ProfileCsv profiles(sm, *problem);
-  VtkSteps vtk(outDir, rawMpiComm(comm));
+  VtkSteps vtk(folder, rawMpiComm(comm));
   // The series starts from rest: a t = 0 frame before step 1 (also what a run that converges
   // no step leaves); a run from an earlier state starts from that state, at its time; a
   // continued run appends to its series.
@@ -339,7 +340,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
       // Continued: the series keep what was written up to the checkpoint, the rest is dropped.
       collectively(*comm, [&] {
         if (!root) return;
-        removeTemporaries(outDir);
+        prepareContinuedFolder(outDir);
         stepsCsv.resume(from.info.stepsRows);
       });
       if (sm.writeVtk)
@@ -357,9 +358,9 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // Output/Critical Mu Check: the uniqueness check after each converged step.
   std::unique_ptr<StepUniquenessCheck> uniqueness;
   if (sm.criticalMuCheck && contact)
-    uniqueness = std::make_unique<StepUniquenessCheck>(sm, *contact, comm);
-  RunProgress progress(root && !options.quiet, sm.solverOptions.endTime,
-                       root ? outDir + "/progress.log" : "", from.restart);
+    uniqueness = std::make_unique<StepUniquenessCheck>(sm, *contact, comm, console);
+  RunProgress progress(root && !console.quiet(), sm.solverOptions.endTime,
+                       root ? folder.path("progress.log") : "", from.restart);
 
   // The contact block of the last converged step: after a failure, the contact state left in
   // the problem is the failed iterate's, which summary.json reports under a key of its own.
@@ -388,10 +389,10 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     ContactResultants cr;
     if (contact) {
       cr = contact->resultants();
-      if (root) contactCsv.write(*contact, sm.contact, *sm.model.mesh);
+      if (root) ContactCsv(folder.path("contact.csv")).write(*contact, sm.contact, *sm.model.mesh);
       if (stage) {
         if (root)
-          ContactCsv(outDir + "/contact_t" + numberText(*stage) + ".csv")
+          ContactCsv(folder.path("contact_t" + numberText(*stage) + ".csv"))
               .write(*contact, sm.contact, *sm.model.mesh);
         contactTimesWritten.push_back(*stage);
       }
@@ -407,8 +408,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     if (root) stepsCsv.write();
     probes.record(*solution, s.time);
     if (!sm.profiles.empty()) {
-      profiles.write(outDir, "", *solution, s.time);
-      if (stage) profiles.write(outDir, "_t" + numberText(*stage), *solution, s.time);
+      profiles.write(folder, "", *solution, s.time);
+      if (stage) profiles.write(folder, "_t" + numberText(*stage), *solution, s.time);
     }
     progress.step(s, steps, elapsed());
     // The checkpoint last: when it names a step, that step's outputs are all written.
@@ -422,7 +423,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     checkpoint.totals = s.run;
     const bool last = s.time >= sm.solverOptions.endTime;
     if (sm.checkpointEvery > 0 && (s.step % sm.checkpointEvery == 0 || last))
-      writeCheckpoint(checkpointPath(outDir), checkpoint, *problem, contact.get(), state,
+      writeCheckpoint(folder.path(kCheckpointFile), checkpoint, *problem, contact.get(), state,
                       {s.increment, s.load});
     killAfterStepForTests(s.step, *comm);
   };
@@ -446,34 +447,36 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   if (contact)
     for (std::size_t z = 0; z < sm.contact.size(); ++z) {
       const std::vector<std::int64_t> nodes = contact->prescribedSlipNodes(z);
-      if (root && !nodes.empty())
-        std::cerr << "contactlab: Contact/" << sm.contact[z].name << ": at " << nodes.size()
-                  << " slave node(s) (e.g. node " << sm.model.mesh->nodeId(nodes.front())
-                  << ") the Dirichlet conditions fix a friction direction: its friction "
-                     "multiplier is dropped (the support carries that force)\n";
+      if (!nodes.empty())
+        console.info("Contact/" + sm.contact[z].name + ": at " + std::to_string(nodes.size()) +
+                     " slave node(s) (e.g. node " +
+                     std::to_string(sm.model.mesh->nodeId(nodes.front())) +
+                     ") the Dirichlet conditions fix a friction direction: its friction "
+                     "multiplier is dropped (the support carries that force)");
     }
   // Output/Contact Times this run reached no converged step at (a continued run's earlier
   // part wrote its own).
-  if (contact && root && report.converged)
+  if (contact && report.converged)
     for (double t : sm.contactTimes)
       if (t > from.start.time && std::find(contactTimesWritten.begin(), contactTimesWritten.end(),
                                            t) == contactTimesWritten.end())
-        std::cerr << "contactlab: warning: Output/Contact Times: no converged step at t = "
-                  << numberText(t) << ": contact_t" << numberText(t) << ".csv was not written\n";
+        console.warning("Output/Contact Times: no converged step at t = " + numberText(t) +
+                        ": contact_t" + numberText(t) + ".csv was not written");
   // Only for a run that reached its end: a failed one may have failed where the surfaces met
   // (the seed-size tube under generalized Newton, at the joint's closing), and the warning
   // would send its user to check a geometry that is right.
-  if (contact && root && report.converged && report.steps > 0 && !contact->everInContact())
-    std::cerr << "contactlab: warning: no contact point closed in any converged step: the "
-                 "contact surfaces never met (check the geometry, the loads and the "
-                 "search distance)\n";
+  if (contact && report.converged && report.steps > 0 && !contact->everInContact())
+    console.warning(
+        "no contact point closed in any converged step: the contact surfaces never met (check "
+        "the geometry, the loads and the search distance)");
 
   // Uniqueness: the critical friction coefficient of the last converged state's pattern.
   RunRecord record;
   if (options.criticalMu) {
     record.criticalMu = JsonValue();
     if (!report.interruptSignal)
-      record.criticalMu = criticalMuSummary(sm, contact.get(), *x, lastTime, report.steps, comm);
+      record.criticalMu =
+          criticalMuSummary(sm, contact.get(), *x, lastTime, report.steps, comm, console);
   }
 
   // 3. Summary, also when the run failed (the last converged step stays written).
@@ -502,7 +505,8 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
             .set("factorization_seconds", work.factorizationSeconds)
             .set("correction_seconds", work.correctionSeconds)
             .set("solve_seconds", work.solveSeconds);
-    summary.build(report, record, materialState, comm->getSize()).write(outDir + "/summary.json");
+    summary.build(report, record, materialState, comm->getSize())
+        .write(folder.path("summary.json"));
     std::ostringstream closing;
     if (report.converged)
       closing << "contactlab: " << sm.scene.name << " converged in " << report.steps << " step(s), "
@@ -510,12 +514,11 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
     else
       closing << "contactlab: " << sm.scene.name << " FAILED (" << report.failure
               << "): " << report.message;
-    std::cout << closing.str() << "\n";
+    console.result(closing.str());
     progress.finish(closing.str());
     if (record.resultPvd)
-      std::cout << "  results: " << std::filesystem::absolute(*record.resultPvd).string() << "\n";
-    std::cout << "  summary: " << std::filesystem::absolute(outDir + "/summary.json").string()
-              << "\n";
+      console.result("  results: " + std::filesystem::absolute(*record.resultPvd).string());
+    console.result("  summary: " + std::filesystem::absolute(outDir + "/summary.json").string());
   }
   if (report.interruptSignal) return 128 + report.interruptSignal;
   return report.converged ? 0 : 1;

@@ -19,7 +19,8 @@ struct RunOptions {
   // `contactlab critical-mu`: after the run, the critical friction coefficient of the last
   // converged state's status pattern (printed and in summary.json under critical_mu).
   bool criticalMu = false;
-  // --quiet: no progress lines (scripts); warnings, errors and where the results are, still.
+  // --quiet: no progress or informational lines (Console.hpp); warnings, errors and the
+  // command's answer (the closing lines, where the results are), still.
   bool quiet = false;
   // --restart DIR: continue the run whose outputs are in DIR from its checkpoint.h5 to the
   // scene's End Time, appending to its outputs. The scene and --set overrides are the

@@ -12,7 +12,7 @@ namespace contactlab {
 // Progress on stderr (rank 0). On a terminal: a live line per Newton iterate, with the run's
 // ETA once a step has converged (extrapolated linearly in load time), replaced by one line per
 // step. In a log: one line per iterate and per step, so a long step is never silent. `--quiet`:
-// nothing but warnings, errors and the closing lines.
+// none (and Console prints nothing but warnings, errors and the closing lines).
 // Whatever the console shows, the same iterate and step lines go to `logPath` (the output
 // folder's progress.log), flushed line by line: a quiet or captured run (a bench, a study) can
 // be followed with `tail -f`; a continued run (--restart) appends to it.

@@ -8,6 +8,7 @@
 #include "base/InputError.hpp"
 #include "base/NumberText.hpp"
 #include "core/contact/MortarIntegration.hpp"
+#include "core/io/OutputFolder.hpp"
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
@@ -342,8 +343,14 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   registerAll();
   const std::string& where = scene.path;
   ParameterList& p = *scene.params;
+  const bool nameGiven = p.isParameter("Name");
   validateScene(p, where);
-  if (!p.get<std::string>("Name").empty()) scene.name = p.get<std::string>("Name");
+  // The name makes the default results folder: a given one must be a plain name (an empty one
+  // made results/ itself the folder whose earlier files a run removes), and so must the file's.
+  if (nameGiven) scene.name = p.get<std::string>("Name");
+  requirePlainName(scene.name,
+                   where + (nameGiven ? ": Name" : ": the scene's name (its file name; set Name)"),
+                   "the results folder results/<Name>");
 
   SceneModel sm;
   try {
@@ -590,6 +597,8 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
     const std::string path = "Output/Profiles/" + profiles.name(it);
     Profile profile;
     profile.name = profiles.name(it);
+    requirePlainName(profile.name, where + ": Output/Profiles: the name",
+                     "its file profile_<name>.csv");
     profile.field = pr.get<std::string>("Field");
     profile.frame = pr.get<std::string>("Frame");
     profile.from = vector3(pr, "From", where, path, dim);

@@ -7,6 +7,7 @@
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "core/problem/ElementTechnology.hpp"
+#include "formulations/ContactDiscretization.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
@@ -407,6 +408,7 @@ void registerAll() {
   registerElementTechnologies();
   registerLinearSolvers();
   registerFormulations();
+  registerContactDiscretizations();
 }
 
 ParameterList sceneSchema(const ParameterList& scene, const std::string& where) {
@@ -465,116 +467,32 @@ void validateScene(ParameterList& scene, const std::string& where) {
                      "nu: 0.3}}}");
 }
 
-namespace {
-
-std::string formatValue(const Teuchos::ParameterEntry& entry) {
-  if (entry.isType<double>()) return numberText(Teuchos::getValue<double>(entry));
-  if (entry.isType<int>()) return std::to_string(Teuchos::getValue<int>(entry));
-  if (entry.isType<bool>()) return Teuchos::getValue<bool>(entry) ? "true" : "false";
-  if (entry.isType<std::string>()) return "\"" + Teuchos::getValue<std::string>(entry) + "\"";
-  std::string s;
-  if (entry.isType<Teuchos::Array<double>>())
-    for (double v : Teuchos::getValue<Teuchos::Array<double>>(entry))
-      s += (s.empty() ? "" : ", ") + numberText(v);
-  else if (entry.isType<Teuchos::Array<int>>())
-    for (int v : Teuchos::getValue<Teuchos::Array<int>>(entry))
-      s += (s.empty() ? "" : ", ") + std::to_string(v);
-  return "[" + s + "]";
-}
-
-void describeList(std::ostream& out, const ParameterList& list, const std::string& indent) {
-  for (auto it = list.begin(); it != list.end(); ++it) {
-    const auto& entry = list.entry(it);
-    const std::string& key = list.name(it);
-    if (entry.isList()) {
-      if (isPassThrough(list.sublist(key)))
-        out << indent << "- `" << key << "`: a sublist. " << entry.docString() << "\n";
-      else
-        out << indent << "- `" << key << "`: a sublist (see below)\n";
-      continue;
-    }
-    out << indent << "- `" << key << "` (default `" << formatValue(entry)
-        << "`): " << entry.docString();
-    if (auto validator = entry.validator(); !validator.is_null()) {
-      if (auto strings = validator->validStringValues(); !strings.is_null()) {
-        std::string choices;
-        for (const auto& c : *strings)
-          choices += (choices.empty() ? "" : ", ") + c;
-        out << ". Choices: " << choices;
-      }
-    }
-    out << "\n";
-  }
-}
-
-template <class RegistryT>
-void describeRegistry(std::ostream& out, const RegistryT& registry, const std::string& section) {
-  out << "### " << section << " — " << registry.axis() << " registry\n\n";
-  for (const auto& name : registry.names()) {
-    const auto& entry = registry.get(name);
-    out << "#### `" << name << "`\n\n" << entry.doc << "\n\n";
-    const auto valid = entry.validParameters();
-    describeList(out, *valid, "");
-    // A law's nested sublists (Temperature Tables) are described under it, with their doc.
-    for (auto it = valid->begin(); it != valid->end(); ++it)
-      if (valid->entry(it).isList() && !isPassThrough(valid->sublist(valid->name(it)))) {
-        out << "\n`" << valid->name(it) << "`: " << valid->entry(it).docString() << "\n\n";
-        describeList(out, valid->sublist(valid->name(it)), "");
-      }
-    out << "\n";
-  }
-}
-
-}  // namespace
-
-std::string sceneReference() {
-  std::ostringstream out;
-  out << "## Sections\n\n";
-  ParameterList dirichlet = dirichletItem(), load = loadItem(), probe = probeItem();
-  out << "### Geometry\n\n";
-  describeList(out, geometrySection(), "");
-  out << "\n### Point Groups/<name>\n\n";
-  describeList(out, pointGroupItem(), "");
-  out << "\n### Dirichlet/<name>\n\n";
-  describeList(out, dirichlet, "");
-  out << "\n### Symmetry/<name>\n\n";
-  describeList(out, symmetryItem(), "");
-  out << "\n### Springs/<name>\n\n";
-  describeList(out, springItem(), "");
-  out << "\n### Loads/<name>\n\n";
-  describeList(out, load, "");
-  out << "\n### Temperature/<block>\n\n";
-  describeList(out, temperatureItem(), "");
-  out << "\n### Contact/<zone>\n\n";
-  describeList(out, contactItem(nullptr, "", "Contact/<zone>"), "");
-  out << "\n### Contact/<zone>/Obstacle\n\n";
-  describeList(out, obstacleItem(), "");
-  out << "\n### Load Steps\n\n";
-  describeList(out, *StaticSolverOptions::validLoadSteps(), "");
-  out << "\n### Newton\n\n";
-  describeList(out, *StaticSolverOptions::validNewton(), "");
-  out << "\n### Algorithm\n\n";
-  describeList(out, *StaticSolverOptions::validAlgorithm(), "");
-  out << "\n### Algorithm/slow-dynamics\n\n";
-  describeList(out, StaticSolverOptions::validAlgorithm()->sublist("slow-dynamics"), "");
-  out << "\n### Initial State\n\n";
-  describeList(out, initialStateSection(), "");
-  out << "\n### Output\n\n";
-  describeList(out, outputSection(nullptr, ""), "");
-  out << "\n### Output/Probes/<name>\n\n";
-  describeList(out, probe, "");
-  out << "\n### Output/Profiles/<name>\n\n";
-  out << "A field along a segment, written after every converged step to "
-         "profile_<name>.csv (the last converged step) and, at each Output/Contact Times "
-         "entry, to profile_<name>_t<time>.csv: columns time, s (the point's distance from "
-         "From), the point, the node read, its distance, then the components.\n\n";
-  describeList(out, profileItem(), "");
-  out << "\n## Registries\n\n";
-  describeRegistry(out, meshSourceRegistry(), "Mesh");
-  describeRegistry(out, materialRegistry(), "Materials/<block>");
-  describeRegistry(out, formulationRegistry(), "Contact/<zone>/Formulation");
-  describeRegistry(out, linearSolverRegistry(), "Linear Solver");
-  return out.str();
+std::vector<SceneSection> sceneSections() {
+  std::vector<SceneSection> sections{
+      {"Geometry", "", geometrySection()},
+      {"Point Groups/<name>", "", pointGroupItem()},
+      {"Dirichlet/<name>", "", dirichletItem()},
+      {"Symmetry/<name>", "", symmetryItem()},
+      {"Springs/<name>", "", springItem()},
+      {"Loads/<name>", "", loadItem()},
+      {"Temperature/<block>", "", temperatureItem()},
+      {"Contact/<zone>", "", contactItem(nullptr, "", "Contact/<zone>")},
+      {"Contact/<zone>/Obstacle", "", obstacleItem()},
+      {"Load Steps", "", *StaticSolverOptions::validLoadSteps()},
+      {"Newton", "", *StaticSolverOptions::validNewton()},
+      {"Algorithm", "", *StaticSolverOptions::validAlgorithm()},
+      {"Algorithm/slow-dynamics", "",
+       StaticSolverOptions::validAlgorithm()->sublist("slow-dynamics")},
+      {"Initial State", "", initialStateSection()},
+      {"Output", "", outputSection(nullptr, "")},
+      {"Output/Probes/<name>", "", probeItem()},
+      {"Output/Profiles/<name>",
+       "A field along a segment, written after every converged step to profile_<name>.csv (the "
+       "last converged step) and, at each Output/Contact Times entry, to "
+       "profile_<name>_t<time>.csv: columns time, s (the point's distance from From), the "
+       "point, the node read, its distance, then the components.",
+       profileItem()}};
+  return sections;
 }
 
 }  // namespace contactlab

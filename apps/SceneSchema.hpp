@@ -7,6 +7,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
+#include <vector>
 
 namespace contactlab {
 
@@ -20,8 +21,14 @@ Teuchos::ParameterList sceneSchema(const Teuchos::ParameterList& scene, const st
 // Validates `scene` in place (unknown keys, types, enumerations) and fills in the defaults.
 void validateScene(Teuchos::ParameterList& scene, const std::string& where);
 
-// Markdown reference of every section and registry, with defaults and doc strings (printed by
-// `contactlab list`; doc/scenes.md embeds it).
-std::string sceneReference();
+// The sections of a scene that are not a registry's, in the reference's order (`contactlab
+// list`, SceneReference.hpp): a heading (the key path, <name> for a user-chosen name), an
+// optional introduction, and the valid list with its defaults and doc strings.
+struct SceneSection {
+  std::string heading;
+  std::string intro;
+  Teuchos::ParameterList valid;
+};
+std::vector<SceneSection> sceneSections();
 
 }  // namespace contactlab

@@ -7,7 +7,7 @@
 //   contactlab critical-mu SCENE [--out DIR] [--set key=value ...]
 //   contactlab study STUDY [--out DIR] [--retry-failed] [--no-plots]
 //   contactlab batch [--quiet] < RUNS
-//   contactlab list
+//   contactlab list [AXIS]
 //   contactlab --version
 //   contactlab help [COMMAND], contactlab COMMAND --help
 #include "contactlab/Version.hpp"
@@ -15,7 +15,7 @@
 #include "apps/BatchCommand.hpp"
 #include "apps/CommandErrors.hpp"
 #include "apps/RunCommand.hpp"
-#include "apps/SceneSchema.hpp"
+#include "apps/SceneReference.hpp"
 #include "base/InputError.hpp"
 #include "core/io/Interruption.hpp"
 
@@ -51,7 +51,9 @@ const char* kUsage =
     "  batch [--quiet]     run the scenes listed on stdin one after another in this\n"
     "                      process (a line a run: OUT<tab>SCENE<tab>key=value...; what the\n"
     "                      study runner uses)\n"
-    "  list                every registry with its parameters, defaults and doc strings\n"
+    "  list [AXIS]         the scene's sections and every registry, with parameters, defaults\n"
+    "                      and doc strings; AXIS: one of them (sections, mesh, material,\n"
+    "                      element-technology, formulation, discretization, linear-solver)\n"
     "  --version           print the version\n"
     "  help [COMMAND]      this text, or a command's (also COMMAND --help)\n"
     "\n"
@@ -70,9 +72,11 @@ const char* commandHelp(const std::string& command) {
            "  --set Mesh/rectangle/nx=20 --set 'Algorithm/Method=fixed-point'\n"
            "Exit code 0 converged, 1 a numerical failure (named in summary.json), 2 bad input,\n"
            "128 + signal when interrupted. Progress: a line per Newton iterate and per step on\n"
-           "stderr (on a terminal, a live line with the ETA); --quiet drops it. The same lines\n"
-           "go to DIR/progress.log in any case (tail -f it to follow a quiet run). Scene keys:\n"
-           "`contactlab list`, doc/scenes.md.\n"
+           "stderr (on a terminal, a live line with the ETA); --quiet drops it and the other\n"
+           "informational lines (the model's size, automatic coefficients, removed files),\n"
+           "keeping warnings, errors and the closing lines. The progress lines go to\n"
+           "DIR/progress.log in any case (tail -f it to follow a quiet run). Scene keys:\n"
+           "`contactlab list [AXIS]`, doc/scenes.md.\n"
            "A run writes DIR/checkpoint.h5 after each converged step (Output/Checkpoint Every).\n"
            "--restart DIR continues a killed run from it to the scene's End Time, appending to\n"
            "DIR's outputs (same scene and --set values required; a scene whose values changed\n"
@@ -111,10 +115,13 @@ const char* commandHelp(const std::string& command) {
            "(the same results to the solver's tolerance). One rank. `contactlab study` runs\n"
            "its cases through it (doc/studies.md).\n";
   if (command == "list")
-    return "usage: contactlab list\n"
+    return "usage: contactlab list [AXIS]\n"
            "\n"
-           "Prints every registry (meshes, materials, loads, formulations, algorithms, linear\n"
-           "solvers) with its parameters, defaults and doc strings, as in doc/scenes.md.\n";
+           "Prints the scene's sections (geometry, loads, contact zones, algorithm, output...)\n"
+           "and every registry (meshes, materials, element technologies, formulations,\n"
+           "contact discretizations, linear solvers) with their parameters, defaults and doc\n"
+           "strings, as in doc/scenes.md. AXIS prints one part: sections, mesh, material,\n"
+           "element-technology, formulation, discretization or linear-solver.\n";
   return nullptr;
 }
 
@@ -156,8 +163,14 @@ int answerBeforeStartup(int argc, char** argv) {
       return 0;
     }
   if (command == "list") {
-    contactlab::registerAll();
-    std::cout << "# contactlab scene reference\n\n" << contactlab::sceneReference();
+    if (args.size() > 2) return usageError("list takes one AXIS at most ('" + args[2] + "')");
+    try {
+      const std::string reference = contactlab::sceneReference(args.size() == 2 ? args[1] : "");
+      std::cout << (args.size() == 2 ? "" : "# contactlab scene reference\n\n") << reference;
+    } catch (const contactlab::InputError& e) {
+      std::cerr << "contactlab: error: " << e.what() << "\n";
+      return 2;
+    }
     return 0;
   }
   return -1;  // run, validate, critical-mu, study, batch
@@ -208,6 +221,9 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
     const std::string& a = args[i];
     if ((a == "--out" || a == "--set" || a == "--restart") && i + 1 >= args.size())
       return root ? usageError(a + " needs a value") : 2;
+    // An empty folder would be taken for none given (the scene's folder, or no restart).
+    if ((a == "--out" || a == "--restart") && args[i + 1].empty())
+      return root ? usageError(a + " needs a folder, not an empty value") : 2;
     if (a == "--quiet" || a == "-q")
       options.quiet = true;
     else if (a == "--out")

@@ -1,18 +1,19 @@
 #include "apps/output/CriticalMuSummary.hpp"
 
 #include "algorithms/PatternCriticalFriction.hpp"
+#include "algorithms/UniquenessVerdict.hpp"
 #include "base/Elapsed.hpp"
+#include "base/NumberText.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <string>
 
 namespace contactlab {
 
 JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const Vector& x,
-                            double t, int convergedSteps, const Teuchos::RCP<const Comm>& comm) {
-  const bool root = comm->getRank() == 0;
+                            double t, int convergedSteps, const Teuchos::RCP<const Comm>& comm,
+                            const Console& console) {
   std::string why;
   if (!contact)
     why = "the scene has no contact";
@@ -21,7 +22,7 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
   else if (convergedSteps == 0)
     why = "no load step converged";
   if (!why.empty()) {
-    if (root) std::cout << "contactlab: critical-mu: not computed: " << why << "\n";
+    console.result("contactlab: critical-mu: not computed: " + why);
     return JsonValue::object().set("computed", false).set("reason", why);
   }
   // The scene's solver with determinants (their signs decide local uniqueness).
@@ -33,36 +34,28 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
   for (const auto& zone : sm.contact)
     if (zone.friction > 0)
       zones.set(zone.name, std::isinf(c.scale) ? JsonValue() : JsonValue(zone.friction * c.scale));
-  const std::string verdict = c.singularPatterns > 0 ? "possibly non-unique (a singular Jacobian)"
-                              : !c.sameSign          ? "possibly non-unique"
-                                                     : "locally unique";
-  if (root) {
-    std::cout << "contactlab: critical-mu: converged state at t = " << t << ": "
-              << c.ambiguousPoints << " ambiguous point(s), " << c.patterns
-              << " status pattern(s) examined (" << c.choice << "; " << c.updatedPatterns
-              << " by updates of the converged pattern's factorization): " << verdict;
-    if (!c.sameSign && !c.breakingPattern.empty())
-      std::cout << "; the sign changes at " << c.breakingPattern;
-    std::cout << "\n";
-    const auto factor = [](double s) {
-      return std::isinf(s) ? std::string("none") : std::to_string(s);
-    };
-    std::cout << "contactlab: critical-mu: critical factor of the adjacent patterns "
-              << factor(c.localScale) << ", of the contact set slipping " << factor(c.slipScale)
-              << "\n";
-    if (std::isinf(c.scale)) {
-      std::cout << "contactlab: critical-mu: no critical mu (det J(s mu) has no positive real "
-                   "root on these patterns)\n";
-    } else {
-      std::cout << "contactlab: critical-mu: critical factor " << c.scale << " on mu";
-      for (const auto& zone : sm.contact)
-        if (zone.friction > 0)
-          std::cout << "; " << zone.name << ": mu = " << zone.friction
-                    << ", mu_crit = " << zone.friction * c.scale
-                    << (c.scale <= 1.0 ? " (mu >= mu_crit: possibly non-unique)" : "");
-      std::cout << "\n";
-    }
+  const UniquenessVerdict verdict = uniquenessVerdict(c);
+  const auto factor = [](double s) { return std::isinf(s) ? std::string("none") : numberText(s); };
+  console.info("critical-mu: converged state at t = " + numberText(t) + ": " +
+               std::to_string(c.ambiguousPoints) + " ambiguous point(s), " +
+               std::to_string(c.patterns) + " status pattern(s) examined (" + c.choice + "; " +
+               std::to_string(c.updatedPatterns) +
+               " by updates of the converged pattern's factorization)");
+  console.info("critical-mu: critical factor on mu of the adjacent patterns " +
+               factor(c.localScale) + ", of the contact set slipping " + factor(c.slipScale));
+  if (std::isinf(c.scale)) {
+    console.result(
+        "contactlab: critical-mu: no critical mu (det J(s mu) has no positive real "
+        "root on these patterns)");
+  } else {
+    std::string line = "contactlab: critical-mu: critical factor " + numberText(c.scale) + " on mu";
+    for (const auto& zone : sm.contact)
+      if (zone.friction > 0)
+        line += "; " + zone.name + ": mu = " + numberText(zone.friction) +
+                ", mu_crit = " + numberText(zone.friction * c.scale);
+    console.result(line);
   }
+  console.result("contactlab: critical-mu: " + verdict.verdict + ": " + verdict.reason);
   JsonValue out =
       JsonValue::object()
           .set("computed", true)
@@ -73,7 +66,8 @@ JsonValue criticalMuSummary(const SceneModel& sm, ContactProblem* contact, const
           .set("patterns_examined", c.patterns)
           .set("patterns_updated", c.updatedPatterns)
           .set("pattern_choice", c.choice)
-          .set("verdict", verdict)
+          .set("verdict", verdict.verdict)
+          .set("verdict_reason", verdict.reason)
           .set("singular_patterns", c.singularPatterns)
           .set("breaking_pattern",
                c.breakingPattern.empty() ? JsonValue() : JsonValue(c.breakingPattern))

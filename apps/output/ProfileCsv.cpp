@@ -29,7 +29,7 @@ std::vector<std::string> columns(const Profile& p, int dim) {
 
 ProfileCsv::ProfileCsv(const SceneModel& sm, const Problem& problem) : sm_(sm), problem_(problem) {}
 
-void ProfileCsv::write(const std::string& dir, const std::string& suffix, const Vector& u,
+void ProfileCsv::write(OutputManifest& folder, const std::string& suffix, const Vector& u,
                        double t) const {
   const bool root = u.getMap()->getComm()->getRank() == 0;
   const int dim = problem_.dim();
@@ -65,7 +65,7 @@ void ProfileCsv::write(const std::string& dir, const std::string& suffix, const 
       }
       table.addRow(row);
     }
-    if (root) table.write(dir + "/profile_" + p.name + suffix + ".csv");
+    if (root) table.write(folder.path("profile_" + p.name + suffix + ".csv"));
   }
 }
 

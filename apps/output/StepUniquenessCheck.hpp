@@ -2,9 +2,10 @@
 // Output/Critical Mu Check: after each converged step, the uniqueness check of `contactlab
 // critical-mu` on that step's state, with a second instance of the scene's linear solver that
 // computes determinants (their signs decide local uniqueness). Gives steps.csv the smallest
-// critical mu over the frictional zones, and warns on rank 0 when the state is possibly
-// non-unique.
+// critical mu over the frictional zones, and warns when the state is possibly non-unique (the
+// verdict of `critical-mu`, uniquenessVerdict).
 #include "algorithms/StaticSolver.hpp"
+#include "apps/Console.hpp"
 #include "apps/SceneModel.hpp"
 #include "formulations/ContactProblem.hpp"
 #include "linear/LinearSolver.hpp"
@@ -19,7 +20,7 @@ class StepUniquenessCheck {
   // Builds the solver (collective); the scene's solver must compute determinants
   // (requireDeterminantSolver).
   StepUniquenessCheck(const SceneModel& sm, ContactProblem& contact,
-                      const Teuchos::RCP<const Comm>& comm);
+                      const Teuchos::RCP<const Comm>& comm, const Console& console);
 
   // Collective. The steps.csv cell of the converged state x of `step`: mu_crit, "inf" (no
   // critical mu) or "singular" (a Jacobian the solver could not factor).
@@ -31,7 +32,7 @@ class StepUniquenessCheck {
  private:
   const SceneModel& sm_;
   ContactProblem& contact_;
-  const bool root_;
+  const Console console_;
   std::unique_ptr<LinearSolver> solver_;
   int possiblyNonUnique_ = 0;
 };

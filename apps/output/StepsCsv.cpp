@@ -40,8 +40,8 @@ std::vector<std::string> stepColumns(bool criticalMuColumn) {
 
 }  // namespace
 
-StepsCsv::StepsCsv(std::string path, bool criticalMuColumn)
-    : path_(std::move(path)), table_(stepColumns(criticalMuColumn)) {}
+StepsCsv::StepsCsv(OutputManifest& folder, bool criticalMuColumn)
+    : folder_(folder), table_(stepColumns(criticalMuColumn)) {}
 
 void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
                        std::optional<double> condition,
@@ -87,25 +87,27 @@ void StepsCsv::addStep(const StepReport& s, const ContactResultants& cr,
 
 void StepsCsv::resume(std::int64_t rows) {
   // Rows are single lines: no cell of steps.csv holds a line break.
-  std::ifstream in(path_);
+  const std::string path = folder_.folder() + "/" + kFileName;
+  std::ifstream in(path);
   std::string line;
   std::getline(in, line);  // the header, written again by write()
   std::int64_t n = 0;
   for (; n < rows && std::getline(in, line); ++n)
     earlierRows_ += line + "\n";
   if (n < rows)
-    throw std::runtime_error(path_ + ": " + std::to_string(n) +
+    throw std::runtime_error(path + ": " + std::to_string(n) +
                              " step rows, the checkpoint counts " + std::to_string(rows));
 }
 
-void StepsCsv::write() const {
+void StepsCsv::write() {
+  const std::string path = folder_.path(kFileName);
   if (earlierRows_.empty()) {
-    table_.write(path_);
+    table_.write(path);
     return;
   }
   const std::string table = table_.str();
   const std::size_t header = table.find('\n') + 1;
-  writeFileAtomically(path_, [&](std::ostream& out) {
+  writeFileAtomically(path, [&](std::ostream& out) {
     out << table.substr(0, header) << earlierRows_ << table.substr(header);
   });
 }

@@ -7,6 +7,7 @@
 // the rows of every converged step.
 #include "algorithms/StaticSolver.hpp"
 #include "core/io/CsvWriter.hpp"
+#include "core/io/OutputManifest.hpp"
 #include "formulations/ContactProblem.hpp"
 
 #include <optional>
@@ -16,8 +17,11 @@ namespace contactlab {
 
 class StepsCsv {
  public:
+  static constexpr const char* kFileName = "steps.csv";
+
   // criticalMuColumn: the run checks uniqueness after each step (Output/Critical Mu Check).
-  StepsCsv(std::string path, bool criticalMuColumn);
+  // The file is `folder`'s steps.csv, listed in its manifest when first written.
+  StepsCsv(OutputManifest& folder, bool criticalMuColumn);
 
   // One converged step. contactSeconds: the contact problem's timers since the start (none
   // without contact); the row gets this step's share of each, and assembly_s is the solid's
@@ -34,13 +38,13 @@ class StepsCsv {
   void resume(std::int64_t rows);
 
   // Writes the file; call on rank 0 only.
-  void write() const;
+  void write();
 
   // The largest condition estimate of the rows, < 0 when the solver gave none.
   double maxConditionEstimate() const { return maxCondition_; }
 
  private:
-  const std::string path_;
+  OutputManifest& folder_;
   CsvWriter table_;
   std::string earlierRows_;   // resume(): the earlier run's rows, as written
   ContactPhaseSeconds last_;  // the contact problem's timers at the previous row

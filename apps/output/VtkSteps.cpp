@@ -1,11 +1,10 @@
 #include "apps/output/VtkSteps.hpp"
 
 #include <algorithm>
-#include <utility>
 
 namespace contactlab {
 
-VtkSteps::VtkSteps(std::string folder, MPI_Comm comm) : folder_(std::move(folder)), comm_(comm) {}
+VtkSteps::VtkSteps(OutputManifest& folder, MPI_Comm comm) : folder_(folder), comm_(comm) {}
 
 void VtkSteps::writeRest(const Problem& problem, const ContactProblem* contact) {
   const auto u = problem.createVector();
@@ -35,7 +34,9 @@ void VtkSteps::writeFrame(double time, MeshPiece piece, const Problem& problem) 
   for (std::int64_t node : problem.dofs().overlapNodes())
     ids.values.push_back(static_cast<double>(mesh.nodeId(node)));
   piece.pointData.push_back(std::move(ids));
-  if (!series_) series_ = std::make_unique<VtkSeriesWriter>(folder_, "result", comm_);
+  if (!series_) series_ = std::make_unique<VtkSeriesWriter>(folder_.folder(), "result", comm_);
+  // Listed by rank 0 before writeStep's first collective, so before any rank writes.
+  folder_.add(series_->fileNames(series_->numSteps()));
   series_->writeStep(time, piece);
 }
 
@@ -45,7 +46,7 @@ std::optional<std::string> VtkSteps::pvdPath() const {
 }
 
 void VtkSteps::resume(int frames) {
-  series_ = std::make_unique<VtkSeriesWriter>(folder_, "result", comm_);
+  series_ = std::make_unique<VtkSeriesWriter>(folder_.folder(), "result", comm_);
   series_->resume(frames);
 }
 

@@ -6,6 +6,7 @@
 // gmsh node tag of a mesh file, index + 1 for a generated mesh; contact.csv's node column). A
 // run that converges no step leaves the rest frame alone in the series.
 #include "base/LinearAlgebra.hpp"
+#include "core/io/OutputManifest.hpp"
 #include "core/io/VtkSeriesWriter.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
@@ -18,7 +19,8 @@ namespace contactlab {
 
 class VtkSteps {
  public:
-  VtkSteps(std::string folder, MPI_Comm comm);
+  // The files go to `folder`, each listed in its manifest before it is written.
+  VtkSteps(OutputManifest& folder, MPI_Comm comm);
 
   // Collective. The rest frame at t = 0: zero displacement (so zero stresses), and with
   // contact the same point fields as a step's, all zero (every point free). Call once, before
@@ -41,7 +43,7 @@ class VtkSteps {
  private:
   void writeFrame(double time, MeshPiece piece, const Problem& problem);
 
-  const std::string folder_;
+  OutputManifest& folder_;
   const MPI_Comm comm_;
   std::unique_ptr<VtkSeriesWriter> series_;
 };

@@ -244,6 +244,9 @@ def main():
     except study_file.StudyError as e:
         print(f"contactlab: error: {e}", file=sys.stderr)
         return 2
+    if args.out == "":
+        print("contactlab: error: --out needs a folder, not an empty value", file=sys.stderr)
+        return 2
     out = os.path.abspath(args.out or f"study-{study['Name']}")
     os.makedirs(os.path.join(out, "runs"), exist_ok=True)
     todo = study_file.cases(study)

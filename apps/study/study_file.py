@@ -23,8 +23,9 @@ KEYS = {
     "Reference": "accuracy reference: {Type: analytic, Name: hertz-2d, ...parameters}, "
                  "{Type: run, Sets: [...]} (a run of the base scene, usually the finest and "
                  "tightest settings) or {Type: none}",
-    "Accuracy Target": "relative L2 pressure error the recommendation asks for (default 0.05)",
-    "Zone": "contact zone whose pressure is compared (default: every zone)",
+    "Accuracy Target": "relative L2 error the recommendation asks for: the pressure's, or the "
+                       "shear traction's for a shear-only reference (default 0.05)",
+    "Zone": "contact zone whose tractions are compared (default: every zone)",
     "Process Per Run": "true: each run is a `contactlab run` process of its own; default "
                        "false: the runs share one `contactlab batch` process (the start-up "
                        "paid once; a run takes the last run's linear solver, whose factors it "
@@ -73,6 +74,11 @@ def read_study(path):
                          + ", ".join(KEYS))
     if "Name" not in s or "Scene" not in s:
         raise StudyError(f"{path}: 'Name' and 'Scene' are required")
+    name = str(s["Name"])
+    if not name.strip() or "/" in name or ".." in name or any(ord(c) < 32 for c in name):
+        raise StudyError(f"{path}: Name {name!r} cannot name the output folder study-<Name>: give "
+                         "a plain name, without '/', '..' or control characters (such as "
+                         "'hertz-2d')")
     s["Scene"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)),
                                                str(s["Scene"])))
     if not os.path.exists(s["Scene"]):

@@ -118,10 +118,11 @@ def run_contactlab(exe, work, msh, delta):
               for r in csv.DictReader(open(os.path.join(out, "contact.csv")))]
     u = summary["unknowns"]
     mode = summary["linear_solver"]["parameters"]["Mode"]
-    rn = re.search(r"r_n = E / h = (\S+)", done.stdout)
+    rn = next((z.get("automatic_normal_augmentation") for z in
+               (summary.get("formulation") or {}).values()), None)
     return dict(program="contactlab",
                 settings=f"defaults: augmented Lagrangian (automatic r_n = "
-                         f"{rn.group(1) if rn else '?'}), {summary['discretization']['floor']}, "
+                         f"{f'{rn:g}' if rn else '?'}), {summary['discretization']['floor']}, "
                          f"{summary['algorithm']['method']}, MUMPS {mode}",
                 dofs=f"{u['displacement']} + {u['contact_multipliers']}",
                 newton=summary["iterations"]["newton"], wall=wall, cpu=cpu, mib=mib,

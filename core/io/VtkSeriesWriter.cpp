@@ -124,6 +124,15 @@ std::string VtkSeriesWriter::pieceFileName(int step, int rank) const {
   return baseName_ + number;
 }
 
+std::vector<std::string> VtkSeriesWriter::fileNames(int step) const {
+  std::vector<std::string> names{stepFileName(step)};
+  if (size_ > 1)
+    for (int r = 0; r < size_; ++r)
+      names.push_back(pieceFileName(step, r));
+  names.push_back(baseName_ + ".pvd");
+  return names;
+}
+
 void VtkSeriesWriter::writeStep(double time, const MeshPiece& piece) {
   const int step = numSteps();
   const std::string piecePath =

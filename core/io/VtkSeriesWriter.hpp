@@ -40,6 +40,9 @@ class VtkSeriesWriter {
   void resume(int frames);
 
   int numSteps() const { return static_cast<int>(steps_.size()); }
+  // The names of the files writeStep(step) writes on every rank (the .vtu or .pvtu, each
+  // rank's piece, the .pvd), in the directory.
+  std::vector<std::string> fileNames(int step) const;
   std::string pvdPath() const;
   // Path of the file the .pvd names for `step` (.vtu on 1 rank, .pvtu on several).
   std::string stepPath(int step) const;

@@ -1,5 +1,6 @@
 #include "core/mesh/GmshReader.hpp"
 
+#include "core/mesh/GeoScriptCheck.hpp"
 #include "core/mesh/GmshExtract.hpp"
 #include "core/mesh/GmshModel.hpp"
 
@@ -30,6 +31,8 @@ Mesh readGmshFile(const std::string& path, double sizeFactor, int elementOrder) 
   if (!(sizeFactor > 0) || elementOrder < 0 || elementOrder > 2)
     throw std::invalid_argument("mesh file '" + path +
                                 "': Size Factor must be > 0 and Element Order 0, 1 or 2");
+  // A script that would write, run a program or end the process is refused before it runs.
+  if (script) checkGeoScript(path);
   const std::string label = "mesh file '" + path + "'";
   return inGmshModel("gmsh could not " + std::string(script ? "mesh " : "read ") + label, [&] {
     gmsh::merge(path);

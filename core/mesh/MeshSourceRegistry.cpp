@@ -69,7 +69,9 @@ RCP<const ParameterList> fileParameters() {
   auto p = Teuchos::rcp(new ParameterList("file"));
   p->set("Path", "",
          "gmsh .msh file (format 4 or 2.2), or a gmsh .geo script that contactlab meshes with "
-         "its own Mesh options; relative to the scene file's folder");
+         "its own Mesh options (a script, or one it includes, that writes a file, runs a "
+         "program or exits is refused: doc/scenes.md, The output folder); relative to the "
+         "scene file's folder");
   p->set("Size Factor", 1.0,
          ".geo only: scales every element size of the script (gmsh's Mesh.MeshSizeFactor; "
          "0.5 halves them), for a mesh-convergence study with --set (> 0)");

@@ -46,6 +46,20 @@ assert abs(last - crit) <= 1e-8 * crit, (last, crit)
 check = json.load(open(os.path.join(out, "summary.json")))["critical_mu_check"]
 assert check == {"steps_checked": len(rows), "possibly_non_unique": 0}, check
 
+# One verdict from both checks (doc/algorithms.md, "The verdict"): the pad is below its critical
+# mu with agreeing signs; the strut at mu = 1 is above its mu_crit = 0.618 while the signs around
+# its state agree, and three states were found there: possibly non-unique, said once.
+assert one["verdict"] == "locally unique", one
+out = os.path.join(work, "strut-2d")
+shutil.rmtree(out, ignore_errors=True)
+_, r = contactlab_run(exe, os.path.join(scenes, "strut-2d.yaml"), out, timeout=300,
+                      command="critical-mu")
+strut = json.load(open(os.path.join(out, "summary.json")))["critical_mu"]
+print("strut-2d:", strut)
+assert strut["verdict"] == "possibly non-unique" and "mu_crit" in strut["verdict_reason"], strut
+said = [line for line in r.stdout.splitlines() if "unique" in line]
+assert len(said) == 1 and said[0].count("unique") == 1, r.stdout
+
 frictionless = run("hertz-2d", 1)
 print("hertz-2d:", frictionless)
 assert frictionless["computed"] is False and "friction" in frictionless["reason"]

@@ -35,34 +35,39 @@ std::string column(const std::vector<std::vector<std::string>>& rows, int row,
   return {};
 }
 
+// A folder of this process's own.
 std::string scratch(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          ("contactlab-" + std::to_string(::getpid()) + "-" + name))
-      .string();
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                       ("contactlab-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::create_directories(folder);
+  return folder.string();
 }
 
 TEST(StepsCsv, CriticalMuColumnOnlyWhenTheCheckRuns) {
-  const std::string with = scratch("with.csv"), without = scratch("without.csv");
-  StepsCsv a(with, true), b(without, false);
+  const std::string with = scratch("with"), without = scratch("without");
+  OutputManifest withFolder(with, true), withoutFolder(without, true);
+  StepsCsv a(withFolder, true), b(withoutFolder, false);
   StepReport s;
   s.step = 1;
   a.addStep(s, {}, std::nullopt, std::nullopt, std::string("inf"));
   b.addStep(s, {}, std::nullopt, std::nullopt, std::nullopt);
   a.write();
   b.write();
-  const auto ra = readCsv(with), rb = readCsv(without);
+  const auto ra = readCsv(with + "/steps.csv"), rb = readCsv(without + "/steps.csv");
   EXPECT_EQ(ra[0].back(), "critical_mu");
   EXPECT_EQ(column(ra, 1, "critical_mu"), "inf");
   EXPECT_EQ(ra[0].size(), rb[0].size() + 1);
   EXPECT_EQ(rb[0].back(), "linear_solve_s");
-  std::filesystem::remove(with);
-  std::filesystem::remove(without);
+  EXPECT_EQ(*OutputManifest::read(with), std::vector<std::string>{"steps.csv"});
+  std::filesystem::remove_all(with);
+  std::filesystem::remove_all(without);
 }
 
 // The force history: sum w p and the vector sum of the normal and tangential forces.
 TEST(StepsCsv, ContactForceColumns) {
-  const std::string path = scratch("force.csv");
-  StepsCsv csv(path, false);
+  const std::string folder = scratch("force");
+  OutputManifest manifest(folder, true);
+  StepsCsv csv(manifest, false);
   StepReport s;
   s.step = 1;
   ContactResultants r;
@@ -71,12 +76,12 @@ TEST(StepsCsv, ContactForceColumns) {
   r.tangentialForce = {1.5, 0.25, 0.125};
   csv.addStep(s, r, std::nullopt, std::nullopt, std::nullopt);
   csv.write();
-  const auto rows = readCsv(path);
+  const auto rows = readCsv(folder + "/steps.csv");
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "normal_force")), 5.0);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_x")), 2.0);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_y")), 0.25);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "contact_force_z")), -3.875);
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(folder);
 }
 
 // The contact problem's timers are cumulated over the run: each row gets its step's share of
@@ -84,8 +89,9 @@ TEST(StepsCsv, ContactForceColumns) {
 // contact terms taken out of the Newton solves' assembly seconds came out negative where contact
 // was evaluated outside them). Without contact, assembly_s is the step's assembly seconds.
 TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
-  const std::string path = scratch("phases.csv");
-  StepsCsv csv(path, false);
+  const std::string folder = scratch("phases");
+  OutputManifest manifest(folder, true);
+  StepsCsv csv(manifest, false);
   StepReport s;
   s.step = 1;
   s.seconds.assembly = 0.001;  // a step's Newton assemblies: not what the contact rows print
@@ -95,7 +101,7 @@ TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
   s.seconds.assembly = 5.0;
   csv.addStep(s, {}, std::nullopt, std::nullopt, std::nullopt);
   csv.write();
-  const auto rows = readCsv(path);
+  const auto rows = readCsv(folder + "/steps.csv");
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "pairing_s")), 1.0);
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 1, "assembly_s")), 3.0);
@@ -107,7 +113,7 @@ TEST(StepsCsv, PhaseSecondsAreEachStepsShare) {
   EXPECT_DOUBLE_EQ(std::stod(column(rows, 3, "pairing_s")), 0.0);
   EXPECT_EQ(column(rows, 3, "condition_estimate"), "");
   EXPECT_DOUBLE_EQ(csv.maxConditionEstimate(), 30.0);
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
