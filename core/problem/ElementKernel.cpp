@@ -180,6 +180,12 @@ void ElementKernel::quadraturePoints(const double* x, double* points) const {
     interpolatePosition(numNodes_, x, &N_[q * numNodes_], points + 3 * q);
 }
 
+void ElementKernel::referencePoints(double* points) const {
+  for (int q = 0; q < numPoints_; ++q)
+    for (int i = 0; i < 3; ++i)
+      points[3 * q + i] = i < dim_ ? rule_->points[q * dim_ + i] : 0.0;
+}
+
 void ElementKernel::pointMeasures(const double* x, double* measures) const {
   for (int q = 0; q < numPoints_; ++q)
     measures[q] = measure(q, x);

@@ -64,6 +64,8 @@ class ElementKernel {
 
   // Physical coordinates of the quadrature points, 3 per point.
   void quadraturePoints(const double* x, double* points) const;
+  // Reference coordinates of the quadrature points, 3 per point (zeros beyond dim()).
+  void referencePoints(double* points) const;
   // Quadrature weight times det J at each point (numQuadraturePoints() values).
   void pointMeasures(const double* x, double* measures) const;
   double volume(const double* x) const;

@@ -35,13 +35,14 @@ void ProjectedDilatationKernel::evaluate(const double* x, const double* u, const
   double volume = 0.0;
 
   // The points' gradients, measures and positions; the pressure space over them.
-  double dNdx[P][kMaxNodes * 3], w[P], points[3 * P];
+  double dNdx[P][kMaxNodes * 3], w[P], points[3 * P], xi[3 * P];
   for (int q = 0; q < nq; ++q) {
     w[q] = gradients(q, x, dNdx[q]);
     interpolatePosition(n, x, &N_[q * n], &points[3 * q]);
   }
+  referencePoints(xi);
   PressureSpace space(pressureDegree_, dim_);
-  space.setElement(nq, points, w);
+  space.setElement(nq, xi, w);
   const int np = space.size();
 
   // theta_bar = sum_i psi_i beta_i . u, beta_i = sum_q weight(i, q) b_q, b_q = m^T B_q.

@@ -85,10 +85,9 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
     for (int k = 0; k < nd; ++k)
       p.c[k] = 0.0;
     op.addTransposeProduct(g, 1.0, p.c);
-    for (int i = 0; i < 3; ++i)
-      points[3 * q + i] = p.X[i];
     measures[q] = p.w;
   }
+  referencePoints(points);
   const double nv = op.volumetricCount;
   PressureSpace space(pressureDegree_, dim_);
   space.setElement(nq, points, measures);
