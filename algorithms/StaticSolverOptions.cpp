@@ -46,9 +46,11 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
          "Newton iterations allowed per Newton solve (>= 1); a step runs "
          "one solve per fixed-point iteration");
   p->set("Relative Tolerance", 1e-8,
-         "Converged when ||R|| <= Relative Tolerance * ||R at the step's first iterate|| and no "
-         "contact status changed at the last iterate; a step that holds the load (its first "
-         "||R|| below 1e-3 of the last loaded step's) is measured against 1e-3 of that one's");
+         "Converged when ||R|| <= Relative Tolerance * the larger of ||R at the step's first "
+         "iterate|| and the norm of the internal forces there (the loads and the reactions "
+         "that balance them), and no contact status changed at the last iterate; a step that "
+         "holds the load (its first ||R|| below 1e-3 of the last loaded step's) is measured "
+         "against 1e-3 of that one's at least");
   p->set("Absolute Tolerance", 1e-12, "... or when ||R|| <= Absolute Tolerance");
   p->set("Geometry Tolerance", 1e-6,
          "Contact: the geometric fixed point has converged when the residual at the updated "

@@ -316,8 +316,8 @@ ParameterList materialItem(const ParameterList& user, const std::string& where,
            "How the block's elements form the strain their material sees (one of: automatic, " +
                elementTechnologyRegistry().joinedNames() +
                "). 'automatic' takes a locking-free one where the volume barely changes "
-               "(plastic flow, or nu >= 0.45): b-bar (small strain) or f-bar (finite strain) on "
-               "quad4/hex8, mixed-up on quadratic cells; and full integration elsewhere (plane "
+               "(plastic flow, or nu >= 0.45): b-bar on quad4/hex8 in small strain, mixed-up "
+               "otherwise; and full integration elsewhere (plane "
                "stress, tri3/tet4, compressible elastic laws). doc/scenes.md, 'Element "
                "technology'",
            choices(technologies));

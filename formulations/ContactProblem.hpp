@@ -64,6 +64,7 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // Over the displacement part of dx (multipliers and slave normals are not lengths).
   double largestDisplacement(const Vector& dx) const override;
   double modelSize() const override { return solid_.modelSize(); }
+  double internalForceNorm() const override { return solid_.internalForceNorm(); }
   void assemble(const Vector& x, double t, Vector* residual, bool withTangent) override;
   const Teuchos::RCP<Matrix>& tangent() const override;
   AssemblyFailure assemblyFailure() const override;

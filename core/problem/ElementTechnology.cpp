@@ -160,8 +160,11 @@ AutomaticChoice chooseAutomatic(const Material& material, const ElementSetting& 
     return {"full", why + ", but " + typeName(setting.type) +
                         " cells lock under every technology here: prefer tri6/tet10 or "
                         "quadrilaterals/hexahedra"};
-  if (!isLinearQuadOrHex(setting.type)) return {"mixed-up", why};
-  return {setting.kinematics == Kinematics::SmallStrain ? "b-bar" : "f-bar", why};
+  // Finite strain takes the three-field mixed-up (Q1/P0) rather than f-bar: symmetric, and f-bar
+  // inverts elements of a block squeezed by a third (scenes/polyurethane-block-2d.yaml).
+  if (!isLinearQuadOrHex(setting.type) || setting.kinematics != Kinematics::SmallStrain)
+    return {"mixed-up", why};
+  return {"b-bar", why};
 }
 
 BlockTechnology resolveBlockTechnology(const std::string& block, const std::string& requested,

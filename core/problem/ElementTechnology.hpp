@@ -58,10 +58,11 @@ void registerElementTechnologies();
 
 // The technology `automatic` picks, and why (for the run's log and summary.json): where the
 // material's volume barely changes (plastic flow, which is isochoric, or nu >= 0.45 at rest) a
-// locking-free one — b-bar (small strain) or f-bar (finite strain) on quad4 and hex8, mixed-up
-// on quadratic cells — and full integration elsewhere: in plane stress (the thickness takes up
-// the volume change), on linear simplices (tri3 and tet4 lock under any of them) and for every
-// compressible elastic law, so that those blocks assemble what they always did.
+// locking-free one — b-bar on quad4 and hex8 in small strain, mixed-up otherwise (f-bar only
+// when asked: it is unsymmetric and inverts elements under strong compression) — and full
+// integration elsewhere: in plane stress (the thickness takes up the volume change), on linear
+// simplices (tri3 and tet4 lock under any of them) and for every compressible elastic law, so that
+// those blocks assemble what they always did.
 struct AutomaticChoice {
   std::string technology;
   std::string reason;

@@ -53,6 +53,10 @@ class NonlinearSystem {
   // Assembles R(x, t) into `residual` (if not null) and dR/dx into tangent() when requested.
   virtual void assemble(const Vector& x, double t, Vector* residual, bool withTangent) = 0;
   virtual const Teuchos::RCP<Matrix>& tangent() const = 0;
+  // The norm of the internal forces of the last assemble() with a residual, over every dof
+  // (constrained ones too): at equilibrium, the loads and the reactions that balance them. What
+  // a residual is small against, whatever the increment (0: unknown).
+  virtual double internalForceNorm() const { return 0; }
   // Same on every rank (collective inside assemble()).
   virtual AssemblyFailure assemblyFailure() const { return {}; }
   // True when the tangent's sparsity pattern changed since the last call (the linear solver

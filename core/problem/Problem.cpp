@@ -532,6 +532,13 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   Vector rOverlap(dofs_->overlapMap());
   {
     auto data = rOverlap.getDataNonConst(0);
+    std::copy(r.begin(), r.end(), data.begin());
+  }
+  residual->putScalar(0.0);
+  residual->doExport(rOverlap, *exporter_, Tpetra::ADD);
+  internalForceNorm_ = residual->norm2();
+  {
+    auto data = rOverlap.getDataNonConst(0);
     for (std::size_t i = 0; i < r.size(); ++i)
       data[i] = r[i] - fext[i];
   }

@@ -93,6 +93,7 @@ class Problem : public NonlinearSystem {
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
   AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
+  double internalForceNorm() const override { return internalForceNorm_; }
   // Reactions of the Dirichlet conditions (those of the symmetry planes normal to an axis
   // among them), then of the inclined symmetry planes, at the last assemble() with a residual,
   // plus what addToReactions added since (the contact forces at supported nodes).
@@ -231,6 +232,7 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<Import> importer_;
   std::vector<Reaction> reactions_, springForces_;
   AssemblyFailure assemblyFailure_;
+  double internalForceNorm_ = 0;
 };
 
 }  // namespace contactlab
