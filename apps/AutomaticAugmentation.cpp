@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -82,6 +83,19 @@ AugmentationScale automaticAugmentation(
   if (!(scale.facetSize > 0))
     throw std::invalid_argument("the slave surface '" + slave + "' has facets of zero size");
   return scale;
+}
+
+std::string augmentationAdvice(const std::string& key, double value, double automatic) {
+  if (!(value > 0) || !(automatic > 0)) return "";
+  const double ratio = value / automatic;
+  if (ratio >= 0.1 && ratio <= 10) return "";
+  std::ostringstream text;
+  text << key << " = " << value;
+  text.precision(2);
+  text << " is " << (ratio < 1 ? "1/" : "") << std::scientific << (ratio < 1 ? 1 / ratio : ratio)
+       << (ratio < 1 ? " of" : " times") << " the model's scale " << automatic
+       << ": set it to 0 (automatic) or within a decade of that";
+  return text.str();
 }
 
 }  // namespace contactlab

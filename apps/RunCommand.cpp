@@ -453,6 +453,13 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
                      std::to_string(sm.model.mesh->nodeId(nodes.front())) +
                      ") the Dirichlet conditions fix a friction direction: its friction "
                      "multiplier is dropped (the support carries that force)");
+      const std::vector<std::int64_t> held = contact->prescribedGapNodes(z);
+      if (!held.empty())
+        console.info("Contact/" + sm.contact[z].name + ": " + std::to_string(held.size()) +
+                     " slave node(s) (e.g. node " +
+                     std::to_string(sm.model.mesh->nodeId(held.front())) +
+                     ") and their master are held by the Dirichlet conditions in every "
+                     "direction: their contact is left open (the supports carry that force)");
     }
   // Output/Contact Times this run reached no converged step at (a continued run's earlier
   // part wrote its own).
@@ -505,6 +512,12 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
             .set("factorization_seconds", work.factorizationSeconds)
             .set("correction_seconds", work.correctionSeconds)
             .set("solve_seconds", work.solveSeconds);
+    // A run that did not converge with a user's coefficients far from the model's scale: say
+    // which to change and to what (AutomaticAugmentation.hpp).
+    if (!report.converged && (report.failure == "max-iterations" || report.failure == "diverged" ||
+                              report.failure == "step-too-small"))
+      for (const ContactZone& zone : sm.contact)
+        if (!zone.coefficientAdvice.empty()) report.message += "; " + zone.coefficientAdvice;
     summary.build(report, record, materialState, comm->getSize())
         .write(folder.path("summary.json"));
     std::ostringstream closing;

@@ -220,6 +220,20 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
   if (!zone.noFrictionGroup.empty() && !isBoundary(zone.noFrictionGroup))
     throw InputError(path + "/No Friction Group: '" + zone.noFrictionGroup +
                      "' is not a boundary group of the mesh (boundary groups: " + boundaries + ")");
+  zone.noContactGroup = z.get<std::string>("No Contact Group");
+  if (!zone.noContactGroup.empty()) {
+    if (!isBoundary(zone.noContactGroup))
+      throw InputError(path + "/No Contact Group: '" + zone.noContactGroup +
+                       "' is not a boundary group of the mesh (boundary groups: " + boundaries +
+                       ")");
+    const auto excluded = mesh.boundaryNodes(zone.noContactGroup);
+    const auto slaves = mesh.boundaryNodes(zone.slave);
+    if (std::none_of(excluded.begin(), excluded.end(), [&](std::int64_t n) {
+          return std::binary_search(slaves.begin(), slaves.end(), n);
+        }))
+      throw InputError(path + "/No Contact Group: '" + zone.noContactGroup +
+                       "' holds no node of Slave '" + zone.slave + "'");
+  }
   zone.friction = z.get<double>("Friction");
   if (!(zone.friction >= 0) || !std::isfinite(zone.friction))
     throw InputError(path + "/Friction must be a finite number >= 0 (got " +
@@ -302,6 +316,21 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, const M
                     numberText(kAutomaticContactStrain) + " mu h) = " + numberText(rt) +
                     " (automatic: mu = " + numberText(zone.friction) +
                     ", h = " + numberText(stiffness->facetSize) + ")");
+  }
+  // Coefficients the user gave far from the model's scale: said if the run fails.
+  if (stiffness) {
+    const std::string where = path + "/Formulation/" + zone.formulation + "/";
+    std::vector<std::string> advice;
+    if (params.isParameter(normalKey) && !automaticNormalAugmentation.count(name))
+      advice.push_back(augmentationAdvice(where + normalKey, params.get<double>(normalKey),
+                                          stiffness->normalAugmentation()));
+    if (zone.friction > 0 && params.isParameter("Tangential Augmentation") &&
+        !automaticTangentialAugmentation.count(name))
+      advice.push_back(augmentationAdvice(where + "Tangential Augmentation",
+                                          params.get<double>("Tangential Augmentation"),
+                                          stiffness->tangentialAugmentation(zone.friction)));
+    for (const std::string& a : advice)
+      if (!a.empty()) zone.coefficientAdvice += (zone.coefficientAdvice.empty() ? "" : "; ") + a;
   }
   try {
     zone.law = formulationRegistry().get(zone.formulation).build(params);

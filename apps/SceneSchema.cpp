@@ -269,6 +269,10 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "Boundary group of slave nodes without friction (code_aster's SANS_GROUP_NO_FR); not "
         "needed where the Dirichlet conditions fix a node's tangential motion: that friction "
         "direction is dropped automatically (doc/scenes.md)");
+  p.set("No Contact Group", "",
+        "Boundary group of slave nodes left out of the zone: always open, no contact force "
+        "(code_aster's SANS_GROUP_NO); not needed where the Dirichlet conditions hold a slave "
+        "node and its master in every direction: such a node is opened automatically");
   p.set("Search Distance", 0.0,
         "Master points farther than this from a slave point are ignored; 0 = twice the largest "
         "slave facet");

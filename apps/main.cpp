@@ -14,6 +14,7 @@
 
 #include "apps/BatchCommand.hpp"
 #include "apps/CommandErrors.hpp"
+#include "apps/MpiSessionDirectory.hpp"
 #include "apps/RunCommand.hpp"
 #include "apps/SceneReference.hpp"
 #include "base/InputError.hpp"
@@ -257,6 +258,8 @@ int main(int argc, char** argv) {
   // none. A user's own setting wins; under mpirun (OMPI_COMM_WORLD_SIZE) nothing changes.
   if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr)
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  // Declared before the scope guard: removed after MPI_Finalize.
+  contactlab::MpiSessionDirectory session;
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   return contactlab::withErrorsReported(*comm, [&] { return dispatch(comm, argc, argv); });

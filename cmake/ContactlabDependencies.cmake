@@ -49,6 +49,8 @@ _contactlab_find_package(Ifpack2)
 _contactlab_find_package(MueLu)
 _contactlab_find_package(NOX)
 _contactlab_find_package(VTK 9 COMPONENTS CommonCore CommonDataModel IOXML)
+# Scenes are YAML 1.2, read by yaml-cpp (core/io/YamlParameterList). Debian: libyaml-cpp-dev.
+_contactlab_find_package(yaml-cpp)
 
 foreach(pkg Tpetra Amesos2 Belos Ifpack2 MueLu NOX)
   if(NOT TARGET contactlab::${pkg})

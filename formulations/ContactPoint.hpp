@@ -46,6 +46,11 @@ struct ContactPoint {
   double forcedThreshold = -1.0;
   double coefficientScale = 1.0;
   int cycling = 0;
+  // Left out of the contact by the user (the zone's No Contact Group): always open.
+  bool excluded = false;
+  // Whether the supports fix the gap at the last evaluation (prescribedGap, PrescribedSlip.hpp):
+  // the point was opened.
+  bool gapPrescribed = false;
   // Friction directions the Dirichlet conditions prescribe at the last evaluation (their
   // multiplier component dropped: PrescribedSlip.hpp).
   int prescribedSlip = 0;

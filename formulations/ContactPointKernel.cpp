@@ -83,8 +83,12 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
   in.frozenThreshold = pt.forcedThreshold >= 0 ? pt.forcedThreshold : pt.frozenThreshold;
   in.coefficientScale = pt.coefficientScale;
   in.stiffnessScale = zone.stiffnessScale;
+  // A point the user left out, or whose gap the supports fix, is open (PrescribedSlip.hpp).
+  pt.gapPrescribed = pt.paired && surfaceConstrained_ && !pt.excluded &&
+                     prescribedGap(B, nu, pt.freeDofs, pt.removedDirections);
+  if (pt.excluded || pt.gapPrescribed) in.frozenStatus = 0;
   PrescribedSlip prescribed;
-  if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_) {
+  if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_ && in.frozenStatus != 0) {
     std::vector<std::array<double, 2>> symmetric;
     for (const auto& normal : pt.symmetryNormals)
       symmetric.push_back({dot(normal, pt.t1), nt > 1 ? dot(normal, pt.t2) : 0.0});

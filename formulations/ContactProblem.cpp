@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -55,8 +56,10 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       slaveNormals = nodalNormals(facetsOf(mesh, zone.slave), facetNodes);
     }
     // No Friction Group: nodes whose friction the user removed (code_aster's SANS_GROUP_NO_FR).
-    std::vector<std::int64_t> noFriction;
+    std::vector<std::int64_t> noFriction, noContact;
     if (!zone.noFrictionGroup.empty()) noFriction = mesh.boundaryNodes(zone.noFrictionGroup);
+    // No Contact Group: nodes the user left out of the zone (code_aster's SANS_GROUP_NO).
+    if (!zone.noContactGroup.empty()) noContact = mesh.boundaryNodes(zone.noContactGroup);
     // Tributary areas by HRZ lumping in the reference configuration.
     const auto weights =
         tributaryAreas(mesh, zone.slave, dim_, referencePositions(mesh), zone.areaWeight);
@@ -70,6 +73,7 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       pt.node = node;
       pt.nt = nt;
       pt.unknowns = multipliers;
+      pt.excluded = std::binary_search(noContact.begin(), noContact.end(), node);
       // A normal field is tied to the pairing's normal, and to this one before any pairing:
       // the slave's own, turned towards it (as mortar's).
       if (zone.law->hasNormalField()) {
@@ -483,10 +487,19 @@ void ContactProblem::setInertia(const InertiaTerm& inertia) {
 }
 
 std::vector<std::int64_t> ContactProblem::prescribedSlipNodes(std::size_t zone) const {
+  return pointNodes(zone, [](const ContactPoint& pt) { return pt.prescribedSlip > 0; });
+}
+
+std::vector<std::int64_t> ContactProblem::prescribedGapNodes(std::size_t zone) const {
+  return pointNodes(zone, [](const ContactPoint& pt) { return pt.gapPrescribed; });
+}
+
+std::vector<std::int64_t> ContactProblem::pointNodes(
+    std::size_t zone, const std::function<bool(const ContactPoint&)>& which) const {
   // Points are evaluated on their owners: the union over the ranks.
   std::vector<int> local(points_.size(), 0), global(points_.size(), 0);
   for (std::size_t i = 0; i < points_.size(); ++i)
-    local[i] = points_[i].zone == static_cast<int>(zone) && points_[i].prescribedSlip > 0;
+    local[i] = points_[i].zone == static_cast<int>(zone) && which(points_[i]);
   Teuchos::reduceAll(*solid_.dofs().comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
                      local.data(), global.data());
   std::vector<std::int64_t> nodes;

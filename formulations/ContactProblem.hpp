@@ -33,6 +33,7 @@
 #include "formulations/ContactPointResult.hpp"
 #include "formulations/ContactZone.hpp"
 
+#include <functional>
 #include <memory>
 #include <unordered_set>
 #include <vector>
@@ -124,6 +125,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // Slave nodes of a zone where, at the last evaluation, the Dirichlet conditions prescribed a
   // friction direction, whose multiplier was dropped (PrescribedSlip.hpp). Collective.
   std::vector<std::int64_t> prescribedSlipNodes(std::size_t zone) const;
+  // The slave nodes of a zone whose gap the supports fixed at their last evaluation (held with
+  // their master: opened, PrescribedSlip.hpp). Collective.
+  std::vector<std::int64_t> prescribedGapNodes(std::size_t zone) const;
   ContactResultants resultants() const;
   // Whether any point has been closed at a converged step (surfaces that never meet: false).
   bool everInContact() const { return everInContact_; }
@@ -136,6 +140,9 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   ContactPhaseSeconds phaseSeconds() const { return seconds_; }
 
  private:
+  // The slave nodes of a zone's points for which `which` held on their owners. Collective.
+  std::vector<std::int64_t> pointNodes(std::size_t zone,
+                                       const std::function<bool(const ContactPoint&)>& which) const;
   // "node <id> of '<slave group>' (zone <name>)", for messages.
   std::string slaveNodeName(const ContactPoint& pt) const;
   // updateGeometry's work: pairs every point at state x and time t and freezes that geometry.

@@ -38,6 +38,9 @@ struct ContactZone {
   // Boundary group of slave nodes without friction (code_aster's SANS_GROUP_NO_FR); empty:
   // none. Nodes whose tangential motion the Dirichlet conditions fix need not be listed.
   std::string noFrictionGroup;
+  std::string noContactGroup;  // slave nodes left out of the zone (always open)
+  // What a failed run's message adds about the user's coefficients (empty: nothing to say).
+  std::string coefficientAdvice;
   std::string formulation;  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
   // The contact stiffness E / h of the zone (AutomaticAugmentation.hpp; 0: unknown), the scale

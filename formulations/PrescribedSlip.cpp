@@ -108,6 +108,22 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
   return s;
 }
 
+bool prescribedGap(const std::vector<double>& B, int nu, const std::vector<char>& free,
+                   const std::vector<std::vector<double>>& removed) {
+  double whole = 0, allowed = 0;
+  for (int a = 0; a < nu; ++a) {
+    whole += B[a] * B[a];
+    if (free[a]) allowed += B[a] * B[a];
+  }
+  for (const auto& c : removed) {
+    double bc = 0;
+    for (int a = 0; a < nu; ++a)
+      bc += B[a] * c[a];
+    allowed -= bc * bc;
+  }
+  return whole > 0 && allowed <= 1e-6 * whole;
+}
+
 bool prescribedDirectionSlides(const PrescribedSlip& slip, int nt, const std::array<double, 2>& v,
                                double relativeMotion) {
   if (slip.prescribed == 0 || !slip.bySupports) return false;

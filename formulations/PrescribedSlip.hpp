@@ -55,6 +55,15 @@ PrescribedSlip prescribedSlip(const std::vector<double>& B, int nt, int nu,
                               const std::vector<std::vector<double>>& removed = {},
                               const std::vector<std::array<double, 2>>& symmetric = {});
 
+// Whether the supports fix the gap at the point: the free part of the gap's operator (row 0 of
+// B, over the allowed motion as above) is below 0.1 % of the whole, as for a friction direction.
+// A slave node held in every direction against a master that is held too (a sheet's clamped edge
+// on a fixed die, a node against an obstacle): its normal multiplier would appear in no free row
+// and the tangent would be singular. Such a point is opened (no contact unknown acts there): the
+// supports carry whatever force the contact would, and the gap is theirs to set.
+bool prescribedGap(const std::vector<double>& B, int nu, const std::vector<char>& free,
+                   const std::vector<std::vector<double>>& removed = {});
+
 // Whether the point slides along a direction the supports prescribe: `v`, the slip increment in
 // (t1, t2); `relativeMotion`, the norm of the whole relative displacement increment (normal
 // part included), against which a slip of round-off (1e-8 of it) is none.

@@ -1,6 +1,6 @@
 #pragma once
-// Reading a scene file: YAML with one top-level key `contactlab:` read by Teuchos into a
-// ParameterList, plus command-line overrides. Validation against the registries happens in
+// Reading a scene file: YAML with one top-level key `contactlab:` read by yaml-cpp into a
+// ParameterList (core/io/YamlParameterList), plus command-line overrides. Validation against the registries happens in
 // the app (apps/SceneSchema), which knows every module.
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>

@@ -24,6 +24,21 @@ TEST(PrescribedSlip, BothTangentsFixedAtACorner) {
   EXPECT_EQ(prescribedSlip(pointOnAPlane(0.3), 2, 3, {0, 0, 1}).prescribed, 2);
 }
 
+TEST(PrescribedSlip, TheGapIsPrescribedOnlyWhenNoFreeDofMovesIt) {
+  // Against a rigid plane the gap row is (0, 0, 1) on the slave's dofs.
+  EXPECT_FALSE(prescribedGap(pointOnAPlane(0.3), 3, {1, 1, 1}));
+  EXPECT_FALSE(prescribedGap(pointOnAPlane(0.3), 3, {0, 0, 1}));  // held tangentially only
+  EXPECT_TRUE(prescribedGap(pointOnAPlane(0.3), 3, {1, 1, 0}));   // held normally
+  EXPECT_TRUE(prescribedGap(pointOnAPlane(0.3), 3, {0, 0, 0}));   // clamped
+  // 2D, a slave node against a master segment (nodes a, b) at its node a, N = (1, 0): with the
+  // slave and a held, b's dofs carry no share of the gap; at N = (0.9, 0.1) they do.
+  const std::vector<char> heldAtA = {0, 0, 0, 0, 1, 1};
+  EXPECT_TRUE(prescribedGap({0, 1, 0, -1, 0, 0}, 6, heldAtA));
+  EXPECT_FALSE(prescribedGap({0, 1, 0, -0.9, 0, -0.1}, 6, heldAtA));
+  // An inclined symmetry plane's normal removed from the free motion of a node held otherwise.
+  EXPECT_TRUE(prescribedGap({0, 1}, 2, {0, 1}, {{0, 1}}));
+}
+
 TEST(PrescribedSlip, ASymmetryPlaneFixesOneDirectionWhateverTheTangentBasis) {
   // x fixed (plane x = 0): the free direction is y, in (t1, t2) coordinates (sin a, cos a).
   const double a = 0.3;
