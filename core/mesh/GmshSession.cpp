@@ -22,6 +22,9 @@ GmshSession::GmshSession() {
       // gmsh reports errors by throwing; printing them as well would only clutter the output.
       gmsh::option::setNumber("General.Terminal", 0);
       gmsh::option::setNumber("General.Verbosity", 1);
+      // An error aborts the meshing instead of throwing from inside gmsh's OpenMP loops,
+      // which no caller can catch (inGmshModel reads it from the log).
+      gmsh::option::setNumber("General.AbortOnError", 1);
     } catch (const std::string& msg) {
       throw std::runtime_error("gmsh could not be initialised: " + msg);
     }
