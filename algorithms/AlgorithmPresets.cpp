@@ -10,7 +10,7 @@
 namespace contactlab {
 
 const std::vector<AlgorithmPreset>& algorithmPresets() {
-  // name, statuses, thresholds, geometry in Newton (DESIGN.md §6: PF, NG, NP).
+  // name, statuses, thresholds, geometry in Newton (doc/theory.md: PF, NG, NP).
   static const std::vector<AlgorithmPreset> presets = {
       {"fixed-point", false, false, false},
       {"generalized-newton", true, true, true},

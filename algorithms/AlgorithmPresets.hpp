@@ -2,7 +2,7 @@
 // The algorithm presets (Algorithm/Method) and the composition of a step's loops.
 //
 // A preset says which of the contact problem's non-smooth parts Newton handles; the others are
-// fixed points around it (DESIGN.md §6, the seed's table). Algorithm/Contact Statuses,
+// fixed points around it (doc/theory.md, the seed's table). Algorithm/Contact Statuses,
 // Friction Threshold and Geometry override it per loop (StaticSolverOptions::from resolves
 // them). composeLoops turns the resolved choice into StaticSolver's ordered list of loops,
 // innermost first: statuses, thresholds, geometry. To add a loop: a FixedPointLoop class, its

@@ -1,10 +1,10 @@
 #pragma once
-// Dense building blocks of the uniqueness diagnostic (DESIGN.md §6 "Critical friction
-// coefficient"). For a fixed status pattern the Jacobian of the augmented-Lagrangian operator
-// is affine in the friction coefficient, J(mu) = A + mu B; the pattern's critical mu is the
-// smallest positive real mu with det(A + mu B) = 0, a generalized eigenvalue problem
-// A v = mu (-B) v (LAPACK dggev). The sign of det J tells whether the Jacobians around a
-// solution agree (locally unique when every one has the same sign).
+// Dense building blocks of the uniqueness diagnostic (doc/algorithms.md "Uniqueness: the critical
+// friction coefficient"). For a fixed status pattern the Jacobian of the augmented-Lagrangian
+// operator is affine in the friction coefficient, J(mu) = A + mu B; the pattern's critical mu is
+// the smallest positive real mu with det(A + mu B) = 0, a generalized eigenvalue problem A v = mu
+// (-B) v (LAPACK dggev). The sign of det J tells whether the Jacobians around a solution agree
+// (locally unique when every one has the same sign).
 //
 // Matrices are n x n, column major. For small systems only (dense); the sparse version of the
 // diagnostic (MUMPS determinants, Anasazi shift-invert) is not written yet.

@@ -1,5 +1,5 @@
 #pragma once
-// Cycling detection per contact point over successive evaluations (DESIGN.md §6 "Cycling").
+// Cycling detection per contact point over successive evaluations (doc/algorithms.md "Cycling").
 //
 // Each point's history keeps its last states with consecutive repeats merged (an iterate that
 // keeps its zone is not a flip). A point cycles when its last four distinct states alternate

@@ -1,8 +1,9 @@
 #pragma once
-// One non-smooth part of the contact problem's p(x) (DESIGN.md §6 "Algorithms": the contact
-// statuses, the friction thresholds, the geometry) as StaticSolver drives it: either handed to
-// Newton (the system updates it at every iterate) or a fixed point around the Newton solve,
-// frozen while Newton runs and updated after it converged, with its own test and its own cap.
+// One non-smooth part of the contact problem's p(x) (doc/algorithms.md "Three non-smooth things,
+// one loop each": the contact statuses, the friction thresholds, the geometry) as StaticSolver
+// drives it: either handed to Newton (the system updates it at every iterate) or a fixed point
+// around the Newton solve, frozen while Newton runs and updated after it converged, with its own
+// test and its own cap.
 //
 // StaticSolver holds the loops innermost first and runs them generically (doc/algorithms.md):
 // after each converged Newton solve, the innermost fixed point whose update moves restarts

@@ -1,5 +1,5 @@
 #pragma once
-// The critical friction coefficient of the status pattern of a state (DESIGN.md §6): with
+// The critical friction coefficient of the status pattern of a state (doc/theory.md): with
 // every contact point's status held (no contact, stick or slip, as the state has them), the
 // Jacobian is affine in the friction coefficients, J(s) = A + s B for a common factor s on
 // every zone's mu (s = 1: the model). Its critical factor is the smallest s > 0 with

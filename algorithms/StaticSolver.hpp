@@ -1,5 +1,6 @@
 #pragma once
-// Quasi-static load stepping with the seed's nested algorithms (DESIGN.md §6 "Algorithms").
+// Quasi-static load stepping with the seed's nested algorithms (doc/algorithms.md "Three non-smooth
+// things, one loop each").
 //
 // Per load step: prescribed values at the new time (spread through the body by the tangent
 // predictor when they moved), the geometry paired at the predictor, then a Newton solve

@@ -159,7 +159,7 @@ Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validNewton() {
 Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validAlgorithm() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Algorithm"));
   p->set("Method", "partial-newton",
-         "How the contact nonlinearities are solved (DESIGN.md §6): 'fixed-point' (geometry, "
+         "How the contact nonlinearities are solved (doc/theory.md): 'fixed-point' (geometry, "
          "friction thresholds and statuses are fixed points around Newton), "
          "'generalized-newton' (all three in Newton), 'partial-newton' (geometry a fixed point, "
          "thresholds and statuses in Newton)",

@@ -1,6 +1,6 @@
 #pragma once
-// `contactlab run`: solves a scene and writes the results contract (DESIGN.md §5):
-// result.pvd + .vtu/.pvtu per converged step, steps.csv, summary.json.
+// `contactlab run`: solves a scene and writes the results contract (doc/scenes.md "The output
+// folder"): result.pvd + .vtu/.pvtu per converged step, steps.csv, summary.json.
 #include "base/LinearAlgebra.hpp"
 
 #include <string>

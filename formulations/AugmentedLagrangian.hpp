@@ -1,5 +1,5 @@
 #pragma once
-// The seed's augmented Lagrangian ("methode continue", DESIGN.md §6), at one point:
+// The seed's augmented Lagrangian ("methode continue", doc/theory.md), at one point:
 //   augmented pressure     p^ = p - r_n g            (seed: lambda^_n = lambda_n - r_n d_n)
 //   contact status         S_R = 1 if p^ >= 0         (seed: lambda^_n <= 0)
 //   augmented friction     Lambda^ = Lambda + r_t v,  S_f = 1 if ||Lambda^|| < 1 (stick)

@@ -20,7 +20,7 @@ namespace contactlab {
 
 // The state of one contact point at the last evaluation, as cycling detection sees it.
 struct ContactPointState {
-  // Zone of the normal law in the (gap, augmented pressure) plane, DESIGN.md §6 "Cycling":
+  // Zone of the normal law in the (gap, augmented pressure) plane, doc/algorithms.md "Cycling":
   // 0 unpaired; 1 open and apart; 2 open and penetrating; 3 closed and penetrating; 4 closed
   // and apart ("open"/"closed": the sign of the status indicator p^ = p - c g).
   int zone = 0;

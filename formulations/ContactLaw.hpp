@@ -14,7 +14,7 @@
 // all already multiplied by the point's weight w (tributary area). The element residual is
 // R_u = sum_i r_k[i] B_i and R_m = r_m; the tangent is B^T J_kk B, B^T J_km, J_mk B, J_mm.
 //
-// Relation to the seed's notation (DESIGN.md §6): d_n = -g, lambda_n = -p, lambda-hat_n =
+// Relation to the seed's notation (doc/theory.md): d_n = -g, lambda_n = -p, lambda-hat_n =
 // -p-hat, and the seed's weak forms F = 0 are our residuals with R_u = -(F_cont + F_frot)
 // (R_u = f_int - f_ext + contact), R_p = F~_cont, R_Lambda = F~_frot.
 #include <array>

@@ -1,8 +1,8 @@
 #pragma once
-// The seed's non-standard augmented Lagrangian ("Lagrangien augmente non standard", DESIGN.md
-// §6): the slave normals are unknowns. At each contact point a vector n_s joins the multipliers
-// (p, Lambda); the gap is measured along it, g = n_s . (self x_s - sum_a N_a x_a), and the
-// kinematic condition n_s = n(u), n(u) the master's normal at the point's master point in the
+// The seed's non-standard augmented Lagrangian ("Lagrangien augmente non standard",
+// doc/theory.md): the slave normals are unknowns. At each contact point a vector n_s joins the
+// multipliers (p, Lambda); the gap is measured along it, g = n_s . (self x_s - sum_a N_a x_a), and
+// the kinematic condition n_s = n(u), n(u) the master's normal at the point's master point in the
 // current configuration, is the equation
 //   R_ns = w kappa_n (n_s - n(u)) = 0        (seed: int [n_s - n(u)] kappa_n dn_s* = 0).
 // The pointwise law on (g, v, p, Lambda) is the augmented Lagrangian's, unchanged; the kernel

@@ -1,10 +1,10 @@
 #pragma once
-// contact.csv (DESIGN.md §5): one row per contact point of the last converged step, named by
-// its slave node's id (Mesh::nodeId: the gmsh node tag of a mesh file, index + 1 for a
-// generated mesh), with its current coordinates and its reference ones beside them (reference_x..z:
-// comparing with a reference solution needs no nearest-node match), gap (empty where the point
-// found no master), pressure, tangential traction, slip and status. Rewritten after each converged
-// step (atomically, by rank 0).
+// contact.csv (doc/scenes.md "The output folder"): one row per contact point of the last converged
+// step, named by its slave node's id (Mesh::nodeId: the gmsh node tag of a mesh file, index + 1 for
+// a generated mesh), with its current coordinates and its reference ones beside them
+// (reference_x..z: comparing with a reference solution needs no nearest-node match), gap (empty
+// where the point found no master), pressure, tangential traction, slip and status. Rewritten after
+// each converged step (atomically, by rank 0).
 #include "core/mesh/Mesh.hpp"
 #include "formulations/ContactProblem.hpp"
 #include "formulations/ContactZone.hpp"

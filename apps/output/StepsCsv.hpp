@@ -1,10 +1,10 @@
 #pragma once
-// steps.csv (DESIGN.md §5): one row per converged load step with the iterations of each loop,
-// the residual, the contact/stick/slip counts, the contact force on the slave surfaces
-// (sum w p and the vector sum w (p n + t): a force history), the cycling events by kind, the linear
-// solver's condition estimate, the seconds per phase and, with Output/Critical Mu Check, that
-// step's critical mu. Rewritten whole after each step (atomically, by rank 0), so a crash leaves
-// the rows of every converged step.
+// steps.csv (doc/scenes.md "The output folder"): one row per converged load step with the
+// iterations of each loop, the residual, the contact/stick/slip counts, the contact force on the
+// slave surfaces (sum w p and the vector sum w (p n + t): a force history), the cycling events by
+// kind, the linear solver's condition estimate, the seconds per phase and, with Output/Critical Mu
+// Check, that step's critical mu. Rewritten whole after each step (atomically, by rank 0), so a
+// crash leaves the rows of every converged step.
 #include "algorithms/StaticSolver.hpp"
 #include "core/io/CsvWriter.hpp"
 #include "core/io/OutputManifest.hpp"

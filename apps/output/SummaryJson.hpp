@@ -1,8 +1,8 @@
 #pragma once
-// summary.json (DESIGN.md §5), written once at the end of a run, also a failed one: the scene,
-// whether and why it failed, each axis with its parameters, sizes, iteration totals per loop,
-// cycling counts, seconds per phase, peak memory, contact resultants, reactions, spring forces,
-// probes, and the uniqueness checks when they ran.
+// summary.json (doc/scenes.md "The output folder"), written once at the end of a run, also a failed
+// one: the scene, whether and why it failed, each axis with its parameters, sizes, iteration totals
+// per loop, cycling counts, seconds per phase, peak memory, contact resultants, reactions, spring
+// forces, probes, and the uniqueness checks when they ran.
 #include "algorithms/StaticSolver.hpp"
 #include "apps/SceneModel.hpp"
 #include "core/io/JsonWriter.hpp"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs a scene with the contactlab command and checks the results contract (DESIGN.md §5):
+"""Runs a scene with the contactlab command and checks the results contract (doc/scenes.md "The output folder"):
 result.pvd and its pieces readable by VTK (a rest frame at t = 0, then one per converged step),
 steps.csv, summary.json with probes, contact.csv's points named by the VTK field node_id.
 
@@ -72,7 +72,7 @@ for name in point_fields - {"node_id"}:
 assert values(rest.GetPointData().GetArray("node_id")) == values(grid.GetPointData().GetArray("node_id"))
 for name in ["stress", "von_mises", "material", "rank"]:
     assert grid.GetCellData().GetArray(name) is not None, name
-if summary.get("contact"):  # contact scenes: point data and contact.csv (DESIGN.md §5)
+if summary.get("contact"):  # contact scenes: point data and contact.csv (doc/scenes.md "The output folder")
     for name in ["contact_pressure", "tangential_traction", "gap", "slip", "contact_status",
                  "cycling"]:
         assert grid.GetPointData().GetArray(name) is not None, name

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""1 rank and 2 ranks give the same contact results (DESIGN.md §4): runs a scene on both and
+"""1 rank and 2 ranks give the same contact results (doc/architecture.md): runs a scene on both and
 compares contact.csv point by point (pressure, gap, tangential traction, status) and the
 summary's resultants and iteration counts.
 
