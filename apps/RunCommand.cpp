@@ -443,23 +443,22 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   // solver's counts start from the checkpoint's (RunStart::totals), its steps are this run's.
   report.steps += static_cast<int>(earlierRows);
   // Said once per run: where the Dirichlet conditions fix a friction direction, its multiplier
-  // was dropped (the singular tangent that would otherwise stop every algorithm there).
+  // was dropped, and where they hold a node and its master in every direction, the point was
+  // opened (the singular tangent that would otherwise stop every algorithm there).
   if (contact)
     for (std::size_t z = 0; z < sm.contact.size(); ++z) {
-      const std::vector<std::int64_t> nodes = contact->prescribedSlipNodes(z);
-      if (!nodes.empty())
-        console.info("Contact/" + sm.contact[z].name + ": at " + std::to_string(nodes.size()) +
-                     " slave node(s) (e.g. node " +
-                     std::to_string(sm.model.mesh->nodeId(nodes.front())) +
-                     ") the Dirichlet conditions fix a friction direction: its friction "
-                     "multiplier is dropped (the support carries that force)");
-      const std::vector<std::int64_t> held = contact->prescribedGapNodes(z);
-      if (!held.empty())
-        console.info("Contact/" + sm.contact[z].name + ": " + std::to_string(held.size()) +
-                     " slave node(s) (e.g. node " +
-                     std::to_string(sm.model.mesh->nodeId(held.front())) +
-                     ") and their master are held by the Dirichlet conditions in every "
-                     "direction: their contact is left open (the supports carry that force)");
+      const auto say = [&](const std::vector<std::int64_t>& nodes, const std::string& what) {
+        if (!nodes.empty())
+          console.info("Contact/" + sm.contact[z].name + ": at " + std::to_string(nodes.size()) +
+                       " slave node(s) (e.g. node " +
+                       std::to_string(sm.model.mesh->nodeId(nodes.front())) + ") " + what);
+      };
+      say(contact->prescribedSlipNodes(z),
+          "the Dirichlet conditions fix a friction direction: its friction multiplier is dropped "
+          "(the support carries that force)");
+      say(contact->prescribedGapNodes(z),
+          "the node and its master are held by the Dirichlet conditions in every direction: "
+          "their contact is left open (the supports carry that force)");
     }
   // Output/Contact Times this run reached no converged step at (a continued run's earlier
   // part wrote its own).

@@ -88,7 +88,8 @@ void ContactPointKernel::evaluate(ContactPoint& pt, double t, bool withTangent,
                      prescribedGap(B, nu, pt.freeDofs, pt.removedDirections);
   if (pt.excluded || pt.gapPrescribed) in.frozenStatus = 0;
   PrescribedSlip prescribed;
-  if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_ && in.frozenStatus != 0) {
+  if (pt.paired && pt.multiplier >= 0 && nt > 0 && surfaceConstrained_ && !pt.excluded &&
+      !pt.gapPrescribed) {
     std::vector<std::array<double, 2>> symmetric;
     for (const auto& normal : pt.symmetryNormals)
       symmetric.push_back({dot(normal, pt.t1), nt > 1 ? dot(normal, pt.t2) : 0.0});

@@ -84,9 +84,7 @@ class Converter {
       throw InputError(where(label_, node.Mark()) + ": sections nested deeper than " +
                        std::to_string(kMaxDepth) + " (an alias of an enclosing section?)" +
                        inside(path));
-    if ((entries_ += node.size()) > kMaxEntries)
-      throw InputError(label_ + ": more than " + std::to_string(kMaxEntries) +
-                       " entries once its aliases are expanded");
+    countEntries(node.size());
     std::map<std::string, int> seen;  // key -> its line
     for (const auto& item : node) {
       const YAML::Node& keyNode = item.first;
@@ -108,6 +106,12 @@ class Converter {
   static constexpr std::size_t kMaxEntries = 1000000;
   std::string label_;
   std::size_t entries_ = 0;
+
+  void countEntries(std::size_t n) {
+    if ((entries_ += n) > kMaxEntries)
+      throw InputError(label_ + ": more than " + std::to_string(kMaxEntries) +
+                       " entries once its aliases are expanded");
+  }
 
   static std::string inside(const std::string& path) {
     return path.empty() ? "" : " (in '" + path + "')";
@@ -166,6 +170,18 @@ class Converter {
     return type;
   }
 
+  // Calls set(T{}) with T the C++ type of an array's items of `type` (bools are ints, as
+  // itemsType never gives Bool).
+  template <class Set>
+  static void withType(ScalarType type, Set&& set) {
+    if (type == ScalarType::Double)
+      set(double{});
+    else if (type == ScalarType::String)
+      set(std::string{});
+    else
+      set(int{});
+  }
+
   template <typename T>
   static Teuchos::Array<T> array(const std::vector<YAML::Node>& items) {
     Teuchos::Array<T> out;
@@ -187,27 +203,16 @@ class Converter {
   void sequence(const YAML::Node& node, Teuchos::ParameterList& list, const std::string& key,
                 const std::string& path) {
     std::vector<YAML::Node> items(node.begin(), node.end());
-    if ((entries_ += items.size()) > kMaxEntries)
-      throw InputError(label_ + ": more than " + std::to_string(kMaxEntries) +
-                       " entries once its aliases are expanded");
+    countEntries(items.size());
     for (const auto& item : items)
       if (item.IsMap())
         throw InputError(where(label_, item.Mark()) + ": a list of sections is not a scene value" +
                          inside(path));
     const bool nested = !items.empty() && items.front().IsSequence();
     if (!nested) {
-      switch (itemsType(items, path)) {
-        case ScalarType::Bool:
-        case ScalarType::Int:
-          list.set(key, array<int>(items));
-          return;
-        case ScalarType::Double:
-          list.set(key, array<double>(items));
-          return;
-        case ScalarType::String:
-          list.set(key, array<std::string>(items));
-          return;
-      }
+      withType(itemsType(items, path),
+               [&](auto tag) { list.set(key, array<decltype(tag)>(items)); });
+      return;
     }
     std::vector<std::vector<YAML::Node>> rows;
     std::vector<YAML::Node> all;
@@ -222,18 +227,7 @@ class Converter {
                          std::to_string(rows.back().size()) + inside(path));
       all.insert(all.end(), rows.back().begin(), rows.back().end());
     }
-    switch (itemsType(all, path)) {
-      case ScalarType::Bool:
-      case ScalarType::Int:
-        list.set(key, table<int>(rows));
-        return;
-      case ScalarType::Double:
-        list.set(key, table<double>(rows));
-        return;
-      case ScalarType::String:
-        list.set(key, table<std::string>(rows));
-        return;
-    }
+    withType(itemsType(all, path), [&](auto tag) { list.set(key, table<decltype(tag)>(rows)); });
   }
 };
 
