@@ -35,8 +35,10 @@ std::string singularTangentMessage(int iteration, const std::string& detail) {
 
 std::string singularTangentRemedy() {
   return ": a body is not held in some direction (before contact under load control, or held "
-         "only by friction); remedies: Algorithm/Regularization: slow-dynamics (materials need "
-         "a density), Contact/<zone>/Initial Contact: all, a support or Springs";
+         "only by friction), or an iterate took a perfectly plastic body to its limit load; "
+         "remedies: Algorithm/Regularization: slow-dynamics (materials need a density), "
+         "Contact/<zone>/Initial Contact: all, a support or Springs; past a limit load, shorter "
+         "steps (Load Steps/Steps or Max Cuts)";
 }
 
 NewtonOutcome PlainNewton::solve(Vector& x, const NewtonRequest& request,

@@ -41,8 +41,10 @@ class PressureSpace {
   int dim_;
   int size_;
   int numPoints_ = 0;
-  double psi_[kMaxPoints][kMaxSize] = {};
-  double weight_[kMaxSize][kMaxPoints] = {};
+  // Written by setElement over the element's points and the space's size (left unset beyond,
+  // so that a kernel's evaluation does not clear them whole).
+  double psi_[kMaxPoints][kMaxSize];
+  double weight_[kMaxSize][kMaxPoints];
 };
 
 }  // namespace contactlab

@@ -9,6 +9,18 @@
 
 namespace contactlab {
 
+namespace {
+
+// Sets the first `rows` rows of m to zero over `columns` (not the whole array: it is large).
+template <int Columns>
+void clearRows(double (*m)[Columns], int rows, int columns) {
+  for (int i = 0; i < rows; ++i)
+    for (int k = 0; k < columns; ++k)
+      m[i][k] = 0.0;
+}
+
+}  // namespace
+
 int fullIntegrationDegree(ElementType type, bool axisymmetric) {
   return axisymmetric ? AxisymmetricKernel::defaultQuadratureDegree(type)
                       : stiffnessQuadratureDegree(type);
@@ -47,7 +59,8 @@ void ProjectedDilatationKernel::evaluate(const double* x, const double* u, const
 
   // theta_bar = sum_i psi_i beta_i . u, beta_i = sum_q weight(i, q) b_q, b_q = m^T B_q.
   SlotOperator op;
-  double beta[S][D] = {};
+  double beta[S][D];
+  clearRows(beta, np, nd);
   for (int q = 0; q < nq; ++q) {
     smallStrainOperator(dim_, axisymmetric_, n, &N_[q * n], dNdx[q], points[3 * q], op);
     for (int k = 0; k < nd; ++k) {
@@ -66,8 +79,10 @@ void ProjectedDilatationKernel::evaluate(const double* x, const double* u, const
   // Only the upper node blocks are accumulated while every point's C is symmetric (mirrored at
   // the end); an unsymmetric C at a point mirrors what was accumulated and goes on in full.
   bool symmetric = true;
-  double pressureMoment[S] = {};          // sum_q w psi_i tr sigma
-  double h[S][D] = {}, hT[S][D] = {};     // sum_q w psi_i B^T P C m (and with C^T)
+  double pressureMoment[S] = {};  // sum_q w psi_i tr sigma
+  double h[S][D], hT[S][D];       // sum_q w psi_i B^T P C m (and with C^T)
+  clearRows(h, np, nd);
+  clearRows(hT, np, nd);
   double volumetricStiffness[S][S] = {};  // sum_q w psi_i psi_j m^T C m
   MaterialInput in;
   in.temperature = temperature;

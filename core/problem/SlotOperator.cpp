@@ -40,57 +40,64 @@ void declareRows(SlotOperator& op, int dim, int numNodes, std::initializer_list<
 
 }  // namespace
 
+// Dof k = node * dim + c: the loops below run over nodes and components, not k % dim.
 void SlotOperator::apply(const double* u, double* values) const {
   for (int r = 0; r < rows; ++r)
     values[r] = 0.0;
-  for (int k = 0; k < numDofs; ++k) {
-    const int c = k % dim;
-    for (int j = 0; j < componentRowCount[c]; ++j) {
-      const int r = componentRows[c][j];
-      values[r] += B[r][k] * u[k];
+  for (int node = 0; node < numDofs; node += dim)
+    for (int c = 0; c < dim; ++c) {
+      const int k = node + c;
+      for (int j = 0; j < componentRowCount[c]; ++j) {
+        const int r = componentRows[c][j];
+        values[r] += B[r][k] * u[k];
+      }
     }
-  }
 }
 
 void SlotOperator::addTransposeProduct(const double* v, double scale, double* out) const {
-  for (int k = 0; k < numDofs; ++k) {
-    const int c = k % dim;
-    double s = 0.0;
-    for (int j = 0; j < componentRowCount[c]; ++j) {
-      const int r = componentRows[c][j];
-      s += B[r][k] * v[r];
+  for (int node = 0; node < numDofs; node += dim)
+    for (int c = 0; c < dim; ++c) {
+      const int k = node + c;
+      double s = 0.0;
+      for (int j = 0; j < componentRowCount[c]; ++j) {
+        const int r = componentRows[c][j];
+        s += B[r][k] * v[r];
+      }
+      out[k] += scale * s;
     }
-    out[k] += scale * s;
-  }
 }
 
 void SlotOperator::addProduct(const double* C, double w, double* K, bool upperBlocks) const {
   // CB = w C B (rows x nd), using the sparsity of B's columns; then K's row k is the sum of
   // B[r][k] CB[r] over the rows r that column k touches: contiguous axpys, which vectorize.
   double CB[kMaxRows][kMaxDofs];
-  for (int r = 0; r < rows; ++r)
-    for (int k = 0; k < numDofs; ++k) {
-      const int c = k % dim;
-      double s = 0.0;
-      for (int j = 0; j < componentRowCount[c]; ++j) {
-        const int m = componentRows[c][j];
-        s += C[r * rows + m] * B[m][k];
+  for (int r = 0; r < rows; ++r) {
+    const double* Cr = &C[r * rows];
+    for (int node = 0; node < numDofs; node += dim)
+      for (int c = 0; c < dim; ++c) {
+        const int k = node + c;
+        double s = 0.0;
+        for (int j = 0; j < componentRowCount[c]; ++j) {
+          const int m = componentRows[c][j];
+          s += Cr[m] * B[m][k];
+        }
+        CB[r][k] = w * s;
       }
-      CB[r][k] = w * s;
-    }
-  for (int i = 0; i < numDofs; ++i) {
-    const int c = i % dim;
-    double* row = &K[i * numDofs];
-    const int first = upperBlocks ? i - c : 0;
-    for (int j = 0; j < componentRowCount[c]; ++j) {
-      const int r = componentRows[c][j];
-      const double b = B[r][i];
-      if (b == 0.0) continue;
-      const double* cb = CB[r];
-      for (int k = first; k < numDofs; ++k)
-        row[k] += b * cb[k];
-    }
   }
+  for (int node = 0; node < numDofs; node += dim)
+    for (int c = 0; c < dim; ++c) {
+      const int i = node + c;
+      double* row = &K[i * numDofs];
+      const int first = upperBlocks ? node : 0;
+      for (int j = 0; j < componentRowCount[c]; ++j) {
+        const int r = componentRows[c][j];
+        const double b = B[r][i];
+        if (b == 0.0) continue;
+        const double* cb = CB[r];
+        for (int k = first; k < numDofs; ++k)
+          row[k] += b * cb[k];
+      }
+    }
 }
 
 void smallStrainOperator(int dim, bool axisymmetric, int numNodes, const double* N,
@@ -205,7 +212,7 @@ void addOuterProduct(const double* x, const double* y, double scale, int nd, int
     const double xi = scale * x[i];
     if (xi == 0.0) continue;
     double* row = &K[i * nd];
-    const int first = upperBlocks ? i - i % dim : 0;
+    const int first = upperBlocks ? i / dim * dim : 0;
     for (int k = first; k < nd; ++k)
       row[k] += xi * y[k];
   }

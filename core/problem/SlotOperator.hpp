@@ -31,7 +31,8 @@ struct SlotOperator {
   int componentRowCount[3] = {};
   int volumetricCount = 0;         // n: the dimension of the dilatation
   bool volumetric[kMaxRows] = {};  // the diagonal rows
-  double B[kMaxRows][kMaxDofs] = {};
+  // Rows x numDofs set (zeros included) by the operator functions below; left unset beyond.
+  double B[kMaxRows][kMaxDofs];
 
   // slots = B u.
   void apply(const double* u, double* values) const;

@@ -93,12 +93,12 @@ std::vector<double> affine(const Case& c, const std::vector<double>& x, const do
   return u;
 }
 
-J2SmallStrain hardeningJ2() {
+J2SmallStrain j2(double poissonRatio, double hardening) {
   J2SmallStrain::Parameters p;
   p.youngModulus = TemperatureDependent(200.0);
-  p.poissonRatio = TemperatureDependent(0.3);
+  p.poissonRatio = TemperatureDependent(poissonRatio);
   p.yieldStress = TemperatureDependent(0.2);
-  p.isotropicHardening = TemperatureDependent(20.0);
+  p.isotropicHardening = TemperatureDependent(hardening);
   return J2SmallStrain(p);
 }
 
@@ -129,13 +129,14 @@ void checkTangent(const Case& c, const Law& law, const std::vector<double>& u,
 TEST(TechnologyKernels, SmallStrainTangentsMatchDifferences) {
   const test::IsotropicElastic nearlyIncompressible(100.0, 0.4999);
   const test::UnsymmetricNonlinear unsymmetric;
-  const J2SmallStrain plastic = hardeningJ2();
+  const J2SmallStrain plastic = j2(0.3, 20.0), perfect = j2(0.48, 0.0);
   for (const Case& c : cases(false)) {
     const int nd = info(c.type).nodes * info(c.type).dim;
     checkTangent(c, nearlyIncompressible, randomDisplacement(nd, 0.01, 1), "elastic");
     checkTangent(c, unsymmetric, randomDisplacement(nd, 0.01, 2), "unsymmetric law");
     // Strains around 1 %, five times the yield strain: every point plastic.
     checkTangent(c, plastic, randomDisplacement(nd, 0.02, 3), "plastic");
+    checkTangent(c, perfect, randomDisplacement(nd, 0.02, 4), "perfectly plastic");
   }
 }
 
