@@ -346,6 +346,16 @@ void Problem::completeIncrement(Vector& dx) const {
   symmetry_->project(dx.getDataNonConst(0).getRawPtr());
 }
 
+double Problem::internalForceNorm() const {
+  if (internalForceNorm_ >= 0) return internalForceNorm_;
+  Vector overlap(dofs_->overlapMap()), owned(dofs_->ownedMap());
+  auto data = overlap.getDataNonConst(0);
+  std::copy(internalForces_.begin(), internalForces_.end(), data.begin());
+  owned.doExport(overlap, *exporter_, Tpetra::ADD);
+  internalForceNorm_ = owned.norm2();
+  return internalForceNorm_;
+}
+
 double Problem::modelSize() const {
   // Twice the largest distance of a node from the nodes' centroid: a box's diagonal, and unlike
   // the bounding box's diagonal the same for a rotated copy of the model (so Newton is too).
@@ -534,9 +544,8 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     auto data = rOverlap.getDataNonConst(0);
     std::copy(r.begin(), r.end(), data.begin());
   }
-  residual->putScalar(0.0);
-  residual->doExport(rOverlap, *exporter_, Tpetra::ADD);
-  internalForceNorm_ = residual->norm2();
+  internalForces_ = r;
+  internalForceNorm_ = -1;
   {
     auto data = rOverlap.getDataNonConst(0);
     for (std::size_t i = 0; i < r.size(); ++i)

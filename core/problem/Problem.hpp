@@ -93,7 +93,8 @@ class Problem : public NonlinearSystem {
   // Assembles R(u, t) into `residual` (if not null) and K(u) into tangent() when requested.
   void assemble(const Vector& u, double t, Vector* residual, bool withTangent) override;
   AssemblyFailure assemblyFailure() const override { return assemblyFailure_; }
-  double internalForceNorm() const override { return internalForceNorm_; }
+  // Collective (an export and a reduction the first time after an assembly).
+  double internalForceNorm() const override;
   // Reactions of the Dirichlet conditions (those of the symmetry planes normal to an axis
   // among them), then of the inclined symmetry planes, at the last assemble() with a residual,
   // plus what addToReactions added since (the contact forces at supported nodes).
@@ -232,7 +233,11 @@ class Problem : public NonlinearSystem {
   Teuchos::RCP<Import> importer_;
   std::vector<Reaction> reactions_, springForces_;
   AssemblyFailure assemblyFailure_;
-  double internalForceNorm_ = 0;
+  // The last residual assembly's internal forces on this rank's overlap dofs, and their summed
+  // norm once asked for (negative until then): the export is paid once per request, not per
+  // assembly.
+  std::vector<double> internalForces_;
+  mutable double internalForceNorm_ = -1;
 };
 
 }  // namespace contactlab
