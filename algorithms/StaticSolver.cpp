@@ -383,14 +383,14 @@ void account(const StepReport& sr, RunReport& report) {
 }  // namespace
 
 double StaticSolver::stepEnd(double t, double dt) const {
-  // The next nominal time k End Time / Steps after t, and the first landing time before it:
+  // The end of t's nominal step (k End Time / Steps or an entry of Times), and the first
+  // landing time before it:
   // after cuts and regrowth the steps drift off the nominal grid, and a step from t = 0.9375
   // to 1.1875 passed the peak of the hex27 tube's load table at t = 1 (Backtrack run: 297 N of
   // residual contact force where the steps that land on t = 1 give 358 N).
-  const double nominal = options_.endTime / options_.steps;
-  const double margin = 1e-9 * nominal;
-  double stop = (std::floor(t / nominal + 1e-9) + 1) * nominal;
-  if (stop > options_.endTime - margin) stop = options_.endTime;  // no sliver of a last step
+  const StaticSolverOptions::NominalStep nominal = options_.nominalStep(t);
+  const double margin = 1e-9 * nominal.length;
+  double stop = nominal.end;
   for (double landing : options_.landingTimes)
     if (landing > t + margin && landing < stop - margin) stop = landing;
   return t + dt > stop - margin ? stop : t + dt;
@@ -412,9 +412,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     ~StaticAfterRun() { slowDynamics.end(system); }
   } staticAfterRun{slowDynamics_, problem_};
   auto x = problem_.createVector();
-  const double nominal = options_.endTime / options_.steps;
-  const double smallest = std::ldexp(nominal, -options_.maxCuts);
-  double t = start.time, dt = start.stepSize > 0 ? start.stepSize : nominal;
+  double t = start.time;
+  double dt = start.stepSize > 0 ? start.stepSize : options_.nominalStep(t).length;
   int cuts = 0;  // in a row, for the current step
   const double updateLimit = options_.maxUpdate * problem_.modelSize();
   while (t < options_.endTime * (1 - 1e-12)) {
@@ -423,6 +422,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     sr.cuts = cuts;
     sr.time = stepEnd(t, dt);
     const double h = sr.time - t;  // dt, or less where the step lands on a time it must not pass
+    const double nominal = options_.nominalStep(t).length;
+    const double smallest = std::ldexp(nominal, -options_.maxCuts);
     // The floor: a run whose every step converges only after a cut would otherwise halve dt
     // without end and creep towards a time it never reaches (measured: the elasto-plastic
     // 3D ironing, 1e-5 steps at t = 0.8124 after an hour).
@@ -539,7 +540,7 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
                            (cuts == options_.maxCuts
                                 ? "after " + std::to_string(cuts) + " cuts (Load Steps/Max Cuts)"
                                 : "at dt = " + scientificText(dt) +
-                                      ", the smallest step (End Time / Steps / 2^Max Cuts)") +
+                                      ", the smallest step (its nominal step / 2^Max Cuts)") +
                            "; last: " + report.message;
         } else if (iteratesFailedToConverge(report.failure)) {
           // A failed step is not cut by default (studies count failures); say how to cut it.
@@ -564,6 +565,10 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;
+    // Into a nominal step of another length (Load Steps/Times): the same fraction of it, so
+    // that steps without cuts end on each entry.
+    if (const double next = options_.nominalStep(sr.time).length; next != nominal)
+      sr.nextStepSize *= next / nominal;
     sr.loadReference = loadReference_;
     sr.run = report.totals();
     const auto t0 = std::chrono::steady_clock::now();

@@ -45,6 +45,9 @@ class SolidAlonePredictor;
 struct StaticSolverOptions {
   int steps = 1;
   double endTime = 1.0;
+  // The instants the steps end on (Load Steps/Times: increasing, the last one endTime), in
+  // place of `steps` equal ones; empty: k endTime / steps.
+  std::vector<double> times;
   int maxCuts = 0;  // bisections of a failed step (0: a failed step ends the run)
   // Load times a step must end on, besides the nominal ones k End Time / Steps: the kinks of
   // the load functions, output times (in any order; those outside (0, End Time) are ignored).
@@ -94,6 +97,16 @@ struct StaticSolverOptions {
   double grazingTolerance = 1e-6;
   GeometricTerms geometricTerms = GeometricTerms::pairing;  // with the geometry in Newton
   SlowDynamicsOptions slowDynamics;  // the regularization this solver applies (SlowDynamics)
+
+  // The number of steps the load is divided into when no step is cut.
+  int requestedSteps() const { return times.empty() ? steps : static_cast<int>(times.size()); }
+  // The nominal step that holds time t: [k endTime / steps, (k+1) endTime / steps], or the
+  // interval between two entries of `times` (the first from 0). A step that starts at t is
+  // never longer, and never cut below its length / 2^maxCuts.
+  struct NominalStep {
+    double end = 0, length = 0;
+  };
+  NominalStep nominalStep(double t) const;
 
   static Teuchos::RCP<const Teuchos::ParameterList> validLoadSteps();
   static Teuchos::RCP<const Teuchos::ParameterList> validNewton();
@@ -207,8 +220,8 @@ class StaticSolver {
   // > 0 scales every longer Newton update down to it (NewtonRequest::maxUpdate).
   bool solveStep(NewtonMethod& newton, const Vector& u, Vector& x, StepReport& sr,
                  RunReport& report, const IterationCallback& onIteration, double maxUpdate = 0);
-  // The end of a step of size dt from t: t + dt, or the first nominal or landing time after t
-  // when t + dt would pass it.
+  // The end of a step of size dt from t: t + dt, or the end of t's nominal step or the first
+  // landing time after t when t + dt would pass it.
   double stepEnd(double t, double dt) const;
   // The tangent predictor from the converged state u to the step's time, when the prescribed
   // values moved: x (u with the new prescribed values on entry) becomes u + du with

@@ -7,6 +7,8 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace contactlab {
@@ -23,20 +25,66 @@ Teuchos::RCP<Teuchos::StringValidator> presetChoices() {
   return Teuchos::rcp(new Teuchos::StringValidator(names));
 }
 
+// Load Steps/Times into o.times; with it, End Time is its last entry (given or not) and Steps
+// must be left at 1.
+void readTimes(const Teuchos::ParameterList& loadSteps, StaticSolverOptions& o) {
+  for (double t : loadSteps.get<Teuchos::Array<double>>("Times")) {
+    if (!(t > (o.times.empty() ? 0.0 : o.times.back())) || !std::isfinite(t))
+      throw std::invalid_argument(
+          "Load Steps/Times must be finite, > 0 and increase (" + numberText(t) +
+          (o.times.empty() ? "" : " after " + numberText(o.times.back())) + ")");
+    o.times.push_back(t);
+  }
+  if (o.times.empty()) return;
+  if (o.steps != 1)
+    throw std::invalid_argument(
+        "Load Steps: Steps and Times both given; Times sets the steps (one ends on each entry): "
+        "leave Steps out");
+  const double end = o.times.back();
+  const bool endGiven = !loadSteps.getEntry("End Time").isDefault();
+  if (endGiven && std::abs(o.endTime - end) > 1e-12 * end)
+    throw std::invalid_argument("Load Steps/End Time (" + numberText(o.endTime) +
+                                ") is not the last entry of Load Steps/Times (" + numberText(end) +
+                                "): leave End Time out, or end Times there");
+  o.endTime = end;
+}
+
 }  // namespace
+
+StaticSolverOptions::NominalStep StaticSolverOptions::nominalStep(double t) const {
+  NominalStep s;
+  if (times.empty()) {
+    const double nominal = endTime / steps;
+    s.end = (std::floor(t / nominal + 1e-9) + 1) * nominal;
+    if (s.end > endTime - 1e-9 * nominal) s.end = endTime;  // no sliver of a last step
+    s.length = nominal;
+    return s;
+  }
+  const auto next = std::upper_bound(times.begin(), times.end(), t + 1e-9 * endTime);
+  const auto end = next == times.end() ? times.end() - 1 : next;
+  s.end = *end;
+  s.length = s.end - (end == times.begin() ? 0.0 : *(end - 1));
+  return s;
+}
 
 Teuchos::RCP<const Teuchos::ParameterList> StaticSolverOptions::validLoadSteps() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Load Steps"));
   p->set("Steps", 1, "Number of equal load steps from t = 0 to End Time (>= 1)");
   p->set("End Time", 1.0, "Pseudo-time at the end of the load (> 0); ramps reach 1 there");
+  p->set("Times", Teuchos::Array<double>(),
+         "The instants the steps end on, in place of Steps equal ones (code_aster's "
+         "DEFI_LIST_REEL): increasing, > 0, e.g. [0.01, 0.05, 0.15, 0.4, 1]; the last is the "
+         "end of the load (End Time, which may be left out). Each interval between two entries "
+         "(the first from 0) is then one nominal step. Steps must be left at 1");
   p->set("Max Cuts", 0,
          "A step that fails is cut in two and retried, up to this many times in a row (>= 0; "
          "0: a failed step ends the run). After a step converges without a cut the step "
-         "doubles again, up to End Time / Steps. No step is cut below End Time / Steps / "
-         "2^Max Cuts: a run whose every step needs a cut ends there (step-too-small). Cut or "
-         "not, a step ends on every multiple of End Time / Steps, kink of a load function "
-         "(a ramp's start and stop, a table's times) and Output/Contact Times entry it would "
-         "pass");
+         "doubles again, up to its nominal step (End Time / Steps, or the interval of Times it "
+         "lies in). No step is cut below its nominal step / 2^Max Cuts: a run whose every step "
+         "needs a cut ends there (step-too-small). Cut or not, a step ends on every nominal "
+         "step's end (a multiple of End Time / Steps, or an entry of Times), kink of a load "
+         "function (a ramp's start and stop, a table's times) and Output/Contact Times entry it "
+         "would pass");
   return p;
 }
 
@@ -228,6 +276,7 @@ StaticSolverOptions StaticSolverOptions::from(const Teuchos::ParameterList& load
   StaticSolverOptions o;
   o.steps = loadSteps.get<int>("Steps");
   o.endTime = loadSteps.get<double>("End Time");
+  readTimes(loadSteps, o);
   o.maxCuts = loadSteps.get<int>("Max Cuts");
   o.maxIterations = newton.get<int>("Max Iterations");
   o.relativeTolerance = newton.get<double>("Relative Tolerance");

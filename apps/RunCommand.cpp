@@ -315,7 +315,7 @@ int runCommand(const RunOptions& options, const Teuchos::RCP<const Comm>& comm) 
   const std::string outDir = from.restart                      ? options.restartDirectory
                              : options.outputDirectory.empty() ? sm.outputDirectory
                                                                : options.outputDirectory;
-  const int steps = sm.solverOptions.steps;
+  const int steps = sm.solverOptions.requestedSteps();
   NonlinearSystem& system = contact ? static_cast<NonlinearSystem&>(*contact) : *problem;
   const long long multipliers = contact ? static_cast<long long>(contact->numMultipliers()) : 0;
   console.info(sm.scene.name + ": " + std::to_string(problem->dofs().numGlobalDofs()) + " dofs" +

@@ -190,7 +190,7 @@ JsonValue SummaryJson::build(const RunReport& report, const RunRecord& record,
       .set("contact_points", contact_ ? static_cast<long long>(contact_->numPoints()) : 0LL)
       .set("ranks", ranks)
       .set("load_steps", JsonValue::object()
-                             .set("requested", sm_.solverOptions.steps)
+                             .set("requested", sm_.solverOptions.requestedSteps())
                              .set("converged", report.steps)
                              .set("cuts", report.cuts)
                              .set("line_search_retries", report.lineSearchRetries)

@@ -230,7 +230,10 @@ void validateAndSetDefaults(ParameterList& user, const ParameterList& valid,
       ParameterList& sub = user.sublist(key);
       validateAndSetDefaults(sub, valid.sublist(key), where, join(path, key));
     } else {
+      // Marked as a default (ParameterEntry::isDefault): a reader may tell a value left out
+      // from the same value given.
       user.setEntry(key, v);
+      user.getEntry(key).setAnyValue(v.getAny(), true);
     }
   }
 }

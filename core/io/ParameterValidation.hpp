@@ -11,7 +11,8 @@
 namespace contactlab {
 
 // Checks every key of `user` against `valid` (recursively), coerces numbers and strings to the
-// valid entry's type, runs the entry's validator, and fills in defaults. Sublists of `valid`
+// valid entry's type, runs the entry's validator, and fills in defaults (marked
+// ParameterEntry::isDefault, unlike the values given). Sublists of `valid`
 // are required to be sublists in `user` too. Throws InputError naming `where` (a file name) and
 // the key path, e.g. "scene.yaml: unknown key 'Youngs' in Materials/body/linear-elastic; valid
 // keys: E, nu, density".

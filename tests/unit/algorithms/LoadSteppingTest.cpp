@@ -6,6 +6,7 @@
 // Steps and every landing time (a load table's kink) it would pass. A one-unknown system
 // R(x) = x - t; the scripted Newtons either fail with a given reason or put x at the root.
 #include "algorithms/StaticSolver.hpp"
+#include "core/io/ParameterValidation.hpp"
 
 #include <Tpetra_Core.hpp>
 
@@ -204,6 +205,19 @@ TEST(LineSearchRetry, AFailedRetryNamesBothAttempts) {
   EXPECT_EQ(report.lineSearchRetries, 1);
 }
 
+// The times of the converged steps of a run of `o` on RootAtTimeSystem.
+std::vector<double> convergedTimes(NewtonMethod& newton, const StaticSolverOptions& o) {
+  RootAtTimeSystem system;
+  auto u = system.createVector();
+  std::vector<double> converged;
+  const RunReport report =
+      StaticSolver(system, nullptr, newton, o).run(*u, [&](const StepReport& sr, const Vector&) {
+        converged.push_back(sr.time);
+      });
+  EXPECT_TRUE(report.converged) << report.message;
+  return converged;
+}
+
 // The step to 0.25 fails twice: cut to 0.125, then from there to 0.1875; the steps regrow
 // (0.0625, 0.125, 0.25), and the one from 0.375 would end at 0.625, past the nominal time 0.5
 // and a table's peak at 0.55: the steps land on both.
@@ -212,18 +226,73 @@ TEST(LoadStepping, StepsLandOnTheNominalTimesAndTheLandingTimes) {
   StaticSolverOptions o = options("never", 2);
   o.steps = 4;
   o.landingTimes = {0.55, 2.0, -1.0};  // outside (0, End Time): ignored
-  RootAtTimeSystem system;
-  auto u = system.createVector();
-  std::vector<double> converged;
-  const RunReport report =
-      StaticSolver(system, nullptr, newton, o).run(*u, [&](const StepReport& sr, const Vector&) {
-        converged.push_back(sr.time);
-      });
-  ASSERT_TRUE(report.converged) << report.message;
+  const std::vector<double> converged = convergedTimes(newton, o);
   const std::vector<double> expected{0.125, 0.1875, 0.25, 0.375, 0.5, 0.55, 0.75, 1.0};
   ASSERT_EQ(converged.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i)
     EXPECT_NEAR(converged[i], expected[i], 1e-12) << i;
+}
+
+// Load Steps/Times: the steps end on each entry when none fails, and a cut in one interval
+// leaves the next interval's step whole (the fraction of its nominal step carries over).
+TEST(LoadStepping, StepsEndOnEveryEntryOfTimes) {
+  ScriptedNewton newton("");
+  StaticSolverOptions o = options("never", 2);
+  o.steps = 1;
+  o.times = {0.002, 0.01, 0.0158, 0.15, 0.2, 1.0};
+  const std::vector<double> converged = convergedTimes(newton, o);
+  ASSERT_EQ(converged.size(), o.times.size());
+  for (std::size_t i = 0; i < o.times.size(); ++i)
+    EXPECT_NEAR(converged[i], o.times[i], 1e-14) << i;
+  EXPECT_EQ(o.requestedSteps(), 6);
+}
+
+// The step to 0.4 (its interval 0.3 long) fails once: cut to 0.25, then 0.4; the next interval
+// (0.6) is taken whole.
+TEST(LoadStepping, ACutStaysInItsIntervalOfTimes) {
+  ScriptedNewton newton("max-iterations", {0.4});
+  StaticSolverOptions o = options("never", 1);
+  o.steps = 1;
+  o.times = {0.1, 0.4, 1.0};
+  const std::vector<double> converged = convergedTimes(newton, o);
+  const std::vector<double> expected{0.1, 0.25, 0.4, 1.0};
+  ASSERT_EQ(converged.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(converged[i], expected[i], 1e-14) << i;
+}
+
+TEST(LoadStepping, TimesAreValidated) {
+  const auto from = [](const Teuchos::ParameterList& loadSteps) {
+    return StaticSolverOptions::from(loadSteps, *StaticSolverOptions::validNewton(),
+                                     *StaticSolverOptions::validAlgorithm());
+  };
+  const auto loadSteps = [](const std::vector<double>& times) {
+    Teuchos::ParameterList given;
+    given.set("Times", Teuchos::Array<double>(times));
+    validateAndSetDefaults(given, *StaticSolverOptions::validLoadSteps(), "scene.yaml");
+    return given;
+  };
+  // End Time left out: the last entry.
+  EXPECT_EQ(from(loadSteps({0.5, 2.5})).endTime, 2.5);
+  EXPECT_EQ(from(loadSteps({0.5, 2.5})).times, (std::vector<double>{0.5, 2.5}));
+  const auto refused = [&](const Teuchos::ParameterList& list, const std::string& words) {
+    try {
+      from(list);
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused(loadSteps({0.5, 0.2}), "must be finite, > 0 and increase (0.2 after 0.5)");
+  refused(loadSteps({0.0, 1.0}), "must be finite, > 0 and increase (0)");
+  Teuchos::ParameterList withSteps = loadSteps({0.5, 1.0});
+  withSteps.set("Steps", 4);
+  refused(withSteps, "Steps and Times both given");
+  Teuchos::ParameterList withEnd = loadSteps({0.5, 2.0});
+  withEnd.set("End Time", 1.0);  // given: it must agree
+  refused(withEnd, "End Time (1) is not the last entry of Load Steps/Times (2)");
+  withEnd.set("End Time", 2.0);
+  EXPECT_EQ(from(withEnd).endTime, 2.0);
 }
 
 }  // namespace
