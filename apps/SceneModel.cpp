@@ -13,6 +13,7 @@
 #include "core/mesh/MeshBroadcast.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "core/problem/CollectiveError.hpp"
+#include "core/problem/Problem.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
@@ -432,6 +433,13 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
       throw InputError(where + ": Materials/" + block + ": " + e.what());
     }
     sm.model.elementTechnologies[block] = m.get<std::string>("Element Technology");
+  }
+  // Before anything reads the blocks' materials (the contact's automatic coefficients): a
+  // material under another name than its block's is named as such.
+  try {
+    checkBlockMaterials(sm.model);
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
   }
 
   const double endTime = sm.solverOptions.endTime;

@@ -2,6 +2,7 @@
 too, as the CI runs), with the output captured. Imported by scripts in tests/app and
 tests/verification (they put tests/ on sys.path)."""
 import argparse
+import csv
 import json
 import os
 import shutil
@@ -39,6 +40,19 @@ def required_summary(exe, scene, out, sets, name):
     if summary is None:
         sys.exit(f"FAIL: {name} wrote no summary.json\n{run.stderr}")
     return summary
+
+
+def converged_steps(exe, scene, out, sets, name):
+    """required_summary of a run that must converge (FAIL with its failure otherwise) and its
+    steps.csv rows, after printing "NAME: converged in N Newton iterations, M steps"."""
+    summary = required_summary(exe, scene, out, sets, name)
+    if not summary["converged"]:
+        sys.exit(f"FAIL: {name}: {summary['failure']}: {summary['message']}")
+    with open(os.path.join(out, "steps.csv")) as f:
+        rows = list(csv.DictReader(f))
+    print(f"{name}: converged in {summary['iterations']['newton']} Newton iterations, "
+          f"{len(rows)} steps")
+    return summary, rows
 
 
 def outcome(name, summary):

@@ -222,13 +222,12 @@ void Problem::checkElementGeometry() const {
 
 Problem::~Problem() = default;
 
-void Problem::checkModel() const {
-  const Mesh& mesh = *model_.mesh;
+void checkBlockMaterials(const SolidModel& model) {
+  const Mesh& mesh = *model.mesh;
   const std::string where = "mesh " + mesh.source;
-  for (const auto& name : mesh.blockNames())
-    if (!model_.materials.count(name))
-      throw InputError("block '" + name + "' of " + where + " has no material");
-  for (const auto& [name, material] : model_.materials)
+  // A material under a name no block has first: the likely slip, and the block it was meant for
+  // then has none.
+  for (const auto& [name, material] : model.materials)
     if (mesh.findBlocks(name).empty()) {
       std::string blocks;
       for (const auto& b : mesh.blockNames())
@@ -236,6 +235,15 @@ void Problem::checkModel() const {
       throw InputError("material given for block '" + name + "', which is not in " + where +
                        "; its blocks are: " + blocks);
     }
+  for (const auto& name : mesh.blockNames())
+    if (!model.materials.count(name))
+      throw InputError("block '" + name + "' of " + where + " has no material");
+}
+
+void Problem::checkModel() const {
+  const Mesh& mesh = *model_.mesh;
+  const std::string where = "mesh " + mesh.source;
+  checkBlockMaterials(model_);
   auto checkGroup = [&](const std::string& kind, const std::string& name,
                         const std::string& group) {
     try {

@@ -66,6 +66,10 @@ struct Reaction {
   std::array<double, 3> force{};  // sum of reactions over its nodes (global)
 };
 
+// Every element block of the model's mesh has a material and every material names a block;
+// throws InputError naming the block (and the mesh's blocks) otherwise.
+void checkBlockMaterials(const SolidModel& model);
+
 class Problem : public NonlinearSystem {
  public:
   // Partitions the mesh, builds the maps and the matrix graph, and checks the model: every

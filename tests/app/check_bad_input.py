@@ -146,6 +146,16 @@ cases = [
          "    p: {Type: pressure, Group: top, Value: 1.0}\n", "    g: {Type: body-force, Vector: [0, -1]}\n"),
      [], ["inverted", "element 1 (gmsh tag 4)", "block 'body'", "inverted.msh"]),
     ("bad --set", GOOD, ["--set", "Mesh/rectangle/nx"], ["--set", "key=value"]),
+    # A material under another name than its block's, where the contact's automatic coefficients
+    # (which read the blocks' materials) come first, with and without friction.
+    ("material names no block, contact automatic",
+     contact_with("augmented-lagrangian: {Normal Augmentation: 100.0}", "augmented-lagrangian: {}")
+     .replace("    body:\n      Type: linear-elastic", "    bdy:\n      Type: linear-elastic"), [],
+     ["material given for block 'bdy'", "its blocks are: body"]),
+    ("material names no block, friction",
+     contact_with("Slave: bottom", "Slave: bottom\n      Friction: 0.3")
+     .replace("    body:\n      Type: linear-elastic", "    bdy:\n      Type: linear-elastic"), [],
+     ["material given for block 'bdy'", "its blocks are: body"]),
     ("load times decreasing", GOOD + "  Load Steps: {Times: [0.5, 0.2, 1]}\n", [],
      ["Load Steps/Times", "increase (0.2 after 0.5)"]),
     ("load times and steps", GOOD + "  Load Steps: {Times: [0.5, 1], Steps: 4}\n", [],

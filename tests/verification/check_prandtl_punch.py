@@ -21,7 +21,6 @@ CASE:
           perfectly plastic block that never reaches a limit).
 Prints "RESULT ..." lines for doc/verification.md."""
 import argparse
-import csv
 import math
 import os
 import sys
@@ -29,7 +28,7 @@ import sys
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from contactlab_run import required_summary  # noqa: E402
+from contactlab_run import converged_steps  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("app"); ap.add_argument("scene"); ap.add_argument("out")
@@ -47,16 +46,9 @@ p_limit = (2.0 + math.pi) * sigma_y / math.sqrt(3.0)
 
 def pressures(out, sets, name):
     """The run's (time, mean pressure / p_L) per converged step."""
-    summary = required_summary(args.app, args.scene, out, sets, name)
-    if not summary["converged"]:
-        sys.exit(f"FAIL: {name}: {summary['failure']}: {summary['message']}")
-    with open(os.path.join(out, "steps.csv")) as f:
-        rows = list(csv.DictReader(f))
-    curve = [(float(r["time"]), 2.0 * float(r["normal_force"]) / args.width / p_limit)
-             for r in rows]
-    print(f"{name}: converged in {summary['iterations']['newton']} Newton iterations, "
-          f"{len(rows)} steps")
-    return curve
+    _, rows = converged_steps(args.app, args.scene, out, sets, name)
+    return [(float(r["time"]), 2.0 * float(r["normal_force"]) / args.width / p_limit)
+            for r in rows]
 
 
 failures = []
