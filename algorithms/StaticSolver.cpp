@@ -260,6 +260,10 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
     sr.residual = norm;
     progress.iteration = solves + iteration;
     progress.residual = norm;
+    if (controls_) {
+      progress.statusChanges = iteration == 0 ? 0 : controls_->statusChanges();
+      progress.contactResidual = controls_->constraintResidual();
+    }
     if (onIteration) onIteration(progress);
     progress.treatedPoints = 0;
     progress.restartedBy = "";
@@ -272,6 +276,7 @@ bool StaticSolver::solveStep(NewtonMethod& newton, const Vector& u, Vector& x, S
   request.maxUpdate = maxUpdate;
   request.stallIterations = maxUpdate > 0 ? 0 : options_.stallIterations;
   request.roundoffStop = true;
+  progress.target = request.target;
   for (;;) {
     const NewtonOutcome outcome = newton.solve(x, request, observer);
     solves += outcome.iterations;

@@ -197,6 +197,12 @@ class StaticSolver {
     // At a Newton solve's first iterate: the fixed point whose update restarted Newton
     // ("statuses", "thresholds", "geometry"), or "".
     const char* restartedBy = "";
+    // What the iterate is measured against: the step's target, and (with contact) the status
+    // changes and the contact rows' norm as forces at this iterate (ContactControls): below the
+    // target with either left, Newton goes on (contactSettled).
+    double target = 0;
+    int statusChanges = 0;
+    double contactResidual = 0;
   };
   using IterationCallback = std::function<void(const IterateProgress&)>;
 

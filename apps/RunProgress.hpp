@@ -34,6 +34,19 @@ class RunProgress {
     if (*p.restartedBy) notes += std::string("  after a ") + p.restartedBy + " update";
     if (p.treatedPoints > 0)
       notes += "  cycling treatment at " + std::to_string(p.treatedPoints) + " point(s)";
+    // Below the target and still going: what Newton waits for (a status that keeps changing at
+    // a converged residual is a stall the line alone would not explain).
+    if (p.iteration > 0 && p.residual <= p.target &&
+        (p.statusChanges > 0 || p.contactResidual > p.target)) {
+      char wait[128];
+      if (p.statusChanges > 0)
+        std::snprintf(wait, sizeof wait, "  below the target %.1e; %d contact status(es) changed",
+                      p.target, p.statusChanges);
+      else
+        std::snprintf(wait, sizeof wait, "  below the target %.1e; contact rows %.1e above it",
+                      p.target, p.contactResidual);
+      notes += wait;
+    }
     char line[256];
     std::snprintf(line, sizeof line,
                   "    step %d  t = %g  iteration %d  |R| = %.3e  elapsed %.1f s", p.step, p.time,
