@@ -11,7 +11,7 @@ sphere and a rigid flat", J. Appl. Mech. 69 (2002) 657-662:
 
 At omega/omega_c = 6, where the two fits differ by 2 %, the nearer one is taken. The force is the
 contact's normal force per full ring (steps.csv), the interference the flat's prescribed
-displacement at the step's time.
+displacement at the step's time (a ramp to the scene's travel at its last load time).
 
 usage: check_sphere_indentation.py CONTACTLAB SCENE OUTDIR TOL [--size-factor F ...]
                                    [--set key=value ...]
@@ -41,6 +41,7 @@ material = scene["Materials"]["sphere"]["j2-small-strain"]
 E, nu, sigma_y = (float(material[k]) for k in ("E", "nu", "Yield Stress"))
 R = 1.0  # the .geo's radius
 travel = -float(scene["Dirichlet"]["press"]["Value"])
+end_time = float(scene["Load Steps"]["Times"][-1])  # the press reaches `travel` there
 K, H, E_eff = 0.454 + 0.41 * nu, 2.8 * sigma_y, E / (1 - nu ** 2)
 omega_c = (math.pi * K * H / (2 * E_eff)) ** 2 * R
 P_c = 2.0 / 3.0 * math.pi * K * H * R * omega_c
@@ -59,7 +60,8 @@ def fit_error(ratio, force):
 def forces(out, sets, name):
     """The run's (omega / omega_c, normal force) per converged step."""
     _, rows = converged_steps(args.app, args.scene, out, sets, name)
-    return [(float(r["time"]) * travel / omega_c, float(r["normal_force"])) for r in rows]
+    return [(float(r["time"]) / end_time * travel / omega_c, float(r["normal_force"]))
+            for r in rows]
 
 
 failures = []

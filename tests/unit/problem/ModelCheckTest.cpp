@@ -44,11 +44,21 @@ TEST(ModelCheck, MissingBoundaryGroupListsTheKnownOnes) {
 
 TEST(ModelCheck, BlockWithoutMaterial) {
   auto model = elasticModel(unitMesh("tri3", 2), 1.0, 0.3, zero, {});
-  model.materials["steel"] = model.materials["body"];
   model.materials.erase("body");
   const std::string m = messageOf(model);
   EXPECT_NE(m.find("block 'body'"), std::string::npos) << m;
   EXPECT_NE(m.find("no material"), std::string::npos) << m;
+}
+
+// A material under a name no block has is named first (the likely slip: its block then has
+// none), with the mesh's blocks.
+TEST(ModelCheck, MaterialForNoBlock) {
+  auto model = elasticModel(unitMesh("tri3", 2), 1.0, 0.3, zero, {});
+  model.materials["steel"] = model.materials["body"];
+  model.materials.erase("body");
+  const std::string m = messageOf(model);
+  EXPECT_NE(m.find("material given for block 'steel'"), std::string::npos) << m;
+  EXPECT_NE(m.find("its blocks are: body"), std::string::npos) << m;
 }
 
 TEST(ModelCheck, SmallStrainBlocksKeepTheDeadPressureAndRefuseAFollower) {
