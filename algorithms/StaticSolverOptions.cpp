@@ -39,7 +39,7 @@ void readTimes(const Teuchos::ParameterList& loadSteps, StaticSolverOptions& o) 
   if (o.steps != 1)
     throw std::invalid_argument(
         "Load Steps: Steps and Times both given; Times sets the steps (one ends on each entry): "
-        "leave Steps out");
+        "leave Steps out, or at 1");
   const double end = o.times.back();
   const bool endGiven = !loadSteps.getEntry("End Time").isDefault();
   if (endGiven && std::abs(o.endTime - end) > 1e-12 * end)

@@ -358,10 +358,9 @@ ParameterList initialStateSection() {
   p.set("Time", "continue",
         "With From: 'continue' starts at the checkpoint's load time and step number and runs "
         "to Load Steps/End Time in its nominal steps (End Time / Steps, or Times; the loads keep "
-        "their time "
-        "functions, with this scene's End Time: a chain equals one long run when they do not "
-        "depend on it, e.g. tables); 'zero' starts the load time and the step count at 0 (a "
-        "new load history on the earlier state)",
+        "their time functions, with this scene's End Time: a chain equals one long run when "
+        "they do not depend on it, e.g. tables); 'zero' starts the load time and the step count "
+        "at 0 (a new load history on the earlier state)",
         choices({"continue", "zero"}));
   return p;
 }

@@ -43,8 +43,8 @@ def required_summary(exe, scene, out, sets, name):
 
 
 def converged_steps(exe, scene, out, sets, name):
-    """required_summary of a run that must converge (FAIL with its failure otherwise) and its
-    steps.csv rows, after printing "NAME: converged in N Newton iterations, M steps"."""
+    """The steps.csv rows of a run that must converge (required_summary; FAIL with its failure
+    otherwise), after printing "NAME: converged in N Newton iterations, M steps"."""
     summary = required_summary(exe, scene, out, sets, name)
     if not summary["converged"]:
         sys.exit(f"FAIL: {name}: {summary['failure']}: {summary['message']}")
@@ -52,7 +52,7 @@ def converged_steps(exe, scene, out, sets, name):
         rows = list(csv.DictReader(f))
     print(f"{name}: converged in {summary['iterations']['newton']} Newton iterations, "
           f"{len(rows)} steps")
-    return summary, rows
+    return rows
 
 
 def outcome(name, summary):

@@ -46,7 +46,7 @@ p_limit = (2.0 + math.pi) * sigma_y / math.sqrt(3.0)
 
 def pressures(out, sets, name):
     """The run's (time, mean pressure / p_L) per converged step."""
-    _, rows = converged_steps(args.app, args.scene, out, sets, name)
+    rows = converged_steps(args.app, args.scene, out, sets, name)
     return [(float(r["time"]), 2.0 * float(r["normal_force"]) / args.width / p_limit)
             for r in rows]
 

@@ -59,7 +59,7 @@ def fit_error(ratio, force):
 
 def forces(out, sets, name):
     """The run's (omega / omega_c, normal force) per converged step."""
-    _, rows = converged_steps(args.app, args.scene, out, sets, name)
+    rows = converged_steps(args.app, args.scene, out, sets, name)
     return [(float(r["time"]) / end_time * travel / omega_c, float(r["normal_force"]))
             for r in rows]
 
