@@ -338,7 +338,8 @@ ParameterList geometrySection() {
         "pressures dead (Follower: false); 2D only) or 'axisymmetric' (the solid of "
         "revolution about the y "
         "axis: x = r >= 0 the radius, y the axial coordinate, as Abaqus CAX and code_aster "
-        "AXIS; small- and finite-strain materials, pressures dead (Follower: false); the zz "
+        "AXIS; small- and finite-strain materials, a pressure on a finite-strain block "
+        "following the current ring as in 2D and 3D; the zz "
         "stress is the hoop stress sigma_tt; every "
         "force, reaction, spring and point load is per full 360 degree ring, so a point load "
         "is a ring load; nodes on the axis need a Dirichlet condition on x; doc/scenes.md)",

@@ -15,11 +15,6 @@ void checkAxisymmetricModel(const SolidModel& model) {
   if (mesh.dim != 2)
     throw InputError("an axisymmetric model needs a 2D mesh (x the radius, y the axis), but " +
                      mesh.source + " is " + std::to_string(mesh.dim) + "D");
-  if (const SurfaceLoad* load = model.followerPressure())
-    throw InputError("load '" + load->name +
-                     "': an axisymmetric model has no follower pressure (on a finite-strain "
-                     "block a pressure follows by default): give it Follower: false, a dead "
-                     "pressure on the reference ring");
   const auto numNodes = static_cast<std::int64_t>(mesh.numNodes());
   double size = 0.0;
   for (std::int64_t n = 0; n < numNodes; ++n)

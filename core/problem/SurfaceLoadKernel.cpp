@@ -94,8 +94,6 @@ void SurfaceLoadKernel::pressure(const double* x, const std::function<double(con
 
 void SurfaceLoadKernel::followerPressure(const double* x, const double* u, double p, double* f,
                                          double* dfdu) const {
-  if (axisymmetric_)
-    throw std::invalid_argument("SurfaceLoadKernel: no follower pressure on axisymmetric facets");
   const int n = numNodes_, D = spaceDim_, refDim = D - 1, nd = numDofs();
   std::fill(f, f + nd, 0.0);
   if (dfdu) std::fill(dfdu, dfdu + nd * nd, 0.0);
@@ -112,10 +110,17 @@ void SurfaceLoadKernel::followerPressure(const double* x, const double* u, doubl
     const double m[3] = {g[0][1] * g[1][2] - g[0][2] * g[1][1],
                          g[0][2] * g[1][0] - g[0][0] * g[1][2],
                          g[0][0] * g[1][1] - g[0][1] * g[1][0]};
+    // Axisymmetric: the ring's area element 2 pi r ds at the current radius r = sum N_a (x + u)_a.
+    double ring = 1.0;
+    if (axisymmetric_) {
+      ring = 0.0;
+      for (int a = 0; a < n; ++a)
+        ring += 2.0 * M_PI * N[a] * (x[3 * a] + u[a * D]);
+    }
     const double s = -p * rule_->weights[q];
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < D; ++i)
-        f[a * D + i] += s * N[a] * m[i];
+        f[a * D + i] += s * ring * N[a] * m[i];
     if (!dfdu) continue;
     for (int b = 0; b < n; ++b) {
       // dm/dx_(b k) = dN_b/dxi_0 (e_k x g_1) + dN_b/dxi_1 (g_0 x e_k) = e_k x c (in 2D only
@@ -129,7 +134,9 @@ void SurfaceLoadKernel::followerPressure(const double* x, const double* u, doubl
         for (int i = 0; i < D; ++i) {
           double* row = dfdu + (a * D + i) * nd + b * D;
           for (int k = 0; k < D; ++k)
-            row[k] += s * N[a] * A[i][k];
+            row[k] += s * N[a] * ring * A[i][k];
+          // d(2 pi r)/du_(b r) = 2 pi N_b: the ring widens with the radial displacement.
+          if (axisymmetric_) row[0] += s * N[a] * 2.0 * M_PI * N[b] * m[i];
         }
     }
   }

@@ -10,7 +10,8 @@
 // 3 coordinates per node; f holds spaceDim() values per node. The default quadrature degree,
 // 2 * order + 1, integrates a constant pressure exactly even on curved facets.
 // Axisymmetric (2D, x the radius): dA = 2 pi r ds, the load on the whole ring
-// (AxisymmetricKernel.hpp); dead loads only (followerPressure throws std::invalid_argument).
+// (AxisymmetricKernel.hpp); a follower pressure there acts on the current ring, 2 pi r ds at the
+// current radius r = x + u_x.
 #include "core/fem/QuadratureRule.hpp"
 #include "core/mesh/ElementType.hpp"
 
@@ -45,7 +46,8 @@ class SurfaceLoadKernel {
   void pressure(const double* x, const std::function<double(const double* x)>& p, double* f) const;
   // Follower pressure p on the facet at its current position x + u (u: spaceDim() values per
   // node): f_a = -p int N_a n da, where n da = (dx/dxi_0 x dx/dxi_1) dxi in 3D and
-  // (dy/dxi, -dx/dxi) dxi per unit thickness in 2D (Nanson's formula on the facet). Unless
+  // (dy/dxi, -dx/dxi) dxi per unit thickness in 2D (Nanson's formula on the facet), times
+  // 2 pi r at the current radius on an axisymmetric facet. Unless
   // dfdu is nullptr, also its derivative dfdu[(a * spaceDim() + i) * numDofs() + b *
   // spaceDim() + k] = df_(a i) / du_(b k): the load stiffness, which is not symmetric in
   // general. At u = 0 the force equals pressure(x, p, f). A facet that the displacement

@@ -34,10 +34,11 @@ Prints "RESULT ..." lines for doc/verification.md."""
 import argparse, csv, json, math, os, shutil, sys
 
 import numpy as np
-import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from contactlab_run import contactlab_run, read_grid, result_frames  # noqa: E402
+from annular_cells import (cell_average, polar_cells, pressurized_ring_sector,  # noqa: E402
+                           radial_displacements, to_polar as toPolar)
 
 ap = argparse.ArgumentParser()
 ap.add_argument("exe"); ap.add_argument("scene"); ap.add_argument("out")
@@ -64,13 +65,8 @@ ap.add_argument("--profile-tol", type=float, default=0.01,
 ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
-scene = yaml.safe_load(open(args.scene))["contactlab"]
-mesh = scene["Mesh"]["ring-sector"]
-material = scene["Materials"]["body"]["j2-small-strain"]
-a, b = float(mesh["Inner Radius"]), float(mesh["Outer Radius"])
-E, nu, sy = float(material["E"]), float(material["nu"]), float(material["Yield Stress"])
+mesh, material, a, b, E, nu, sy, p = pressurized_ring_sector(args.scene)
 H = float(material.get("Isotropic Hardening Modulus", 0.0))
-p = float(scene["Loads"]["bore"]["Value"])
 sets = list(args.set)
 if args.pressure is not None:
     p = args.pressure
@@ -143,29 +139,7 @@ class Hill:
     def cellAverage(self, r1, r2, t1, t2):
         """Average of the Cartesian stress (xx, yy, zz, xy) over the annular cell, rotated back
         to polar components at the middle angle: what the cell's Voigt average becomes."""
-        x, w = np.polynomial.legendre.leggauss(12)
-        cuts = [r1] + ([self.c] if r1 < self.c < r2 else []) + [r2]
-        total, area = np.zeros(4), 0.0
-        for lo, hi in zip(cuts[:-1], cuts[1:]):
-            for xr, wr in zip(x, w):
-                r = lo + (hi - lo) * (xr + 1) / 2
-                sr, st, sz = self.stress(r)
-                for xt, wt in zip(x, w):
-                    t = t1 + (t2 - t1) * (xt + 1) / 2
-                    weight = wr * wt * r * (hi - lo) * (t2 - t1) / 4
-                    cs, sn = math.cos(t), math.sin(t)
-                    total += weight * np.array([sr * cs * cs + st * sn * sn,
-                                                sr * sn * sn + st * cs * cs, sz,
-                                                (sr - st) * sn * cs])
-                    area += weight
-        return toPolar(total / area, 0.5 * (t1 + t2))
-
-
-def toPolar(s, t):
-    """(xx, yy, zz, xy) -> (r, theta, z) at angle t."""
-    cs, sn = math.cos(t), math.sin(t)
-    return np.array([s[0] * cs * cs + s[1] * sn * sn + 2 * s[3] * sn * cs,
-                     s[0] * sn * sn + s[1] * cs * cs - 2 * s[3] * sn * cs, s[2]])
+        return cell_average(self.stress, r1, r2, t1, t2, kinks=[self.c])
 
 
 ref = Hill(a, b, E, nu, sy, H, p)
@@ -199,18 +173,9 @@ assert summary["converged"] is True and summary["failure"] is None
 # The last result: cells with their radial and angular extent, stress and plastic strain.
 grid = read_grid(result_frames(args.out)[-1][1])
 stress = grid.GetCellData().GetArray("stress")
-plastic = grid.GetCellData().GetArray("equivalent_plastic_strain")
-assert stress is not None and plastic is not None
-cells = []
-for i in range(grid.GetNumberOfCells()):
-    ids = grid.GetCell(i).GetPointIds()
-    pts = np.array([grid.GetPoint(ids.GetId(j))[:2] for j in range(ids.GetNumberOfIds())])
-    r = np.hypot(pts[:, 0], pts[:, 1])
-    t = np.arctan2(pts[:, 1], pts[:, 0])
-    s = stress.GetTuple(i)  # Voigt xx yy zz xy yz xz
-    cells.append(dict(r1=r.min(), r2=r.max(), t1=t.min(), t2=t.max(),
-                      fe=toPolar([s[0], s[1], s[2], s[3]], 0.5 * (t.min() + t.max())),
-                      plastic=plastic.GetTuple1(i)))
+cells = [dict(r1=r1, r2=r2, t1=t1, t2=t2, fe=fe, plastic=plastic)
+         for r1, r2, t1, t2, fe, plastic in polar_cells(grid)]
+assert all(c["plastic"] is not None for c in cells)
 worst = np.zeros(3)
 for cell in cells:
     cell["exact"] = ref.cellAverage(cell["r1"], cell["r2"], cell["t1"], cell["t2"])
@@ -233,15 +198,7 @@ fraction = summary["plasticity"]["plastic_volume_fraction"]
 c_fraction = math.sqrt(a * a + fraction * (b * b - a * a))
 
 # Radial displacements at the inner and outer radius (every node there).
-u = grid.GetPointData().GetArray("displacement")
-radial = {a: [], b: []}
-for i in range(grid.GetNumberOfPoints()):
-    x = grid.GetPoint(i)
-    r = math.hypot(x[0], x[1])
-    for side in radial:
-        if abs(r - side) < 1e-9 * b:
-            d = u.GetTuple(i)
-            radial[side].append((d[0] * x[0] + d[1] * x[1]) / r)
+radial = radial_displacements(grid, (a, b))
 u_error = {side: (np.mean(v) - ref.displacement(side)) / ref.displacement(side)
            for side, v in radial.items()}
 spread = max(np.ptp(v) for v in radial.values()) / ref.displacement(a)

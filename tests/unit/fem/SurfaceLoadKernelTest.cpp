@@ -144,7 +144,9 @@ TEST(SurfaceLoadKernel, PositionDependentLoads) {
 struct DeformedFacet {
   std::vector<double> x, u;
 };
-DeformedFacet deformedFacet(ElementType type, std::mt19937& rng, double amplitude) {
+// A ring (axisymmetric) is moved to x = r in [1.9, 2.1], off the axis.
+DeformedFacet deformedFacet(ElementType type, std::mt19937& rng, double amplitude,
+                            bool ring = false) {
   const int D = info(type).dim + 1;
   DeformedFacet d;
   const auto base = test::distortedNodes(type, 0.08);  // z = 0 for lines, 3D for surfaces
@@ -152,6 +154,9 @@ DeformedFacet deformedFacet(ElementType type, std::mt19937& rng, double amplitud
   if (D == 3)  // lift the surface out of its plane so that every normal component varies
     for (std::size_t a = 0; a < base.size() / 3; ++a)
       d.x[3 * a + 2] += 0.3 * base[3 * a] - 0.2 * base[3 * a + 1] * base[3 * a + 1];
+  if (ring)
+    for (std::size_t a = 0; a < base.size() / 3; ++a)
+      d.x[3 * a] = 2.0 + 0.1 * base[3 * a];
   std::uniform_real_distribution<double> r(-amplitude, amplitude);
   d.u.resize(base.size() / 3 * D);
   for (double& v : d.u)
@@ -159,21 +164,25 @@ DeformedFacet deformedFacet(ElementType type, std::mt19937& rng, double amplitud
   return d;
 }
 
+// The facets a follower pressure acts on, with the 2D lines also as axisymmetric rings.
+const std::pair<ElementType, bool> kFollowerFacets[] = {
+    {ElementType::Line2, false}, {ElementType::Line3, false}, {ElementType::Line2, true},
+    {ElementType::Line3, true},  {ElementType::Tri3, false},  {ElementType::Tri6, false},
+    {ElementType::Quad4, false}, {ElementType::Quad8, false}, {ElementType::Quad9, false}};
+
 TEST(SurfaceLoadKernel, FollowerPressureStiffnessMatchesFiniteDifferences) {
   // Central differences of the follower force against the load stiffness, at random deformed
-  // positions. The force is a polynomial in u of degree spaceDim - 1 (<= 2), so central
-  // differences are exact but for round-off: the tolerance is round-off's.
-  const ElementType types[] = {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
-                               ElementType::Tri6,  ElementType::Quad4, ElementType::Quad8,
-                               ElementType::Quad9};
+  // positions. The force is a polynomial in u of degree spaceDim - 1 (<= 2; axisymmetric
+  // lines: 2, the ring's radius times the normal), so central differences are exact but for
+  // round-off: the tolerance is round-off's.
   std::mt19937 rng(7);
   const double p = 3.7, h = 1e-5;
-  for (ElementType t : types) {
+  for (const auto& [t, axisymmetric] : kFollowerFacets) {
     const int D = info(t).dim + 1;
-    SurfaceLoadKernel kernel(t, D);
+    SurfaceLoadKernel kernel(t, D, -1, axisymmetric);
     const int nd = kernel.numDofs();
     for (int sample = 0; sample < 3; ++sample) {
-      const auto facet = deformedFacet(t, rng, 0.4);
+      const auto facet = deformedFacet(t, rng, 0.4, axisymmetric);
       std::vector<double> f(nd), K(nd * nd), fp(nd), fm(nd), u = facet.u;
       kernel.followerPressure(facet.x.data(), u.data(), p, f.data(), K.data());
       double maxError = 0, maxEntry = test::maxAbs(K);
@@ -186,36 +195,35 @@ TEST(SurfaceLoadKernel, FollowerPressureStiffnessMatchesFiniteDifferences) {
         for (int i = 0; i < nd; ++i)
           maxError = std::max(maxError, std::abs((fp[i] - fm[i]) / (2 * h) - K[i * nd + j]));
       }
-      EXPECT_LT(maxError, 1e-8 * maxEntry) << nameOf(t) << " sample " << sample;
+      EXPECT_LT(maxError, 1e-8 * maxEntry) << nameOf(t) << axisymmetric << " sample " << sample;
       if (sample == 0)
-        std::printf("follower load stiffness %-6s: max |FD - K| / max |K| = %.2e\n",
-                    nameOf(t).c_str(), maxError / maxEntry);
+        std::printf("follower load stiffness %-6s%s: max |FD - K| / max |K| = %.2e\n",
+                    nameOf(t).c_str(), axisymmetric ? " (ring)" : "", maxError / maxEntry);
       // Not symmetric in general.
       double asymmetry = 0;
       for (int i = 0; i < nd; ++i)
         for (int j = 0; j < nd; ++j)
           asymmetry = std::max(asymmetry, std::abs(K[i * nd + j] - K[j * nd + i]));
-      EXPECT_GT(asymmetry, 1e-3 * maxEntry) << nameOf(t);
+      EXPECT_GT(asymmetry, 1e-3 * maxEntry) << nameOf(t) << axisymmetric;
     }
   }
 }
 
 TEST(SurfaceLoadKernel, FollowerPressureIsTheDeadPressureOnTheDeformedFacet) {
-  // At u = 0 it is the dead pressure; at any u, the dead pressure on the moved nodes x + u.
-  const ElementType types[] = {ElementType::Line2, ElementType::Line3, ElementType::Tri3,
-                               ElementType::Tri6,  ElementType::Quad4, ElementType::Quad8,
-                               ElementType::Quad9};
+  // At u = 0 it is the dead pressure; at any u, the dead pressure on the moved nodes x + u
+  // (on a ring, the moved ring: 2 pi r ds at the current radius).
   std::mt19937 rng(11);
-  for (ElementType t : types) {
+  for (const auto& [t, axisymmetric] : kFollowerFacets) {
     const int D = info(t).dim + 1;
-    SurfaceLoadKernel kernel(t, D);
+    SurfaceLoadKernel kernel(t, D, -1, axisymmetric);
     const int nd = kernel.numDofs(), n = kernel.numNodes();
-    const auto facet = deformedFacet(t, rng, 0.3);
+    const auto facet = deformedFacet(t, rng, 0.3, axisymmetric);
     std::vector<double> zero(nd, 0.0), f(nd), g(nd);
     kernel.followerPressure(facet.x.data(), zero.data(), 2.0, f.data(), nullptr);
     kernel.pressure(facet.x.data(), 2.0, g.data());
+    const double scale = std::max(1.0, test::maxAbs(g));
     for (int k = 0; k < nd; ++k)
-      EXPECT_NEAR(f[k], g[k], 1e-13) << nameOf(t);
+      EXPECT_NEAR(f[k], g[k], 1e-13 * scale) << nameOf(t) << axisymmetric;
     std::vector<double> moved = facet.x;
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < D; ++i)
@@ -223,7 +231,7 @@ TEST(SurfaceLoadKernel, FollowerPressureIsTheDeadPressureOnTheDeformedFacet) {
     kernel.followerPressure(facet.x.data(), facet.u.data(), 2.0, f.data(), nullptr);
     kernel.pressure(moved.data(), 2.0, g.data());
     for (int k = 0; k < nd; ++k)
-      EXPECT_NEAR(f[k], g[k], 1e-12) << nameOf(t);
+      EXPECT_NEAR(f[k], g[k], 1e-12 * scale) << nameOf(t) << axisymmetric;
   }
 }
 

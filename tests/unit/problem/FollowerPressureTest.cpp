@@ -1,7 +1,8 @@
 // Follower pressure on finite-strain bodies (SurfaceLoadAssembler.hpp): closed-form
-// homogeneous states of a neo-Hookean cube (square in plane strain) under a pressure on three
-// faces, with symmetry conditions on the other three, for the follower and the dead pressure;
-// Newton's quadratic convergence. The refusal on small-strain blocks is in ModelCheckTest.cpp.
+// homogeneous states of a neo-Hookean cube (square in plane strain, solid cylinder when
+// axisymmetric) under a pressure on three faces, with symmetry conditions on the other three, for
+// the follower and the dead pressure; Newton's quadratic convergence. The refusal on small-strain
+// blocks is in ModelCheckTest.cpp.
 #include "ProblemTestSupport.hpp"
 
 #include "core/materials/NeoHookean.hpp"
@@ -210,6 +211,32 @@ INSTANTIATE_TEST_SUITE_P(EveryFacet, PressurizedCube,
                                        ? "_quadratic"
                                        : "_simo_miehe");
                          });
+
+// The unit square as the axisymmetric solid cylinder 0 <= r <= 1, 0 <= z <= 1: held radially on
+// the axis and axially at the bottom, pressed on its side and top. The homogeneous state is
+// F = diag(lambda, lambda, lambda) (the hoop stretch (R + u_r) / R = lambda too), so the 3D
+// closed forms hold: the follower pressure on the current ring (2 pi r at the current radius)
+// gives sigma = -p I, the dead one P = -p I.
+TEST(FollowerPressure, AxisymmetricCylinderGivesTheHydrostaticClosedForms) {
+  for (const std::string type : {"quad4", "quad8", "tri6"})
+    for (auto volumetric : {NeoHookean::Volumetric::Quadratic, NeoHookean::Volumetric::SimoMiehe})
+      for (auto follower : {SurfaceLoad::Follower::Automatic, SurfaceLoad::Follower::No}) {
+        SolidModel model = pressurizedCube(type, volumetric, follower);
+        model.axisymmetric = true;
+        Problem problem(model, Tpetra::getDefaultComm());
+        const bool follows = follower == SurfaceLoad::Follower::Automatic;
+        EXPECT_EQ(problem.followerLoads().size(), follows ? 2u : 0u);
+        const auto s = solveSteps(problem, 3);
+        ASSERT_TRUE(s.report.converged) << type << ": " << s.report.message;
+        const double lambda = exactStretch(3, volumetric, follows, kPressure);
+        EXPECT_LT(stretchError(problem, *s.u, lambda), 1e-10) << type << " follower " << follows;
+        if (!follows) continue;
+        const auto constants = quadraticConstants(s.residuals.back());
+        EXPECT_FALSE(constants.empty()) << type << ":" << relativeHistory(s.residuals.back());
+        for (double C : constants)
+          EXPECT_LT(C, kQuadraticBound) << type << ":" << relativeHistory(s.residuals.back());
+      }
+}
 
 TEST(FollowerPressure, BentCantileverConvergesQuadratically) {
   // A plane-strain cantilever 4 x 1 (quad8), clamped on the left, under a follower pressure on
