@@ -4,6 +4,7 @@
 #include "core/fem/ReferenceElement.hpp"
 #include "core/materials/Tensor3.hpp"
 #include "core/problem/ElementUpdateError.hpp"
+#include "core/problem/FiniteStrainProducts.hpp"
 #include "core/problem/ProjectedDilatationKernel.hpp"
 #include "core/problem/SlotOperator.hpp"
 
@@ -28,7 +29,7 @@ double positiveJacobian(const std::array<double, 9>& F, int point, const char* w
 }  // namespace
 
 FBarKernel::FBarKernel(ElementType type, bool axisymmetric, int quadratureDegree)
-    : ElementKernel(
+    : PlanarOrRingKernel(
           type, quadratureDegree < 0 ? fullIntegrationDegree(type, axisymmetric) : quadratureDegree,
           axisymmetric) {
   if (type != ElementType::Quad4 && type != ElementType::Hex8)
@@ -42,10 +43,75 @@ FBarKernel::FBarKernel(ElementType type, bool axisymmetric, int quadratureDegree
   ref.shapeDerivatives(centre, centreDNdxi_.data());
 }
 
-void FBarKernel::evaluate(const double* x, const double* u, const Material& material,
-                          const double* stateOld, double* stateNew, double* residual,
-                          double* tangent, double* pointStress, double* averageStress,
-                          const std::optional<double>& temperature) const {
+// Plane strain and 3D: the terms of evaluateRing below through the total-Lagrangian kernel's
+// products (FiniteStrainProducts.hpp); B^T T = sum_J T_iJ dN_a/dX_J over the in-plane slots.
+template <int D>
+void FBarKernel::evaluatePlanar(const double* x, const double* u, const Material& material,
+                                const double* stateOld, double* stateNew, double* residual,
+                                double* tangent, double* pointStress, double* averageStress,
+                                const std::optional<double>& temperature) const {
+  constexpr int ND = kMaxNodes * D;
+  constexpr double nv = D;
+  const int n = numNodes_, nd = D * n;
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
+  double volume = 0.0;
+
+  // F^-T as a row-major tensor, from F and its determinant.
+  auto inverseTranspose = [](const std::array<double, 9>& F, double J) {
+    const auto Finv = tensor3::inverse(F, J);
+    return std::array<double, 9>{Finv[0], Finv[3], Finv[6], Finv[1], Finv[4],
+                                 Finv[7], Finv[2], Finv[5], Finv[8]};
+  };
+  double dNdX[ND];
+  physicalGradients(D, n, x, centreDNdxi_.data(), dNdX);
+  const auto F0 = deformationGradientOf<D>(n, dNdX, u);
+  const double J0 = positiveJacobian(F0, -1, "at the element's centre");
+  double c0[ND] = {};
+  addGradientTransposeProduct<D>(n, dNdX, inverseTranspose(F0, J0).data(), 1.0, c0);
+
+  double centreColumn[ND] = {}, AB[D * D * ND];
+  MaterialInput in;
+  in.temperature = temperature;
+  MaterialOutput out;
+  for (int q = 0; q < numPoints_; ++q) {
+    const double w = gradients(q, x, dNdX);
+    const auto F = deformationGradientOf<D>(n, dNdX, u);
+    const double J = positiveJacobian(F, q, "at a quadrature point");
+    const double alpha = std::pow(J0 / J, 1.0 / nv);
+    in.F = F;
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j)
+        in.F[i * 3 + j] *= alpha;
+    evaluateFiniteStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
+                              averageStress, volume);
+    const double g = std::pow(alpha, 1.0 - nv);
+    if (residual) addGradientTransposeProduct<D>(n, dNdX, out.P.data(), w * g, residual);
+    if (!tangent) continue;
+    addGradientTangent<D>(n, dNdX, out.dPdF.data(), w * g * alpha, AB, tangent, false);
+    std::array<double, 9> AF = {};
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j)
+        for (int k = 0; k < D; ++k)
+          for (int l = 0; l < D; ++l)
+            AF[i * 3 + j] += out.dPdF[(i * 3 + j) * 9 + k * 3 + l] * F[k * 3 + l];
+    double v[ND] = {}, c[ND] = {};
+    addGradientTransposeProduct<D>(n, dNdX, out.P.data(), w * (1.0 - nv) * std::pow(alpha, -nv), v);
+    addGradientTransposeProduct<D>(n, dNdX, AF.data(), w * g, v);
+    addGradientTransposeProduct<D>(n, dNdX, inverseTranspose(F, J).data(), 1.0, c);
+    addOuterProduct(v, c, -alpha / nv, nd, D, tangent, false);
+    for (int k = 0; k < nd; ++k)
+      centreColumn[k] += alpha / nv * v[k];
+  }
+  if (tangent) addOuterProduct(centreColumn, c0, 1.0, nd, D, tangent, false);
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
+}
+
+void FBarKernel::evaluateRing(const double* x, const double* u, const Material& material,
+                              const double* stateOld, double* stateNew, double* residual,
+                              double* tangent, double* pointStress, double* averageStress,
+                              const std::optional<double>& temperature) const {
   constexpr int D = SlotOperator::kMaxDofs, R = SlotOperator::kMaxRows;
   const int n = numNodes_, nd = numDofs();
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
@@ -111,5 +177,7 @@ void FBarKernel::evaluate(const double* x, const double* u, const Material& mate
     for (int k = 0; k < 6; ++k)
       averageStress[k] /= volume;
 }
+
+template class PlanarOrRingKernel<FBarKernel>;
 
 }  // namespace contactlab

@@ -10,13 +10,13 @@
 // delta F dV, and the tangent is its exact derivative (through J0 too): NOT symmetric, even for
 // a hyperelastic law, since the formulation is not the gradient of an energy. Same quadrature
 // as the full-integration kernel of the geometry; conventions of ElementKernel.hpp.
-#include "core/problem/ElementKernel.hpp"
+#include "core/problem/PlanarOrRingKernel.hpp"
 
 #include <vector>
 
 namespace contactlab {
 
-class FBarKernel : public ElementKernel {
+class FBarKernel : public PlanarOrRingKernel<FBarKernel> {
  public:
   // type quad4 or hex8 (std::invalid_argument otherwise); axisymmetric for the ring.
   FBarKernel(ElementType type, bool axisymmetric, int quadratureDegree = -1);
@@ -24,9 +24,18 @@ class FBarKernel : public ElementKernel {
   Kinematics kinematics() const override { return Kinematics::FiniteStrain; }
 
  private:
-  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress, const std::optional<double>& temperature) const override;
+  friend class PlanarOrRingKernel<FBarKernel>;
+  // Plane strain and 3D, written per dimension (the total-Lagrangian kernel's products).
+  template <int D>
+  void evaluatePlanar(const double* x, const double* u, const Material& material,
+                      const double* stateOld, double* stateNew, double* residual, double* tangent,
+                      double* pointStress, double* averageStress,
+                      const std::optional<double>& temperature) const;
+  // The ring (axisymmetric), through the run-time SlotOperator: its hoop row.
+  void evaluateRing(const double* x, const double* u, const Material& material,
+                    const double* stateOld, double* stateNew, double* residual, double* tangent,
+                    double* pointStress, double* averageStress,
+                    const std::optional<double>& temperature) const;
 
   std::vector<double> centreN_;      // shape values at the cell's centre
   std::vector<double> centreDNdxi_;  // and their reference derivatives

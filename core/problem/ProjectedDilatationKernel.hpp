@@ -12,11 +12,11 @@
 // tangent, symmetric when C is, constant for a linear law (so the problem keeps it).
 // Every quadrature point is evaluated at the same rule as the full-integration kernel of the
 // geometry. Conventions of ElementKernel.hpp.
-#include "core/problem/ElementKernel.hpp"
+#include "core/problem/PlanarOrRingKernel.hpp"
 
 namespace contactlab {
 
-class ProjectedDilatationKernel : public ElementKernel {
+class ProjectedDilatationKernel : public PlanarOrRingKernel<ProjectedDilatationKernel> {
  public:
   // pressureDegree 0 (B-bar) or 1; axisymmetric for the ring (2D types only). quadratureDegree
   // < 0: the full-integration kernel's rule.
@@ -27,9 +27,18 @@ class ProjectedDilatationKernel : public ElementKernel {
   int pressureDegree() const { return pressureDegree_; }
 
  private:
-  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress, const std::optional<double>& temperature) const override;
+  friend class PlanarOrRingKernel<ProjectedDilatationKernel>;
+  // Plane strain and 3D, written per dimension (the full-integration kernel's products).
+  template <int D>
+  void evaluatePlanar(const double* x, const double* u, const Material& material,
+                      const double* stateOld, double* stateNew, double* residual, double* tangent,
+                      double* pointStress, double* averageStress,
+                      const std::optional<double>& temperature) const;
+  // The ring (axisymmetric), through the run-time SlotOperator: its hoop row.
+  void evaluateRing(const double* x, const double* u, const Material& material,
+                    const double* stateOld, double* stateNew, double* residual, double* tangent,
+                    double* pointStress, double* averageStress,
+                    const std::optional<double>& temperature) const;
 
   int pressureDegree_;
 };

@@ -3,10 +3,12 @@
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/materials/Tensor3.hpp"
 #include "core/problem/ElementUpdateError.hpp"
+#include "core/problem/FiniteStrainProducts.hpp"
 #include "core/problem/PressureSpace.hpp"
 #include "core/problem/ProjectedDilatationKernel.hpp"
 #include "core/problem/SlotOperator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -40,21 +42,196 @@ struct ElementData {
   double dNdX[kPoints][81];
 };
 
+// det F at point q, checked positive.
+double checkedJacobian(const std::array<double, 9>& F, int q) {
+  const double J = tensor3::determinant(F);
+  if (!(J > 0)) {
+    std::ostringstream s;
+    s << "det F = " << J << " <= 0: the displacement turns the element inside out";
+    throw ElementUpdateError("inverted-element", q, s.str());
+  }
+  return J;
+}
+
+std::array<double, 9> transposed(const std::array<double, 9>& T) {
+  return {T[0], T[3], T[6], T[1], T[4], T[7], T[2], T[5], T[8]};
+}
+
+// The projection of J on the pressure space: theta_i = sum_q weight(i, q) J_q and its
+// derivative's e_i = sum_q weight(i, q) J_q c_q.
+struct Projection {
+  double theta[PressureSpace::kMaxSize];
+  double e[PressureSpace::kMaxSize][kDofs];
+
+  void set(const PressureSpace& space, const ElementData& data, int nq, int nd) {
+    for (int i = 0; i < space.size(); ++i) {
+      theta[i] = 0.0;
+      std::fill(e[i], e[i] + nd, 0.0);
+      for (int q = 0; q < nq; ++q) {
+        const double wJ = space.weight(i, q) * data.point[q].J;
+        theta[i] += wJ;
+        for (int k = 0; k < nd; ++k)
+          e[i][k] += wJ * data.point[q].c[k];
+      }
+    }
+  }
+
+  // theta = Pi(J) at point q, e = d ln theta / du and delta = (e - c) / n there.
+  void volumeChangeAt(const PressureSpace& space, int q, int nd, double nv, PointData& p) const {
+    const int np = space.size();
+    p.theta = 0.0;
+    for (int i = 0; i < np; ++i)
+      p.theta += space.basis(q, i) * theta[i];
+    if (!(p.theta > 0))
+      throw ElementUpdateError("inverted-element", q,
+                               "the element's projected volume change is not positive");
+    for (int k = 0; k < nd; ++k) {
+      double sum = 0.0;
+      for (int i = 0; i < np; ++i)
+        sum += space.basis(q, i) * e[i][k];
+      p.e[k] = sum / p.theta;
+      p.delta[k] = (p.e[k] - p.c[k]) / nv;
+    }
+  }
+};
+
+// rho_i = sum_q w tau psi_i / (n theta): the pressure's moments the tangent's projection terms
+// gather per point.
+void pressureMoments(const PressureSpace& space, const ElementData& data, int nq, double nv,
+                     double* rho) {
+  for (int i = 0; i < space.size(); ++i) {
+    rho[i] = 0.0;
+    for (int q = 0; q < nq; ++q)
+      rho[i] +=
+          data.point[q].w * data.point[q].tau * space.basis(q, i) / (nv * data.point[q].theta);
+  }
+}
+
 }  // namespace
 
 ProjectedJacobianKernel::ProjectedJacobianKernel(ElementType type, int pressureDegree,
                                                  bool axisymmetric, int quadratureDegree)
-    : ElementKernel(
+    : PlanarOrRingKernel(
           type, quadratureDegree < 0 ? fullIntegrationDegree(type, axisymmetric) : quadratureDegree,
           axisymmetric),
       pressureDegree_(pressureDegree) {
   PressureSpace::checkKernel("ProjectedJacobianKernel", pressureDegree, numPoints_);
 }
 
-void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const Material& material,
-                                       const double* stateOld, double* stateNew, double* residual,
-                                       double* tangent, double* pointStress, double* averageStress,
-                                       const std::optional<double>& temperature) const {
+// Plane strain and 3D: evaluateRing's three passes below through the total-Lagrangian kernel's
+// products (FiniteStrainProducts.hpp), the points' P and dP/dF kept as whole tensors.
+template <int D>
+void ProjectedJacobianKernel::evaluatePlanar(const double* x, const double* u,
+                                             const Material& material, const double* stateOld,
+                                             double* stateNew, double* residual, double* tangent,
+                                             double* pointStress, double* averageStress,
+                                             const std::optional<double>& temperature) const {
+  constexpr double nv = D;
+  const int n = numNodes_, nq = numPoints_, nd = D * n;
+  beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
+  double volume = 0.0;
+  static thread_local ElementData data;
+
+  double points[3 * kPoints], measures[kPoints];
+  for (int q = 0; q < nq; ++q) {
+    PointData& p = data.point[q];
+    p.w = measures[q] = gradients(q, x, data.dNdX[q]);
+    p.F = deformationGradientOf<D>(n, data.dNdX[q], u);
+    p.J = checkedJacobian(p.F, q);
+    p.Finv = tensor3::inverse(p.F, p.J);
+    const auto FinvT = transposed(p.Finv);
+    std::fill(p.c, p.c + nd, 0.0);
+    addGradientTransposeProduct<D>(n, data.dNdX[q], FinvT.data(), 1.0, p.c);
+  }
+  referencePoints(points);
+  PressureSpace space(pressureDegree_, dim_);
+  space.setElement(nq, points, measures);
+  const int np = space.size();
+  static thread_local Projection projection;
+  projection.set(space, data, nq, nd);
+
+  MaterialInput in;
+  in.temperature = temperature;
+  MaterialOutput out;
+  for (int q = 0; q < nq; ++q) {
+    PointData& p = data.point[q];
+    projection.volumeChangeAt(space, q, nd, nv, p);
+    p.alpha = std::pow(p.theta / p.J, 1.0 / nv);
+    in.F = p.F;
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j)
+        in.F[i * 3 + j] *= p.alpha;
+    evaluateFiniteStrainPoint(q, p.w, material, stateOld, stateNew, in, out, pointStress,
+                              averageStress, volume);
+    p.tau = 0.0;
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j)
+        p.tau += p.alpha * out.P[i * 3 + j] * p.F[i * 3 + j];
+    std::copy(out.P.begin(), out.P.end(), p.P);
+    std::copy(out.dPdF.begin(), out.dPdF.end(), p.A);
+    if (!residual) continue;
+    addGradientTransposeProduct<D>(n, data.dNdX[q], p.P, p.w * p.alpha, residual);
+    for (int k = 0; k < nd; ++k)
+      residual[k] += p.w * p.tau * p.delta[k];
+  }
+  if (averageStress)
+    for (int k = 0; k < 6; ++k)
+      averageStress[k] /= volume;
+  if (!tangent) return;
+
+  const bool symmetric = material.symmetricTangent();
+  double rho[PressureSpace::kMaxSize];
+  pressureMoments(space, data, nq, nv, rho);
+  double AB[D * D * kMaxNodes * D];
+  for (int q = 0; q < nq; ++q) {
+    const PointData& p = data.point[q];
+    const double* dNdX = data.dNdX[q];
+    double kappa = 0.0;
+    for (int i = 0; i < np; ++i)
+      kappa += space.weight(i, q) * rho[i];
+    kappa *= p.J;
+    // M = w alpha^2 A + (kappa - w tau / n) L, L_iJkL = -(F^-1)_Jk (F^-1)_Li.
+    const double a2 = p.alpha * p.alpha, l = kappa - p.w * p.tau / nv;
+    double M[81];
+    std::array<double, 9> AF = {}, AtF = {};
+    double phi = 0.0;
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J)
+        for (int k = 0; k < D; ++k)
+          for (int L = 0; L < D; ++L) {
+            const double A = p.A[(i * 3 + J) * 9 + k * 3 + L];
+            M[(i * 3 + J) * 9 + k * 3 + L] =
+                p.w * a2 * A - l * p.Finv[J * 3 + k] * p.Finv[L * 3 + i];
+            AF[i * 3 + J] += A * p.F[k * 3 + L];
+            AtF[k * 3 + L] += A * p.F[i * 3 + J];
+          }
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J)
+        phi += p.F[i * 3 + J] * AF[i * 3 + J];
+    addGradientTangent<D>(n, dNdX, M, 1.0, AB, tangent, symmetric);
+    double yR[kDofs] = {}, yL[kDofs] = {};
+    addGradientTransposeProduct<D>(n, dNdX, p.P, p.alpha, yR);
+    addGradientTransposeProduct<D>(n, dNdX, AF.data(), a2, yR);
+    addGradientTransposeProduct<D>(n, dNdX, p.P, p.alpha, yL);
+    addGradientTransposeProduct<D>(n, dNdX, AtF.data(), a2, yL);
+    const double half = 0.5 * (p.tau + a2 * phi);
+    for (int k = 0; k < nd; ++k) {
+      yR[k] += half * p.delta[k];
+      yL[k] += half * p.delta[k];
+    }
+    addOuterProduct(yR, p.delta, p.w, nd, D, tangent, symmetric);
+    addOuterProduct(p.delta, yL, p.w, nd, D, tangent, symmetric);
+    addOuterProduct(p.c, p.c, kappa, nd, D, tangent, symmetric);
+    addOuterProduct(p.e, p.e, -p.w * p.tau / nv, nd, D, tangent, symmetric);
+  }
+  if (symmetric) addMirroredUpperBlocks<D>(tangent);
+}
+
+void ProjectedJacobianKernel::evaluateRing(const double* x, const double* u,
+                                           const Material& material, const double* stateOld,
+                                           double* stateNew, double* residual, double* tangent,
+                                           double* pointStress, double* averageStress,
+                                           const std::optional<double>& temperature) const {
   const int n = numNodes_, nq = numPoints_, nd = numDofs();
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
@@ -73,12 +250,7 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
     interpolatePosition(n, x, &N_[q * n], p.X);
     operatorAt(q);
     p.F = deformationGradient(op, u);
-    p.J = tensor3::determinant(p.F);
-    if (!(p.J > 0)) {
-      std::ostringstream s;
-      s << "det F = " << p.J << " <= 0: the displacement turns the element inside out";
-      throw ElementUpdateError("inverted-element", q, s.str());
-    }
+    p.J = checkedJacobian(p.F, q);
     p.Finv = tensor3::inverse(p.F, p.J);
     double g[kRows];
     logJacobianGradient(op, p.Finv, g);
@@ -92,15 +264,8 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
   PressureSpace space(pressureDegree_, dim_);
   space.setElement(nq, points, measures);
   const int np = space.size();
-  double thetaCoefficient[PressureSpace::kMaxSize] = {};
-  double eCoefficient[PressureSpace::kMaxSize][kDofs] = {};  // sum_q weight(i, q) J_q c_q
-  for (int i = 0; i < np; ++i)
-    for (int q = 0; q < nq; ++q) {
-      const double wJ = space.weight(i, q) * data.point[q].J;
-      thetaCoefficient[i] += wJ;
-      for (int k = 0; k < nd; ++k)
-        eCoefficient[i][k] += wJ * data.point[q].c[k];
-    }
+  static thread_local Projection projection;
+  projection.set(space, data, nq, nd);
 
   // Pass 2: the material at F_bar; the residual f = sum_q w (alpha B^T P + tau delta).
   MaterialInput in;
@@ -108,19 +273,7 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
   MaterialOutput out;
   for (int q = 0; q < nq; ++q) {
     PointData& p = data.point[q];
-    p.theta = 0.0;
-    for (int i = 0; i < np; ++i)
-      p.theta += space.basis(q, i) * thetaCoefficient[i];
-    if (!(p.theta > 0))
-      throw ElementUpdateError("inverted-element", q,
-                               "the element's projected volume change is not positive");
-    for (int k = 0; k < nd; ++k) {
-      double e = 0.0;
-      for (int i = 0; i < np; ++i)
-        e += space.basis(q, i) * eCoefficient[i][k];
-      p.e[k] = e / p.theta;
-      p.delta[k] = (p.e[k] - p.c[k]) / nv;
-    }
+    projection.volumeChangeAt(space, q, nd, nv, p);
     operatorAt(q);
     p.alpha = std::pow(p.theta / p.J, 1.0 / nv);
     in.F = p.F;
@@ -150,11 +303,8 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
   // per point through kappa_q = J_q sum_i weight(i, q) rho_i, rho_i = sum_q w tau psi_i / (n
   // theta).
   const bool symmetric = material.symmetricTangent();
-  double rho[PressureSpace::kMaxSize] = {};
-  for (int q = 0; q < nq; ++q)
-    for (int i = 0; i < np; ++i)
-      rho[i] +=
-          data.point[q].w * data.point[q].tau * space.basis(q, i) / (nv * data.point[q].theta);
+  double rho[PressureSpace::kMaxSize];
+  pressureMoments(space, data, nq, nv, rho);
   for (int q = 0; q < nq; ++q) {
     const PointData& p = data.point[q];
     operatorAt(q);
@@ -194,5 +344,7 @@ void ProjectedJacobianKernel::evaluate(const double* x, const double* u, const M
   }
   if (symmetric) mirrorUpperBlocks(nd, dim_, tangent);
 }
+
+template class PlanarOrRingKernel<ProjectedJacobianKernel>;
 
 }  // namespace contactlab

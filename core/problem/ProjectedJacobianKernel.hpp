@@ -10,11 +10,11 @@
 // int W(F_bar(u)) dV: f = int P(F_bar) : dF_bar/du dV and K its exact second derivative,
 // symmetric whenever the material's dP/dF is (unlike F-bar's). Same quadrature as the
 // full-integration kernel of the geometry; conventions of ElementKernel.hpp.
-#include "core/problem/ElementKernel.hpp"
+#include "core/problem/PlanarOrRingKernel.hpp"
 
 namespace contactlab {
 
-class ProjectedJacobianKernel : public ElementKernel {
+class ProjectedJacobianKernel : public PlanarOrRingKernel<ProjectedJacobianKernel> {
  public:
   // pressureDegree 0 or 1; axisymmetric for the ring (2D types only).
   ProjectedJacobianKernel(ElementType type, int pressureDegree, bool axisymmetric,
@@ -24,9 +24,18 @@ class ProjectedJacobianKernel : public ElementKernel {
   int pressureDegree() const { return pressureDegree_; }
 
  private:
-  void evaluate(const double* x, const double* u, const Material& material, const double* stateOld,
-                double* stateNew, double* residual, double* tangent, double* pointStress,
-                double* averageStress, const std::optional<double>& temperature) const override;
+  friend class PlanarOrRingKernel<ProjectedJacobianKernel>;
+  // Plane strain and 3D, written per dimension (the total-Lagrangian kernel's products).
+  template <int D>
+  void evaluatePlanar(const double* x, const double* u, const Material& material,
+                      const double* stateOld, double* stateNew, double* residual, double* tangent,
+                      double* pointStress, double* averageStress,
+                      const std::optional<double>& temperature) const;
+  // The ring (axisymmetric), through the run-time SlotOperator: its hoop row.
+  void evaluateRing(const double* x, const double* u, const Material& material,
+                    const double* stateOld, double* stateNew, double* residual, double* tangent,
+                    double* pointStress, double* averageStress,
+                    const std::optional<double>& temperature) const;
 
   int pressureDegree_;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // Small-strain solid element: internal force f = int B^T sigma dV and tangent K = int B^T C B dV
-// for 3D cells and 2D plane strain (Voigt rows {0, 1, 3} of Material.hpp). Conventions of
-// ElementKernel.hpp.
+// for 3D cells and 2D plane strain (Voigt rows {0, 1, 3} of Material.hpp), through the products of
+// SmallStrainProducts.hpp. Conventions of ElementKernel.hpp.
 #include "core/problem/DimensionTemplatedKernel.hpp"
 
 namespace contactlab {
@@ -20,9 +20,6 @@ class SmallStrainKernel : public DimensionTemplatedKernel<SmallStrainKernel> {
                   const double* stateOld, double* stateNew, double* residual, double* tangent,
                   double* pointStress, double* averageStress,
                   const std::optional<double>& temperature) const;
-  template <int D>
-  void accumulateTangent(const double* C6, double w, const double* dNdx, double* CB, double* SB,
-                         double* tangent) const;
 };
 
 }  // namespace contactlab
