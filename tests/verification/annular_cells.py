@@ -52,17 +52,18 @@ def polar_cells(grid):
     return cells
 
 
-def radial_displacements(grid, radii):
-    """{radius: [the radial displacement of every node at that distance from the origin]}."""
+def radial_displacements(grid, radii, tolerance=1e-9):
+    """{radius: [the radial displacement of every node at that distance from the origin, within
+    tolerance times the largest radius]} (2D or 3D)."""
     u = grid.GetPointData().GetArray("displacement")
     radial = {side: [] for side in radii}
     for i in range(grid.GetNumberOfPoints()):
         x = grid.GetPoint(i)
-        r = math.hypot(x[0], x[1])
+        r = math.sqrt(x[0] ** 2 + x[1] ** 2 + x[2] ** 2)
         for side in radial:
-            if abs(r - side) < 1e-9 * max(radii):
+            if abs(r - side) < tolerance * max(radii):
                 d = u.GetTuple(i)
-                radial[side].append((d[0] * x[0] + d[1] * x[1]) / r)
+                radial[side].append(sum(d[k] * x[k] for k in range(len(d))) / r)
     return radial
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs scenes/thick-sphere-axisymmetric.yaml (a hollow sphere a <= r <= b under internal
 pressure p, an axisymmetric model of its quarter meridian section, von Mises perfect
-plasticity) on several meshes and compares it with the elastic-plastic solution of R. Hill,
+plasticity) or scenes/thick-sphere-3d.yaml (an eighth of it in 3D, gmsh's tet10) on several meshes and compares it with the elastic-plastic solution of R. Hill,
 The Mathematical Theory of Plasticity (1950), ch. V, section 2 (the spherical shell). Spherical
 symmetry makes sigma_theta = sigma_phi, so Tresca's and von Mises' conditions are both
 sigma_theta - sigma_r = sigma_y, and the stresses are statically determined for any nu:
@@ -22,9 +22,11 @@ in-plane principal stresses, the hoop stress (the output's zz slot) is sigma_phi
 
 usage: check_thick_sphere.py CONTACTLAB SCENE OUTDIR CASE [options] [--set key=value ...]
 CASE:
-  hill         on each mesh (--factors scale the scene's divisions): every cell's average
-               stress against Hill's averaged over the same cell (the ring's volume weight
-               2 pi x), max |error| / p of sigma_r, sigma_theta, sigma_phi; the radial
+  hill         on each mesh (--factors scale the scene's divisions, or divide its Size Factor in
+               3D): every cell's average stress against Hill's averaged over the same cell
+               (the ring's volume weight 2 pi x), max |error| / p of sigma_r, sigma_theta,
+               sigma_phi (3D: against Hill's at the cell's centroid, sigma_r, the tangential
+               mean and the largest Cartesian component of the difference); the mean radial
                displacement of every node on the bore and on the outside, relative. The finest
                mesh within --tol and --u-tol, and each error below its value on the coarsest.
   small-strain-limit
@@ -35,9 +37,10 @@ CASE:
   limit        p = 1.05 p_L over 20 steps: the run must end with a named failure, its last
                converged pressure within [0.97, 1 + TOL] p_L.
 Prints "RESULT ..." lines for doc/verification.md."""
-import argparse, csv, json, math, os, shutil, sys
+import argparse, csv, json, math, os, re, shutil, sys
 
 import numpy as np
+import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from contactlab_run import contactlab_run, read_grid, result_frames  # noqa: E402
@@ -55,7 +58,18 @@ ap.add_argument("--ranks", type=int, default=1)
 ap.add_argument("--set", action="append", default=[])
 args = ap.parse_args()
 
-mesh, material, a, b, E, nu, sy, p = pressurized_ring_sector(args.scene)
+scene = yaml.safe_load(open(args.scene))["contactlab"]
+block = next(iter(scene["Materials"]))
+three_d = scene["Mesh"]["Type"] == "file"
+if three_d:
+    # An eighth of the shell meshed by gmsh: a and b from the .geo, the mesh scaled by Size Factor.
+    geo = open(os.path.join(os.path.dirname(args.scene), scene["Mesh"]["file"]["Path"])).read()
+    a, b = (float(re.search(rf"^{name} = ([0-9.eE+-]+);", geo, re.M).group(1)) for name in "ab")
+    material = scene["Materials"][block]["j2-small-strain"]
+    E, nu, sy = float(material["E"]), float(material["nu"]), float(material["Yield Stress"])
+    p = float(scene["Loads"]["bore"]["Value"])
+else:
+    mesh, material, a, b, E, nu, sy, p = pressurized_ring_sector(args.scene)
 assert float(material.get("Isotropic Hardening Modulus", 0.0)) == 0.0, "perfect plasticity only"
 
 
@@ -113,20 +127,40 @@ def run(out, sets):
 
 
 def bore_and_outside(grid):
-    """The mean radial displacement of the nodes on r = a and on r = b."""
-    radial = radial_displacements(grid, (a, b))
+    """The mean radial displacement of the nodes on r = a and on r = b (gmsh's nodes on the
+    curved faces lie on the sphere to its geometry's tolerance)."""
+    radial = radial_displacements(grid, (a, b), 1e-6 if three_d else 1e-9)
     return np.mean(radial[a]), np.mean(radial[b])
 
 
 def stress_errors(grid, ref):
-    """max |cell average - Hill's over the cell| / p of sigma_r, sigma_theta, sigma_phi."""
+    """max |cell average - Hill's over the cell| / p of sigma_r, sigma_theta, sigma_phi; in 3D,
+    against Hill's stress at the cell's centroid: sigma_r, the tangential mean and the largest
+    Cartesian component of the difference."""
     worst = np.zeros(3)
+    if three_d:
+        stress = grid.GetCellData().GetArray("stress")
+        for i in range(grid.GetNumberOfCells()):
+            ids = grid.GetCell(i).GetPointIds()
+            x = np.mean([grid.GetPoint(ids.GetId(j)) for j in range(ids.GetNumberOfIds())], axis=0)
+            r = float(np.linalg.norm(x))
+            n = x / r
+            s = stress.GetTuple(i)  # Voigt xx yy zz xy yz xz
+            fe = np.array([[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]])
+            sr, st = ref.stress(r)
+            exact = st * np.eye(3) + (sr - st) * np.outer(n, n)
+            radial = n @ fe @ n
+            worst = np.maximum(worst, np.abs([radial - sr, (np.trace(fe) - radial) / 2 - st,
+                                              np.max(np.abs(fe - exact))]) / p)
+        return worst
     for r1, r2, t1, t2, fe, _ in polar_cells(grid):
         worst = np.maximum(worst, np.abs(fe - ref.cell_average(r1, r2, t1, t2)) / p)
     return worst
 
 
 def scaled(factor):
+    if three_d:
+        return [f"Mesh/file/Size Factor={1 / factor!r}"]
     return [f"Mesh/ring-sector/Radial Divisions={round(factor * mesh['Radial Divisions'])}",
             f"Mesh/ring-sector/Circumferential Divisions="
             f"{round(factor * mesh['Circumferential Divisions'])}"]
@@ -148,13 +182,13 @@ if args.case == "limit":
     sys.exit(0)
 
 if args.case == "small-strain-limit":
-    finite = ["Materials/body/Type=simo-miehe", f"Materials/body/simo-miehe/nu={nu!r}",
-              f"Materials/body/simo-miehe/Yield Stress={sy!r}"]
+    finite = [f"Materials/{block}/Type=simo-miehe", f"Materials/{block}/simo-miehe/nu={nu!r}",
+              f"Materials/{block}/simo-miehe/Yield Stress={sy!r}"]
     differences = []
     for stiffer in (1, 10):
         ref = HillSphere(stiffer * E, p)
         out = os.path.join(args.out, f"E{stiffer}")
-        done, summary = run(out, finite + [f"Materials/body/simo-miehe/E={stiffer * E!r}"])
+        done, summary = run(out, finite + [f"Materials/{block}/simo-miehe/E={stiffer * E!r}"])
         assert done.returncode == 0, f"{stiffer} E: {summary['failure']}: {summary['message']}"
         ua, ub = bore_and_outside(read_grid(result_frames(out)[-1][1]))
         differences.append(max(abs(ua / ref.u_a - 1), abs(ub / ref.u_b - 1)))
@@ -175,6 +209,8 @@ if args.case == "small-strain-limit":
 ref = HillSphere(E, p)
 print(f"reference: p = {p:g} = {p / ref.limit:.4f} p_L, first yield {ref.first_yield:.6g}, "
       f"c = {ref.c:.6g}, u(a) = {ref.u_a:.7g}, u(b) = {ref.u_b:.7g}")
+labels = (["sigma_r", "sigma_t (mean)", "any component"] if three_d
+          else ["sigma_r", "sigma_theta", "sigma_phi"])
 table = []
 for factor in [float(f) for f in args.factors.split(",")]:
     out = os.path.join(args.out, f"factor-{factor:g}")
@@ -186,7 +222,7 @@ for factor in [float(f) for f in args.factors.split(",")]:
     table.append(errors)
     print(f"RESULT factor {factor:g} ({summary['dofs']} dofs, "
           f"{summary['iterations']['newton']} Newton iterations): stresses / p: sigma_r "
-          f"{errors[0]:.2e}, sigma_theta {errors[1]:.2e}, sigma_phi {errors[2]:.2e}; u(a) "
+          f"{errors[0]:.2e}, {labels[1]} {errors[1]:.2e}, {labels[2]} {errors[2]:.2e}; u(a) "
           f"{ua / ref.u_a - 1:+.2e}, u(b) {ub / ref.u_b - 1:+.2e}")
 problems = []
 finest, coarsest = table[-1], table[0]
@@ -194,8 +230,7 @@ if max(finest[:3]) > args.tol:
     problems.append(f"stress error {max(finest[:3]):.3g} p > {args.tol} p on the finest mesh")
 if max(finest[3:]) > args.u_tol:
     problems.append(f"displacement error {max(finest[3:]):.3g} > {args.u_tol} on the finest mesh")
-for name, fine, coarse in zip(["sigma_r", "sigma_theta", "sigma_phi", "u(a)", "u(b)"], finest,
-                              coarsest):
+for name, fine, coarse in zip(labels + ["u(a)", "u(b)"], finest, coarsest):
     if fine > 1e-6 and not fine < coarse:
         problems.append(f"{name}'s error does not shrink under refinement ({coarse:.3g} -> {fine:.3g})")
 assert not problems, "; ".join(problems)
