@@ -23,6 +23,19 @@ void PressureSpace::checkKernel(const char* kernel, int degree, int numPoints) {
 void PressureSpace::setElement(int numPoints, const double* points, const double* measures) {
   if (numPoints > kMaxPoints) throw std::invalid_argument("PressureSpace: too many points");
   numPoints_ = numPoints;
+  if (degree_ == 0) {  // the mean: psi = 1, weight = w_q / V (points unread)
+    double volume = 0.0;
+    for (int q = 0; q < numPoints; ++q)
+      volume += measures[q];
+    if (!(std::fabs(volume) > 0))
+      throw std::invalid_argument("PressureSpace: the element's Gram matrix is singular");
+    const double inverse = 1.0 / volume;  // as the Gram inverse below, to the last bit
+    for (int q = 0; q < numPoints; ++q) {
+      psi_[q][0] = 1.0;
+      weight_[0][q] = inverse * measures[q];
+    }
+    return;
+  }
   double volume = 0.0, centre[3] = {0.0, 0.0, 0.0};
   for (int q = 0; q < numPoints; ++q) {
     volume += measures[q];

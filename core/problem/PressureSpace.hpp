@@ -27,8 +27,9 @@ class PressureSpace {
   // numPoints quadrature points fits.
   static void checkKernel(const char* kernel, int degree, int numPoints);
 
-  // Sets the element: numPoints quadrature points at `points` (3 coordinates each) with
-  // measures w (> 0). Throws std::invalid_argument when the Gram matrix is singular.
+  // Sets the element: numPoints quadrature points at `points` (3 coordinates each; unread for
+  // degree 0, may be nullptr) with measures w (> 0). Throws std::invalid_argument when the Gram
+  // matrix is singular.
   void setElement(int numPoints, const double* points, const double* measures);
 
   double basis(int q, int i) const { return psi_[q][i]; }

@@ -87,7 +87,7 @@ void ProjectedDilatationKernel::evaluatePlanar(const double* x, const double* u,
   double dNdx[P][ND], w[P], xi[3 * P];
   for (int q = 0; q < nq; ++q)
     w[q] = gradients(q, x, dNdx[q]);
-  referencePoints(xi);
+  if (pressureDegree_ > 0) referencePoints(xi);
   PressureSpace space(pressureDegree_, dim_);
   space.setElement(nq, xi, w);
   const int np = space.size();
