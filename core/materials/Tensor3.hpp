@@ -37,6 +37,11 @@ inline Mat3 inverse(const Mat3& A, double detA) {
   return inv;
 }
 
+// A^T.
+inline Mat3 transpose(const Mat3& A) {
+  return {A[0], A[3], A[6], A[1], A[4], A[7], A[2], A[5], A[8]};
+}
+
 // A B.
 inline Mat3 multiply(const Mat3& A, const Mat3& B) {
   Mat3 C{};

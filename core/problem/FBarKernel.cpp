@@ -56,18 +56,13 @@ void FBarKernel::evaluatePlanar(const double* x, const double* u, const Material
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
 
-  // F^-T as a row-major tensor, from F and its determinant.
-  auto inverseTranspose = [](const std::array<double, 9>& F, double J) {
-    const auto Finv = tensor3::inverse(F, J);
-    return std::array<double, 9>{Finv[0], Finv[3], Finv[6], Finv[1], Finv[4],
-                                 Finv[7], Finv[2], Finv[5], Finv[8]};
-  };
   double dNdX[ND];
   physicalGradients(D, n, x, centreDNdxi_.data(), dNdX);
   const auto F0 = deformationGradientOf<D>(n, dNdX, u);
   const double J0 = positiveJacobian(F0, -1, "at the element's centre");
   double c0[ND] = {};
-  addGradientTransposeProduct<D>(n, dNdX, inverseTranspose(F0, J0).data(), 1.0, c0);
+  addGradientTransposeProduct<D>(n, dNdX, tensor3::transpose(tensor3::inverse(F0, J0)).data(), 1.0,
+                                 c0);
 
   double centreColumn[ND] = {}, AB[D * D * ND];
   MaterialInput in;
@@ -97,7 +92,8 @@ void FBarKernel::evaluatePlanar(const double* x, const double* u, const Material
     double v[ND] = {}, c[ND] = {};
     addGradientTransposeProduct<D>(n, dNdX, out.P.data(), w * (1.0 - nv) * std::pow(alpha, -nv), v);
     addGradientTransposeProduct<D>(n, dNdX, AF.data(), w * g, v);
-    addGradientTransposeProduct<D>(n, dNdX, inverseTranspose(F, J).data(), 1.0, c);
+    addGradientTransposeProduct<D>(n, dNdX, tensor3::transpose(tensor3::inverse(F, J)).data(), 1.0,
+                                   c);
     addOuterProduct(v, c, -alpha / nv, nd, D, tangent, false);
     for (int k = 0; k < nd; ++k)
       centreColumn[k] += alpha / nv * v[k];

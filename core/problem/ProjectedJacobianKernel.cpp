@@ -53,10 +53,6 @@ double checkedJacobian(const std::array<double, 9>& F, int q) {
   return J;
 }
 
-std::array<double, 9> transposed(const std::array<double, 9>& T) {
-  return {T[0], T[3], T[6], T[1], T[4], T[7], T[2], T[5], T[8]};
-}
-
 // The projection of J on the pressure space: theta_i = sum_q weight(i, q) J_q and its
 // derivative's e_i = sum_q weight(i, q) J_q c_q.
 struct Projection {
@@ -139,7 +135,7 @@ void ProjectedJacobianKernel::evaluatePlanar(const double* x, const double* u,
     p.F = deformationGradientOf<D>(n, data.dNdX[q], u);
     p.J = checkedJacobian(p.F, q);
     p.Finv = tensor3::inverse(p.F, p.J);
-    const auto FinvT = transposed(p.Finv);
+    const auto FinvT = tensor3::transpose(p.Finv);
     std::fill(p.c, p.c + nd, 0.0);
     addGradientTransposeProduct<D>(n, data.dNdX[q], FinvT.data(), 1.0, p.c);
   }
