@@ -469,6 +469,21 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
     sm.model.symmetries.push_back(condition);
   }
 
+  const ParameterList& ties = p.sublist("Ties");
+  for (auto it = ties.begin(); it != ties.end(); ++it) {
+    const std::string path = "Ties/" + ties.name(it);
+    const ParameterList& t = ties.sublist(ties.name(it));
+    TieCondition tie;
+    tie.name = ties.name(it);
+    for (const std::string& group : t.get<Teuchos::Array<std::string>>("Groups"))
+      tie.groups.push_back(group);
+    for (double a : t.get<Teuchos::Array<double>>("Coefficients"))
+      tie.coefficients.push_back(a);
+    if (tie.coefficients.empty() && tie.groups.size() == 2) tie.coefficients = {1.0, -1.0};
+    tie.components = componentList(t, dim, where, path);
+    sm.model.ties.push_back(tie);
+  }
+
   const ParameterList& springs = p.sublist("Springs");
   for (auto it = springs.begin(); it != springs.end(); ++it) {
     const std::string path = "Springs/" + springs.name(it);

@@ -116,6 +116,25 @@ ParameterList symmetryItem() {
   return p;
 }
 
+ParameterList tieItem() {
+  ParameterList p;
+  p.set("Groups", Teuchos::Array<std::string>(),
+        "Two or more node groups (boundary physical groups or Point Groups) whose nodes are "
+        "tied: for each component and each matched tuple of nodes, sum_i a_i u(node_i) = 0. "
+        "Groups of one node tie those nodes; groups of several (the same count in each) are "
+        "matched by the translation between their centroids (a coincident interface, periodic "
+        "faces). Not on a contact surface or an inclined symmetry plane");
+  p.set("Coefficients", Teuchos::Array<double>(),
+        "The a_i, one per group (code_aster's COEF_MULT, Abaqus' *EQUATION coefficients); "
+        "empty means [1, -1]: the second group's nodes move with the first's. The right side "
+        "is zero");
+  p.set("Components", "xyz",
+        "Components tied, each with its own equation: any of x, y, z (e.g. 'y', 'xy'); 'xyz' "
+        "means all (x and y in 2D, where z alone is refused)",
+        choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
+  return p;
+}
+
 ParameterList springItem() {
   ParameterList p;
   p.set("Group", "",
@@ -437,6 +456,9 @@ ParameterList sceneSchema(const ParameterList& scene, const std::string& where) 
   valid.set("Symmetry",
             namedSection(userSublist(&scene, "Symmetry"), "Symmetry", where,
                          [](const ParameterList&, const std::string&) { return symmetryItem(); }));
+  valid.set("Ties",
+            namedSection(userSublist(&scene, "Ties"), "Ties", where,
+                         [](const ParameterList&, const std::string&) { return tieItem(); }));
   valid.set("Springs",
             namedSection(userSublist(&scene, "Springs"), "Springs", where,
                          [](const ParameterList&, const std::string&) { return springItem(); }));
@@ -478,6 +500,7 @@ std::vector<SceneSection> sceneSections() {
       {"Point Groups/<name>", "", pointGroupItem()},
       {"Dirichlet/<name>", "", dirichletItem()},
       {"Symmetry/<name>", "", symmetryItem()},
+      {"Ties/<name>", "", tieItem()},
       {"Springs/<name>", "", springItem()},
       {"Loads/<name>", "", loadItem()},
       {"Temperature/<block>", "", temperatureItem()},

@@ -4,7 +4,7 @@
 #include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
 #include "core/contact/TributaryAreas.hpp"
-#include "core/problem/SymmetryConstraints.hpp"
+#include "core/problem/LinearConstraints.hpp"
 #include "formulations/ContactAssembler.hpp"
 #include "formulations/ContactDiscretization.hpp"
 #include "formulations/ContactPoint.hpp"
@@ -38,7 +38,7 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
       zone.areaWeight = [](const double* x) { return 2.0 * M_PI * x[0]; };
   std::vector<GO> ownedMultipliers;
   // The solid leaves its symmetry reduction to this problem, which reduces the monolithic system.
-  solid_.deferSymmetryReduction();
+  solid_.deferConstraintReduction();
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     const ContactZone& zone = zones_[z];
     if (!zone.law) throw InputError("Contact/" + zone.name + ": no formulation");
@@ -117,8 +117,14 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
         for (int c : bc.components)
           constrainedSurfaceDofs_.insert(dofs.globalNode(node) * dim_ + c);
   kernel_ = std::make_unique<ContactPointKernel>(dim_, zones_, discretizations_, *state_);
+  // A tie's rows and columns move between its nodes, which the contact graph does not follow.
+  for (std::int64_t node : solid_.constraints().tiedNodes())
+    if (surfaceNodes.count(node))
+      throw InputError("node " + std::to_string(mesh.nodeId(node)) +
+                       " is tied (Ties) and on a contact surface; ties on contact surfaces are "
+                       "not supported");
   bool inclinedSurface = false;  // a surface node on an inclined symmetry plane
-  for (std::int64_t node : solid_.symmetry().nodes())
+  for (std::int64_t node : solid_.constraints().nodes())
     inclinedSurface = inclinedSurface || surfaceNodes.count(node) > 0;
   kernel_->setSurfaceConstrained(!constrainedSurfaceDofs_.empty() || inclinedSurface);
   assembler_ = std::make_unique<ContactAssembler>(map_, ownedDisplacements_, *state_);
@@ -333,7 +339,7 @@ bool ContactProblem::stepSolidAlone(Vector& x, double t, GO minimumDofs, const S
   if (solid_.dofs().numGlobalDofs() < minimumDofs) return false;
   // The inclined planes' elimination is applied to the monolithic system (deferred in the
   // solid): the solid's tangent alone is not reduced.
-  if (!solid_.symmetry().empty()) return false;
+  if (!solid_.constraints().empty()) return false;
   // Every rank evaluates every point: the answer agrees. A closed point at zero pressure (the
   // touching point of an undeformed state) carries nothing yet.
   for (const ContactPoint& pt : points_)
@@ -443,7 +449,7 @@ void ContactProblem::assemble(const Vector& x, double t, Vector* residual, bool 
   assembler_->end();
   constraintResidual_ = std::sqrt(constraint2);  // every rank evaluates every point
   if (contactForces) solid_.addToReactions(*contactForces);
-  solid_.symmetry().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
+  solid_.constraints().reduce(withTangent ? assembler_->matrix().get() : nullptr, residual);
 }
 
 AssemblyFailure ContactProblem::assemblyFailure() const {
@@ -453,7 +459,7 @@ AssemblyFailure ContactProblem::assemblyFailure() const {
 }
 
 void ContactProblem::completeIncrement(Vector& dx) const {
-  solid_.symmetry().project(dx.getDataNonConst(0).getRawPtr());
+  solid_.constraints().project(dx.getDataNonConst(0).getRawPtr());
 }
 
 double ContactProblem::largestDisplacement(const Vector& dx) const {

@@ -4,7 +4,7 @@
 #include "base/Elapsed.hpp"
 #include "base/InputError.hpp"
 #include "core/contact/SurfaceFrames.hpp"
-#include "core/problem/SymmetryConstraints.hpp"
+#include "core/problem/LinearConstraints.hpp"
 #include "formulations/ContactAssembler.hpp"
 #include "formulations/ContactDiscretization.hpp"
 #include "formulations/ContactPoint.hpp"
@@ -199,10 +199,10 @@ void ContactProblem::layOutPointDofs() {
         pt.freeDofs.push_back(constrainedSurfaceDofs_.count(pt.dofs.back()) == 0);
         pt.surfacePos.push_back(state_->dofPosition(node, c));
       }
-      addRemovedDirections(solid_.symmetry().planeNormals(node), first, pt);
+      addRemovedDirections(solid_.constraints().planeNormals(node), first, pt);
     };
     addNode(pt.node);
-    pt.symmetryNormals = solid_.symmetry().allPlaneNormals(pt.node);
+    pt.symmetryNormals = solid_.constraints().allPlaneNormals(pt.node);
     for (std::int64_t m : pt.master)
       addNode(m);
     for (auto& direction : pt.removedDirections)

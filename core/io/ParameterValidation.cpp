@@ -128,6 +128,15 @@ bool coerce(ParameterEntry& entry, const ParameterEntry& valid) {
     Array<int> v;
     if (!isString || !parseArray<int>(text, v, parseInt)) return false;
     entry.setValue(v);
+  } else if (valid.isType<Array<std::string>>()) {
+    // A --set value "[a, b]" (or one name).
+    Array<std::string> v;
+    const auto name = [](const std::string& item, std::string& out) {
+      out = trim(item);
+      return !out.empty();
+    };
+    if (!isString || !parseArray<std::string>(text, v, name)) return false;
+    entry.setValue(v);
   } else {
     return false;
   }

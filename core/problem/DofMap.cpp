@@ -5,7 +5,8 @@
 namespace contactlab {
 
 DofMap::DofMap(const Mesh& mesh, const std::vector<int>& elementRank,
-               const Teuchos::RCP<const Comm>& comm)
+               const Teuchos::RCP<const Comm>& comm,
+               const std::vector<std::vector<std::int64_t>>& linkedNodes)
     : dim_(mesh.dim), comm_(comm) {
   const int rank = comm->getRank(), size = comm->getSize();
   const std::size_t nn = mesh.numNodes();
@@ -25,6 +26,18 @@ DofMap::DofMap(const Mesh& mesh, const std::vector<int>& elementRank,
       if (r == rank) touched[n] = 1;
     }
     if (r == rank) localElements_.push_back(refs[e]);
+  }
+  for (const auto& nodes : linkedNodes) {
+    int owner = -1;
+    bool touches = false;
+    for (auto n : nodes) {
+      if (owner_[n] >= 0 && (owner < 0 || owner_[n] < owner)) owner = owner_[n];
+      touches = touches || touched[n];
+    }
+    for (auto n : nodes) {
+      if (owner_[n] >= 0) owner_[n] = owner;  // a node no element uses stays without dofs
+      if (touches) touched[n] = owner_[n] >= 0;
+    }
   }
 
   // Renumber: nodes of rank 0 first (in mesh order), then rank 1, ...

@@ -3,6 +3,10 @@
 // Each node is owned by the lowest rank among the ranks of its elements; nodes are renumbered
 // so that every rank owns a contiguous range (global dof = node * dim + component). The owned
 // map holds those dofs; the overlap map adds the ghost dofs touched by the rank's elements.
+//
+// Linked nodes (the nodes a tie's equations join, TieEquations.hpp) are owned together, by the
+// lowest rank among the elements of any of them, and a rank that touches one of them holds all
+// of them in its overlap: a tie's eliminated rows then combine on one rank (LinearConstraints).
 #include "base/LinearAlgebra.hpp"
 #include "core/mesh/Mesh.hpp"
 #include "core/problem/ElementPartition.hpp"
@@ -17,7 +21,8 @@ namespace contactlab {
 class DofMap {
  public:
   DofMap(const Mesh& mesh, const std::vector<int>& elementRank,
-         const Teuchos::RCP<const Comm>& comm);
+         const Teuchos::RCP<const Comm>& comm,
+         const std::vector<std::vector<std::int64_t>>& linkedNodes = {});
 
   int dim() const { return dim_; }
   const Teuchos::RCP<const Map>& ownedMap() const { return ownedMap_; }

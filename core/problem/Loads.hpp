@@ -94,11 +94,24 @@ struct CentrifugalLoad {
 // A symmetry (roller) condition on a plane group: every node keeps n . u = 0 and slides freely
 // in the plane. `normal` zero: the plane fitted through the group's nodes. A plane normal to an
 // axis is the Dirichlet condition u_axis = 0; an inclined one is eliminated exactly, one
-// dependent component per node (SymmetryConstraints.hpp).
+// dependent component per node (LinearConstraints.hpp).
 struct SymmetryCondition {
   std::string name;
   std::string group;
   std::array<double, 3> normal{{0, 0, 0}};
+};
+
+// A tie between the dofs of nodes (code_aster's LIAISON_DDL, Abaqus' *EQUATION): for each listed
+// component c and each matched tuple of nodes, one from each group,
+//   sum_i coefficients[i] u_c(node_i) = 0,
+// imposed exactly by eliminating one dof per equation (LinearConstraints.hpp). Groups of one
+// node tie those nodes; groups of several nodes (the same count in each) are matched by the
+// translation between the groups' centroids (coincident interfaces, periodic faces).
+struct TieCondition {
+  std::string name;
+  std::vector<std::string> groups;   // boundary physical groups or point groups
+  std::vector<double> coefficients;  // one per group, not all zero
+  std::vector<int> components;       // 0 = x, 1 = y, 2 = z
 };
 
 // A discrete spring from each node of a group to ground: in every listed component, a force

@@ -6,13 +6,18 @@
 namespace contactlab {
 namespace {
 
-// Sorted unique neighbours (sharing an element) of every overlap node.
+// Sorted unique neighbours (sharing an element, or its extra graph nodes) of every overlap node.
 std::vector<std::vector<int>> nodeNeighbours(std::size_t numNodes,
-                                             const std::vector<std::vector<int>>& elementNodes) {
+                                             const std::vector<std::vector<int>>& elementNodes,
+                                             const std::vector<std::vector<int>>& extra) {
   std::vector<std::vector<int>> neighbours(numNodes);
-  for (const auto& nodes : elementNodes)
+  std::vector<int> nodes;
+  for (std::size_t e = 0; e < elementNodes.size(); ++e) {
+    nodes = elementNodes[e];
+    if (!extra.empty()) nodes.insert(nodes.end(), extra[e].begin(), extra[e].end());
     for (int a : nodes)
       neighbours[a].insert(neighbours[a].end(), nodes.begin(), nodes.end());
+  }
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -23,7 +28,8 @@ std::vector<std::vector<int>> nodeNeighbours(std::size_t numNodes,
 }  // namespace
 
 MatrixAssembler::MatrixAssembler(const DofMap& dofs,
-                                 const std::vector<std::vector<int>>& elementNodes)
+                                 const std::vector<std::vector<int>>& elementNodes,
+                                 const std::vector<std::vector<int>>& extraGraphNodes)
     : dim_(dofs.dim()),
       ownedDofs_(static_cast<LO>(dofs.numOwnedNodes() * dofs.dim())),
       elementNodes_(elementNodes) {
@@ -32,7 +38,7 @@ MatrixAssembler::MatrixAssembler(const DofMap& dofs,
   const auto& comm = dofs.comm();
   const std::size_t numNodes = dofs.overlapNodes().size();
   const std::size_t ownedNodes = dofs.numOwnedNodes();
-  const auto neighbours = nodeNeighbours(numNodes, elementNodes_);
+  const auto neighbours = nodeNeighbours(numNodes, elementNodes_, extraGraphNodes);
   auto gidOf = [&](int node, int c) {
     return overlapMap->getGlobalElement(static_cast<LO>(node * dim_ + c));
   };

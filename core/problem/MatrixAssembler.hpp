@@ -18,8 +18,12 @@ namespace contactlab {
 
 class MatrixAssembler {
  public:
-  // elementNodes[e]: overlap node indices of local element e.
-  MatrixAssembler(const DofMap& dofs, const std::vector<std::vector<int>>& elementNodes);
+  // elementNodes[e]: overlap node indices of local element e. extraGraphNodes[e] (empty, or one
+  // list per element): further overlap nodes the graph couples to e's nodes and to each other,
+  // where a constraint moves rows and columns (LinearConstraints::partnerNodes); no element
+  // matrix writes there.
+  MatrixAssembler(const DofMap& dofs, const std::vector<std::vector<int>>& elementNodes,
+                  const std::vector<std::vector<int>>& extraGraphNodes = {});
 
   const Teuchos::RCP<Matrix>& matrix() const { return matrix_; }
 

@@ -10,12 +10,12 @@
 #include "core/problem/ElementKernel.hpp"
 #include "core/problem/ElementTechnology.hpp"
 #include "core/problem/ElementUpdateError.hpp"
+#include "core/problem/LinearConstraints.hpp"
 #include "core/problem/MassKernel.hpp"
 #include "core/problem/MatrixAssembler.hpp"
 #include "core/problem/NodalAssembler.hpp"
 #include "core/problem/PlaneStressModel.hpp"
 #include "core/problem/SurfaceLoadAssembler.hpp"
-#include "core/problem/SymmetryConstraints.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +77,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
   checkModel();
   resolveSymmetryConditions(model_);
   const auto partition = partitionElements(mesh, rawMpiComm(comm));
-  dofs_ = std::make_unique<DofMap>(mesh, partition, comm);
+  const std::vector<TieEquation> ties = tieEquations(model_);
+  dofs_ = std::make_unique<DofMap>(mesh, partition, comm, linkedNodes(ties));
 
   blockMaterial_.resize(mesh.blocks.size());
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
@@ -159,7 +160,7 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
       }
     }
   }
-  symmetry_ = std::make_unique<SymmetryConstraints>(model_, *dofs_);
+  linearConstraints_ = std::make_unique<LinearConstraints>(model_, *dofs_, ties);
   for (const auto& bc : model_.dirichlet)
     reactions_.push_back({bc.name, {}});
   for (const auto& s : model_.symmetries)
@@ -312,11 +313,19 @@ std::optional<double> Problem::blockTemperature(int block, double t) const {
 }
 
 void Problem::buildGraph() {
-  std::vector<std::vector<int>> elementNodes;
+  std::vector<std::vector<int>> elementNodes, partnerNodes;
   elementNodes.reserve(elements_.size());
   for (const auto& e : elements_)
     elementNodes.push_back(e.nodes);
-  assembler_ = std::make_unique<MatrixAssembler>(*dofs_, elementNodes);
+  // A tie's dependent node moves its row and column to its partners: widen its elements' graph.
+  if (!linearConstraints_->tiedNodes().empty())
+    for (const auto& e : elements_) {
+      partnerNodes.emplace_back();
+      for (int n : e.nodes)
+        for (std::int64_t partner : linearConstraints_->partnerNodes(dofs_->overlapNodes()[n]))
+          partnerNodes.back().push_back(dofs_->overlapNodeIndex(partner));
+    }
+  assembler_ = std::make_unique<MatrixAssembler>(*dofs_, elementNodes, partnerNodes);
   exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
   importer_ = Teuchos::rcp(new Import(dofs_->ownedMap(), dofs_->overlapMap()));
 }
@@ -347,11 +356,11 @@ void Problem::applyDirichlet(double t, Vector& u) const {
     data[c.lid] =
         bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t) : bc.value * bc.function(t);
   }
-  symmetry_->project(data.getRawPtr());
+  linearConstraints_->project(data.getRawPtr());
 }
 
 void Problem::completeIncrement(Vector& dx) const {
-  symmetry_->project(dx.getDataNonConst(0).getRawPtr());
+  linearConstraints_->project(dx.getDataNonConst(0).getRawPtr());
 }
 
 double Problem::internalForceNorm() const {
@@ -537,9 +546,9 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     assemblyFailure_.message =
         failureCode == globalFailure ? failureMessage : "an element of another rank failed";
   }
-  Matrix* reducedTangent = withTangent && !deferSymmetry_ ? assembler_->matrix().get() : nullptr;
+  Matrix* reducedTangent = withTangent && !deferConstraints_ ? assembler_->matrix().get() : nullptr;
   if (!residual) {
-    symmetry_->reduce(reducedTangent, nullptr);
+    linearConstraints_->reduce(reducedTangent, nullptr);
     return;
   }
 
@@ -581,11 +590,11 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   for (std::size_t s = 0; s < springForces_.size(); ++s)
     for (int c = 0; c < 3; ++c)
       springForces_[s].force[c] = global[reactionSums + 3 * s + c];
-  if (symmetry_->empty()) return;
-  const auto planes = symmetry_->reactions(*residual);
+  if (linearConstraints_->empty()) return;
+  const auto planes = linearConstraints_->reactions(*residual);
   for (std::size_t s = 0; s < planes.size(); ++s)
     reactions_[model_.dirichlet.size() + s].force = planes[s];
-  if (!deferSymmetry_) symmetry_->reduce(reducedTangent, residual);
+  if (!deferConstraints_) linearConstraints_->reduce(reducedTangent, residual);
 }
 
 void Problem::addToReactions(const Vector& forces) {
@@ -599,8 +608,8 @@ void Problem::addToReactions(const Vector& forces) {
   for (std::size_t d = 0; d < model_.dirichlet.size(); ++d)
     for (int c = 0; c < 3; ++c)
       reactions_[d].force[c] += global[3 * d + c];
-  if (symmetry_->empty()) return;
-  const auto planes = symmetry_->reactions(forces);
+  if (linearConstraints_->empty()) return;
+  const auto planes = linearConstraints_->reactions(forces);
   for (std::size_t s = 0; s < planes.size(); ++s)
     for (int c = 0; c < 3; ++c)
       reactions_[model_.dirichlet.size() + s].force[c] += planes[s][c];

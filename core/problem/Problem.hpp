@@ -9,8 +9,9 @@
 // never changes a prescribed value. The residual a constrained dof would have carried is kept
 // as the reaction of its condition. Springs to ground add k u to the residual and k to the
 // diagonal of the tangent at their nodes (NodalAssembler.hpp). Symmetry conditions on inclined
-// planes eliminate one component per node from the others (SymmetryConstraints.hpp); those
-// normal to an axis are Dirichlet conditions. External forces depend on u only
+// planes eliminate one component per node from the others, ties one dof per equation from the
+// other nodes' (LinearConstraints.hpp); symmetry planes normal to an axis are Dirichlet
+// conditions. External forces depend on u only
 // through follower pressures on finite-strain elements (SurfaceLoadAssembler.hpp).
 #include "base/LinearAlgebra.hpp"
 #include "core/io/MeshPiece.hpp"
@@ -35,7 +36,7 @@ class MatrixAssembler;
 class ElementKernel;
 class NodalAssembler;
 class SurfaceLoadAssembler;
-class SymmetryConstraints;
+class LinearConstraints;
 
 // Errors of a displacement field against an exact one (manufactured solutions, studies).
 struct DisplacementErrors {
@@ -86,10 +87,10 @@ class Problem : public NonlinearSystem {
   // The tangent matrix (owned rows), refilled by every assemble() with a tangent.
   const Teuchos::RCP<Matrix>& tangent() const override;
 
-  // Sets the prescribed values at time t in u (owned entries), and the components an inclined
-  // symmetry plane makes dependent.
+  // Sets the prescribed values at time t in u (owned entries), and the dofs an inclined
+  // symmetry plane or a tie makes dependent.
   void applyDirichlet(double t, Vector& u) const override;
-  // Writes the dependent components of an increment from the others (SymmetryConstraints).
+  // Writes the dependent components of an increment from the others (LinearConstraints).
   void completeIncrement(Vector& dx) const override;
   // Twice the largest distance of a node from the nodes' centroid (every rank holds the whole
   // mesh).
@@ -127,11 +128,11 @@ class Problem : public NonlinearSystem {
   // The inertia c M (u - reference) of a regularizing dynamics (NonlinearSystem.hpp), added
   // element by element. Throws InputError for a nonzero coefficient without a mass.
   void setInertia(const InertiaTerm& inertia) override;
-  // The inclined symmetry planes' elimination. A caller that adds terms to the tangent and
-  // residual (the contact problem) defers it: assemble() then leaves both unreduced, and the
-  // caller reduces its own monolithic system.
-  const SymmetryConstraints& symmetry() const { return *symmetry_; }
-  void deferSymmetryReduction() { deferSymmetry_ = true; }
+  // The inclined symmetry planes' and the ties' elimination. A caller that adds terms to the
+  // tangent and residual (the contact problem) defers it: assemble() then leaves both
+  // unreduced, and the caller reduces its own monolithic system.
+  const LinearConstraints& constraints() const { return *linearConstraints_; }
+  void deferConstraintReduction() { deferConstraints_ = true; }
   // Dofs eliminated by Dirichlet conditions, indexed by overlap LID (owned dofs first).
   const std::vector<char>& constrainedDofs() const { return constrained_; }
   // Names of the pressure loads that follow the deformation (on finite-strain elements, see
@@ -228,8 +229,8 @@ class Problem : public NonlinearSystem {
     std::int64_t node;
   };
   std::vector<Constraint> constraints_;
-  std::unique_ptr<SymmetryConstraints> symmetry_;
-  bool deferSymmetry_ = false;
+  std::unique_ptr<LinearConstraints> linearConstraints_;
+  bool deferConstraints_ = false;
   std::unique_ptr<SurfaceLoadAssembler> surfaceLoads_;
   std::unique_ptr<NodalAssembler> nodal_;  // springs and point loads
   std::unique_ptr<MatrixAssembler> assembler_;

@@ -29,6 +29,7 @@ struct SolidModel {
   std::vector<CentrifugalLoad> centrifugalLoads;
   std::vector<PointLoad> pointLoads;
   std::vector<NodalSpring> springs;
+  std::vector<TieCondition> ties;
   // Prescribed block temperatures (at most one per block; a block without one stays at its
   // material's reference temperature). Only materials with a referenceTemperature() take one.
   std::vector<BlockTemperature> temperatures;

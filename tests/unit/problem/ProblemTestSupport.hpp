@@ -2,6 +2,7 @@
 // Shared by the problem tests: structured meshes of every element type, a linear-elastic model
 // with the exact solution imposed on the whole boundary, and a MUMPS solve.
 #include "algorithms/RunStatic.hpp"
+#include "base/InputError.hpp"
 #include "core/materials/LinearElastic.hpp"
 #include "core/mesh/MeshGenerators.hpp"
 #include "core/problem/Problem.hpp"
@@ -10,6 +11,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 
+#include <gtest/gtest.h>
 #include <memory>
 #include <random>
 #include <string>
@@ -92,6 +94,47 @@ inline Teuchos::RCP<Vector> solve(Problem& problem, LinearSolver& solver) {
   const RunReport report = runStatic(problem, nullptr, solver, options, *u);
   if (!report.converged) throw std::runtime_error("solve failed: " + report.message);
   return u;
+}
+
+// A static run from zero with MUMPS: the displacement and the run's report.
+struct StaticRun {
+  Teuchos::RCP<Vector> u;
+  RunReport report;
+};
+inline StaticRun runWithMumps(Problem& problem, int maxIterations) {
+  const auto solver = makeSolver("mumps", problem.dofs().comm());
+  StaticSolverOptions options;
+  options.maxIterations = maxIterations;
+  StaticRun run{problem.createVector(), {}};
+  run.report = runStatic(problem, nullptr, *solver, options, *run.u);
+  return run;
+}
+
+// w . K v = v . K w for random w, v, K the tangent at a random state near zero that keeps the
+// Dirichlet values and the eliminated dofs' constraints (MUMPS' symmetric modes stay usable).
+inline void expectSymmetricTangent(Problem& problem, const std::string& what) {
+  auto u = problem.createVector(), v = problem.createVector(), w = problem.createVector();
+  u->randomize(-1e-2, 1e-2);
+  v->randomize(-1.0, 1.0);
+  w->randomize(-1.0, 1.0);
+  problem.applyDirichlet(1.0, *u);
+  problem.completeIncrement(*u);
+  problem.assemble(*u, 1.0, nullptr, true);
+  auto kv = problem.createVector(), kw = problem.createVector();
+  problem.tangent()->apply(*v, *kv);
+  problem.tangent()->apply(*w, *kw);
+  EXPECT_NEAR(w->dot(*kv), v->dot(*kw), 1e-12 * kv->norm2() * w->norm2()) << what;
+}
+
+// Building the problem of `model` is refused with an InputError whose sentence holds `words`.
+inline void expectRefused(SolidModel model, const std::string& words) {
+  try {
+    Problem problem(std::move(model), Tpetra::getDefaultComm());
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    return;
+  }
+  ADD_FAILURE() << "accepted; expected: " << words;
 }
 
 inline Teuchos::RCP<const Comm> selfComm() {

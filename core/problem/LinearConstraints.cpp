@@ -1,4 +1,4 @@
-#include "core/problem/SymmetryConstraints.hpp"
+#include "core/problem/LinearConstraints.hpp"
 
 #include "base/InputError.hpp"
 #include "core/materials/Tensor3.hpp"
@@ -130,10 +130,11 @@ void resolveSymmetryConditions(SolidModel& model) {
   model.symmetries = inclined;
 }
 
-SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& dofs)
+LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs,
+                                     const std::vector<TieEquation>& ties)
     : dim_(model.mesh->dim), numConditions_(model.symmetries.size()), comm_(dofs.comm()) {
   const Mesh& mesh = *model.mesh;
-  std::set<std::pair<std::int64_t, int>> fixed;  // (node, component) of a Dirichlet condition
+  std::set<MeshDof> fixed;  // of a Dirichlet condition
   for (const auto& bc : model.dirichlet)
     for (auto node : mesh.boundaryNodes(bc.group))
       for (int c : bc.components)
@@ -210,24 +211,69 @@ SymmetryConstraints::SymmetryConstraints(const SolidModel& model, const DofMap& 
       all_.push_back(d);
     }
   }
+  addTies(model, dofs, ties, fixed);
   const int local = all_.empty() ? 0 : 1;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(anywhere_));
 }
 
-std::vector<std::array<double, 3>> SymmetryConstraints::allPlaneNormals(std::int64_t node) const {
+void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
+                                const std::vector<TieEquation>& ties,
+                                const std::set<MeshDof>& fixed) {
+  std::set<std::int64_t> tied;
+  for (const TieEquation& e : ties)
+    for (const MeshDof& d : e.dofs) {
+      const auto what = [&] {
+        return "tie '" + model.ties[e.tie].name + "': node " +
+               std::to_string(model.mesh->nodeId(d.first));
+      };
+      if (dofs.globalNode(d.first) < 0) throw InputError(what() + " is on no element");
+      if (std::binary_search(nodes_.begin(), nodes_.end(), d.first))
+        throw InputError(what() +
+                         " is on an inclined symmetry plane; a node with both is not supported");
+      tied.insert(d.first);
+    }
+  tiedNodes_.assign(tied.begin(), tied.end());
+  const int rank = comm_->getRank();
+  const auto lidOf = [&](const MeshDof& d) {
+    return dofs.nodeOwner(d.first) == rank
+               ? static_cast<LO>(dofs.overlapNodeIndex(d.first) * dim_ + d.second)
+               : LO(-1);
+  };
+  const auto gidOf = [&](const MeshDof& d) { return dofs.globalNode(d.first) * dim_ + d.second; };
+  for (const TiedDof& tiedDof : eliminateTies(ties, fixed)) {
+    Dependent d{lidOf(tiedDof.dof), gidOf(tiedDof.dof), {}};
+    auto& partners = partners_[tiedDof.dof.first];
+    for (const auto& [dof, c] : tiedDof.terms) {
+      d.terms.push_back({lidOf(dof), gidOf(dof), c, fixed.count(dof) > 0});
+      if ((d.lid < 0) != (d.terms.back().lid < 0))
+        throw std::logic_error("LinearConstraints: a tie's nodes are not owned together");
+      if (dof.first != tiedDof.dof.first) partners.push_back(dof.first);
+    }
+    std::sort(partners.begin(), partners.end());
+    partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
+    all_.push_back(d);
+  }
+}
+
+std::vector<std::int64_t> LinearConstraints::partnerNodes(std::int64_t node) const {
+  const auto it = partners_.find(node);
+  return it == partners_.end() ? std::vector<std::int64_t>{} : it->second;
+}
+
+std::vector<std::array<double, 3>> LinearConstraints::allPlaneNormals(std::int64_t node) const {
   auto normals = planeNormals(node);
   const auto it = axisPlanes_.find(node);
   if (it != axisPlanes_.end()) normals.insert(normals.end(), it->second.begin(), it->second.end());
   return normals;
 }
 
-std::vector<std::array<double, 3>> SymmetryConstraints::planeNormals(std::int64_t node) const {
+std::vector<std::array<double, 3>> LinearConstraints::planeNormals(std::int64_t node) const {
   const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
   if (it == nodes_.end() || *it != node) return {};
   return normals_[static_cast<std::size_t>(it - nodes_.begin())];
 }
 
-void SymmetryConstraints::project(double* owned) const {
+void LinearConstraints::project(double* owned) const {
   for (const Dependent& d : all_) {
     if (d.lid < 0) continue;
     double v = 0;
@@ -237,7 +283,7 @@ void SymmetryConstraints::project(double* owned) const {
   }
 }
 
-void SymmetryConstraints::reduce(Matrix* matrix, Vector* residual) const {
+void LinearConstraints::reduce(Matrix* matrix, Vector* residual) const {
   if (!anywhere_) return;
   if (residual) {
     auto r = residual->getDataNonConst(0);
@@ -266,7 +312,7 @@ void SymmetryConstraints::reduce(Matrix* matrix, Vector* residual) const {
     if (col != Teuchos::OrdinalTraits<LO>::invalid()) dependentColumn[col] = &d;
   }
   const auto missing = [](const char* what) {
-    throw std::logic_error(std::string("SymmetryConstraints: the matrix graph lacks ") + what);
+    throw std::logic_error(std::string("LinearConstraints: the matrix graph lacks ") + what);
   };
   const LO numRows = static_cast<LO>(tangent.getNodeNumRows());
   for (LO row = 0; row < numRows; ++row) {
@@ -310,7 +356,7 @@ void SymmetryConstraints::reduce(Matrix* matrix, Vector* residual) const {
   tangent.fillComplete(tangent.getDomainMap(), tangent.getRangeMap());
 }
 
-std::vector<std::array<double, 3>> SymmetryConstraints::reactions(const Vector& residual) const {
+std::vector<std::array<double, 3>> LinearConstraints::reactions(const Vector& residual) const {
   std::vector<std::array<double, 3>> local(numConditions_), global(numConditions_);
   const auto r = residual.getData(0);
   for (const OwnedNode& n : ownedNodes_) {

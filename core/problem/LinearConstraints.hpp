@@ -1,25 +1,34 @@
 #pragma once
-// Symmetry (roller) conditions n . u = 0 on planes that are not normal to an axis, imposed
-// exactly by eliminating one component per node (two where a node lies on two planes in 3D):
-// u = T v, with v the node's other components and u_k = sum_j c_kj u_j for each dependent k.
+// Dofs eliminated by homogeneous linear constraints: symmetry (roller) conditions n . u = 0 on
+// planes that are not normal to an axis, and ties between the dofs of nodes (TieCondition,
+// TieEquations.hpp). Each dependent dof k is written in independent ones,
+// u_k = sum_j c_kj u_j, so u = T v with v the independent dofs. A symmetry plane makes one
+// component per node dependent (two where a node lies on two planes in 3D), on the node's
+// other components; a tie's equation one dof, on the other nodes' dofs.
 //
 // The system solved is T^T K T v = -T^T R, which stays symmetric when K is: reduce() combines
 // the dependent rows and columns of an assembled tangent into their partners' and leaves a unit
 // row and column in their place (zero residual there, like a Dirichlet dof), and project()
 // writes the dependent components back from the others. A Newton increment is completed by
-// project() after each linear solve (NonlinearSystem::completeIncrement): the constraint is
-// linear, so every iterate then satisfies it exactly and the Newton step is the constrained
-// problem's own.
+// project() after each linear solve (NonlinearSystem::completeIncrement): the constraints are
+// linear and homogeneous, so every iterate then satisfies them exactly and the Newton step is
+// the constrained problem's own.
+//
+// A tie's dependent moves its row and column to other nodes: the matrix graph must hold them
+// (partnerNodes: MatrixAssembler widens each element holding a dependent node), and the rows
+// must be on one rank (DofMap owns the linked nodes together).
 //
 // Planes normal to an axis are Dirichlet conditions (u_axis = 0): resolveSymmetryConditions
 // turns them into those, so the contact code drops a friction direction they fix as it does for
 // any Dirichlet condition.
 #include "base/LinearAlgebra.hpp"
 #include "core/problem/SolidModel.hpp"
+#include "core/problem/TieEquations.hpp"
 
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,16 +45,23 @@ std::array<double, 3> symmetryPlaneNormal(const Mesh& mesh, const SymmetryCondit
 // (value 0, constant) and leave the list. Throws InputError for a plane that is not one.
 void resolveSymmetryConditions(SolidModel& model);
 
-class SymmetryConstraints {
+class LinearConstraints {
  public:
-  // `model`: symmetries resolved (inclined only). A component a Dirichlet condition fixes is
-  // never dependent (its value enters project() as given); where the planes leave no free
-  // component to eliminate, the Dirichlet conditions hold the node. Every rank knows every
-  // node's dependents: a row may have columns of another rank's symmetry nodes.
-  SymmetryConstraints(const SolidModel& model, const DofMap& dofs);
+  // `model`: symmetries resolved (inclined only); `ties`: tieEquations(model), whose linked
+  // nodes `dofs` owns together. A component a Dirichlet condition fixes is never dependent (its
+  // value enters project() as given); where the planes leave no free component to eliminate,
+  // the Dirichlet conditions hold the node. Every rank knows every node's dependents: a row may
+  // have columns of another rank's symmetry nodes. Throws InputError for a tied node on an
+  // inclined symmetry plane or without an element.
+  LinearConstraints(const SolidModel& model, const DofMap& dofs,
+                    const std::vector<TieEquation>& ties = {});
 
-  // No rank has an inclined symmetry node (collective value).
+  // No rank has a dependent dof (collective value).
   bool empty() const { return !anywhere_; }
+  // Mesh nodes a tie joins (sorted), and for a node with a tie's dependent dof the other nodes
+  // its row and column move to (empty: none).
+  const std::vector<std::int64_t>& tiedNodes() const { return tiedNodes_; }
+  std::vector<std::int64_t> partnerNodes(std::int64_t node) const;
   // Nodes (mesh indices) that carry an inclined symmetry condition (every rank's).
   const std::vector<std::int64_t>& nodes() const { return nodes_; }
   // The unit normals of the inclined planes through a mesh node (empty: none).
@@ -82,10 +98,16 @@ class SymmetryConstraints {
     LO firstLid;                                                // LID of component 0
     std::vector<std::pair<int, std::array<double, 3>>> planes;  // (condition, unit normal)
   };
+  // The ties' dependents (after the planes': a tied node on an inclined plane is refused).
+  void addTies(const SolidModel& model, const DofMap& dofs, const std::vector<TieEquation>& ties,
+               const std::set<MeshDof>& fixed);
+
   int dim_;
   std::vector<Dependent> all_;
   std::vector<OwnedNode> ownedNodes_;
   std::vector<std::int64_t> nodes_;                                        // sorted
+  std::vector<std::int64_t> tiedNodes_;                                    // sorted
+  std::map<std::int64_t, std::vector<std::int64_t>> partners_;             // by dependent node
   std::vector<std::vector<std::array<double, 3>>> normals_;                // per nodes_ entry
   std::map<std::int64_t, std::vector<std::array<double, 3>>> axisPlanes_;  // by mesh node
   std::size_t numConditions_ = 0;

@@ -1,0 +1,49 @@
+#pragma once
+// The equations of a model's ties (TieCondition, Loads.hpp) and their elimination.
+//
+// tieEquations() reads each tie's groups and matches their nodes into tuples; every tuple and
+// listed component gives one homogeneous equation sum_i a_i u(node_i, c) = 0. eliminateTies()
+// brings the equations to reduced row echelon form by Gauss-Jordan elimination: each equation
+// makes one dof dependent (its largest coefficient among the dofs that no Dirichlet condition
+// fixes and no earlier equation made dependent; the first such on a tie) and every dependent is
+// written in independent dofs only, so a chain of ties (a = b, b = c) or a node tied to several
+// resolves. An equation that leaves no free dof (every dof prescribed, or the equation implied
+// by earlier ones) makes nothing dependent: the Dirichlet conditions decide those dofs.
+#include "core/problem/SolidModel.hpp"
+
+#include <cstdint>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace contactlab {
+
+// One dof of the mesh: (node, component).
+using MeshDof = std::pair<std::int64_t, int>;
+
+struct TieEquation {
+  int tie = 0;  // index in model.ties
+  std::vector<MeshDof> dofs;
+  std::vector<double> coefficients;  // sum_i coefficients[i] u(dofs[i]) = 0
+};
+
+// u(dof) = sum_j coefficient_j u(term_j), the terms independent dofs.
+struct TiedDof {
+  MeshDof dof;
+  std::vector<std::pair<MeshDof, double>> terms;
+};
+
+// Every equation of model.ties. Throws InputError with a sentence for a group that is not one,
+// groups of different node counts, a node without a partner at the groups' translation, a node
+// tied to itself, or coefficients that do not match the groups.
+std::vector<TieEquation> tieEquations(const SolidModel& model);
+
+// Nodes linked by the equations, one sorted list per connected set: the nodes whose dofs one
+// rank must own together (DofMap).
+std::vector<std::vector<std::int64_t>> linkedNodes(const std::vector<TieEquation>& equations);
+
+// The dependents of the equations; `fixed`: the dofs Dirichlet conditions prescribe.
+std::vector<TiedDof> eliminateTies(const std::vector<TieEquation>& equations,
+                                   const std::set<MeshDof>& fixed);
+
+}  // namespace contactlab

@@ -1,0 +1,234 @@
+// Ties between the dofs of nodes (TieEquations.hpp, LinearConstraints.hpp). Two blocks meshed
+// separately with coincident nodes on their interface, tied node to node, are one body: their
+// displacement must be the single mesh's to solver precision, in small and finite strain, on
+// linear and quadratic elements, 2D and 3D, with the same Newton iterations and a symmetric
+// tangent. Run on 1 and 2 ranks: the interface's node pairs straddle the partition.
+#include "ProblemTestSupport.hpp"
+
+#include "base/InputError.hpp"
+#include "core/materials/NeoHookean.hpp"
+#include "core/problem/LinearConstraints.hpp"
+#include "core/problem/TieEquations.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <set>
+
+namespace contactlab::test {
+namespace {
+
+std::shared_ptr<const Material> material(bool finiteStrain) {
+  if (finiteStrain) return std::make_shared<NeoHookean>(NeoHookean::fromYoungPoisson(1e3, 0.3));
+  return std::make_shared<LinearElastic>(1e3, 0.3);
+}
+
+// A column of height 2, clamped at its foot and sheared at its head: one mesh, or two blocks of
+// height 1 whose interfaces (coincident nodes) are tied.
+SolidModel shearedColumn(const std::string& element, bool tied, bool finiteStrain) {
+  const bool is3d = is3D(element);
+  SolidModel model;
+  std::string foot = "bottom", head = "top";
+  if (tied && is3d) {
+    StackedBlocks3DParams p;
+    p.lowerDivisions = p.upperDivisions = {2, 2, 3};
+    p.elementType = element;
+    model.mesh = std::make_shared<Mesh>(generateStackedBlocks3D(p));
+  } else if (tied) {
+    StackedBlocks2DParams p;
+    p.lowerDivisions = p.upperDivisions = {3, 3};
+    p.elementType = element;
+    model.mesh = std::make_shared<Mesh>(generateStackedBlocks2D(p));
+  } else if (is3d) {
+    BoxParams p;
+    p.lengths = {1, 1, 2};
+    p.divisions = {2, 2, 6};
+    p.elementType = element;
+    model.mesh = std::make_shared<Mesh>(generateBox(p));
+    foot = "zmin", head = "zmax";
+  } else {
+    RectangleParams p;
+    p.lengths = {1, 2};
+    p.divisions = {3, 6};
+    p.elementType = element;
+    model.mesh = std::make_shared<Mesh>(generateRectangle(p));
+  }
+  if (tied) {
+    for (const char* block : {"lower", "upper"})
+      model.materials[block] = material(finiteStrain);
+    foot = "lower-bottom", head = "upper-top";
+    TieCondition tie;
+    tie.name = "interface";
+    tie.groups = {"lower-top", "upper-bottom"};
+    tie.coefficients = {1.0, -1.0};
+    for (int c = 0; c < model.mesh->dim; ++c)
+      tie.components.push_back(c);
+    model.ties.push_back(tie);
+  } else {
+    model.materials["body"] = material(finiteStrain);
+  }
+  DirichletCondition clamp;
+  clamp.name = clamp.group = foot;
+  for (int c = 0; c < model.mesh->dim; ++c)
+    clamp.components.push_back(c);
+  model.dirichlet.push_back(clamp);
+  PointLoad shear;
+  shear.name = "shear";
+  shear.group = head;
+  shear.force = {finiteStrain ? 40.0 : 1.0, 0, finiteStrain ? -20.0 : 0.0};
+  if (!is3d) shear.force[1] = shear.force[2], shear.force[2] = 0;
+  model.pointLoads.push_back(shear);
+  return model;
+}
+
+class TiedColumn : public ::testing::TestWithParam<std::tuple<std::string, bool>> {};
+
+TEST_P(TiedColumn, IsTheSingleMesh) {
+  const auto [element, finiteStrain] = GetParam();
+  auto comm = Tpetra::getDefaultComm();
+  Problem single(shearedColumn(element, false, finiteStrain), comm);
+  Problem tied(shearedColumn(element, true, finiteStrain), comm);
+  EXPECT_FALSE(tied.constraints().empty());
+  // On 2 ranks the partition cuts the column: some rank assembles elements of one block only,
+  // so the pairs' rows meet on their common owner.
+  if (comm->getSize() > 1) {
+    std::set<int> blocks;
+    for (const ElementRef& e : tied.dofs().localElements())
+      blocks.insert(e.block);
+    int split = blocks.size() == 1 ? 1 : 0, anywhere = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, split, Teuchos::outArg(anywhere));
+    EXPECT_EQ(anywhere, 1);
+  }
+  const StaticRun rs = runWithMumps(single, 15), rt = runWithMumps(tied, 15);
+  ASSERT_TRUE(rs.report.converged && rt.report.converged) << rs.report.message << rt.report.message;
+  EXPECT_EQ(rt.report.iterations, rs.report.iterations);
+  const Vector &us = *rs.u, &ut = *rt.u;
+  // Every node of the tied mesh (both of an interface pair) against the single mesh's node at
+  // its place.
+  const Mesh& a = *single.model().mesh;
+  const Mesh& b = *tied.model().mesh;
+  double largest = 0, error = 0;
+  std::size_t matched = 0;
+  for (std::size_t n = 0; n < b.numNodes(); ++n)
+    for (std::size_t m = 0; m < a.numNodes(); ++m) {
+      double d = 0;
+      for (int i = 0; i < 3; ++i)
+        d += std::abs(a.coords[3 * m + i] - b.coords[3 * n + i]);
+      if (d > 1e-12) continue;
+      ++matched;
+      const auto x = single.nodeDisplacement(us, static_cast<std::int64_t>(m));
+      const auto y = tied.nodeDisplacement(ut, static_cast<std::int64_t>(n));
+      for (int i = 0; i < 3; ++i) {
+        largest = std::max(largest, std::abs(x[i]));
+        error = std::max(error, std::abs(x[i] - y[i]));
+      }
+    }
+  EXPECT_EQ(matched, b.numNodes());
+  EXPECT_GT(largest, finiteStrain ? 0.05 : 1e-3);  // a real deformation
+  EXPECT_LT(error, 1e-9 * largest);
+  // The clamp's reaction balances the shear in both.
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(tied.reactions()[0].force[i], single.reactions()[0].force[i], 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Elements, TiedColumn,
+                         ::testing::Combine(::testing::Values("quad4", "quad8", "tri6", "hex8",
+                                                              "tet10"),
+                                            ::testing::Bool()));
+
+// T^T K T keeps the tangent symmetric with ties (MUMPS' symmetric modes stay usable).
+TEST(Ties, KeepTheTangentSymmetric) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const char* element : {"quad8", "hex8"}) {
+    Problem problem(shearedColumn(element, true, true), comm);
+    expectSymmetricTangent(problem, element);
+  }
+}
+
+// A general equation: each node of the column's right side moves sideways twice as far as the
+// left side's node at its height, u_r - 2 u_l = 0, and the solution keeps it exactly.
+TEST(Ties, KeepAGeneralEquation) {
+  auto comm = Tpetra::getDefaultComm();
+  SolidModel model = shearedColumn("quad4", false, false);
+  TieCondition lever;
+  lever.name = "lever";
+  lever.groups = {"right", "left"};  // 7 nodes each, a translation apart
+  lever.coefficients = {1.0, -2.0};
+  lever.components = {0};
+  model.ties.push_back(lever);
+  Problem problem(std::move(model), comm);
+  const StaticRun run = runWithMumps(problem, 3);
+  ASSERT_TRUE(run.report.converged) << run.report.message;
+  const Vector& u = *run.u;
+  const Mesh& m = *problem.model().mesh;
+  const auto right = m.boundaryNodes("right"), left = m.boundaryNodes("left");
+  double largest = 0;
+  ASSERT_EQ(right.size(), left.size());
+  for (std::int64_t r : right)
+    for (std::int64_t l : left) {
+      if (std::abs(m.coords[3 * r + 1] - m.coords[3 * l + 1]) > 1e-12) continue;
+      const double ur = problem.nodeDisplacement(u, r)[0];
+      const double ul = problem.nodeDisplacement(u, l)[0];
+      EXPECT_NEAR(ur, 2 * ul, 1e-12 * std::abs(ur) + 1e-15);
+      largest = std::max(largest, std::abs(ur));
+    }
+  EXPECT_GT(largest, 1e-4);
+}
+
+// Gauss-Jordan over the equations: chains resolve to independent dofs, a prescribed dof is never
+// dependent, an implied equation makes nothing dependent, the largest coefficient is the pivot.
+TEST(TieEquations, EliminationResolvesChains) {
+  const MeshDof a{0, 0}, b{1, 0}, c{2, 0};
+  auto equation = [](MeshDof x, double cx, MeshDof y, double cy) {
+    TieEquation e;
+    e.dofs = {x, y};
+    e.coefficients = {cx, cy};
+    return e;
+  };
+  using Terms = std::vector<std::pair<MeshDof, double>>;
+  // a = b, b = c: a and b both in c.
+  auto chain = eliminateTies({equation(a, 1, b, -1), equation(b, 1, c, -1)}, {});
+  ASSERT_EQ(chain.size(), 2u);
+  EXPECT_EQ(chain[0].dof, a);
+  EXPECT_EQ(chain[0].terms, (Terms{{c, 1.0}}));
+  EXPECT_EQ(chain[1].dof, b);
+  EXPECT_EQ(chain[1].terms, (Terms{{c, 1.0}}));
+  // a prescribed: b and c follow it; c = a again is implied.
+  auto held =
+      eliminateTies({equation(a, 1, b, -1), equation(b, 1, c, -1), equation(c, 1, a, -1)}, {a});
+  ASSERT_EQ(held.size(), 2u);
+  EXPECT_EQ(held[0].dof, b);
+  EXPECT_EQ(held[0].terms, (Terms{{a, 1.0}}));
+  EXPECT_EQ(held[1].dof, c);
+  EXPECT_EQ(held[1].terms, (Terms{{a, 1.0}}));
+  // 2 a + 3 b = 0: b = -2/3 a. Both prescribed: nothing.
+  auto scaled = eliminateTies({equation(a, 2, b, 3)}, {});
+  ASSERT_EQ(scaled.size(), 1u);
+  EXPECT_EQ(scaled[0].dof, b);
+  ASSERT_EQ(scaled[0].terms.size(), 1u);
+  EXPECT_DOUBLE_EQ(scaled[0].terms[0].second, -2.0 / 3.0);
+  EXPECT_TRUE(eliminateTies({equation(a, 2, b, 3)}, {a, b}).empty());
+  // Linked nodes: {0, 1, 2} from the chain, {5, 7} apart.
+  auto sets =
+      linkedNodes({equation(a, 1, b, -1), equation({7, 1}, 1, {5, 1}, 1), equation(c, 1, b, -1)});
+  EXPECT_EQ(sets, (std::vector<std::vector<std::int64_t>>{{0, 1, 2}, {5, 7}}));
+}
+
+TEST(Ties, RefuseWhatTheyCannotTie) {
+  auto refused = [](const std::function<void(TieCondition&)>& change, const std::string& words) {
+    SolidModel model = shearedColumn("quad4", true, false);
+    change(model.ties[0]);
+    expectRefused(std::move(model), words);
+  };
+  refused([](TieCondition& t) { t.groups[1] = "upper-left"; }, "no partner in group 'upper-left'");
+  refused([](TieCondition& t) { t.groups[1] = "lower-top"; }, "tie it to itself");
+  refused([](TieCondition& t) { t.groups[1] = "nowhere"; }, "nowhere");
+  refused([](TieCondition& t) { t.coefficients = {1.0}; }, "1 coefficients for 2 groups");
+  refused([](TieCondition& t) { t.coefficients = {0.0, 0.0}; }, "every coefficient is zero");
+  refused([](TieCondition& t) { t.groups.pop_back(), t.coefficients.pop_back(); },
+          "two groups or more");
+}
+
+}  // namespace
+}  // namespace contactlab::test
