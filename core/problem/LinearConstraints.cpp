@@ -240,8 +240,15 @@ void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
                : LO(-1);
   };
   const auto gidOf = [&](const MeshDof& d) { return dofs.globalNode(d.first) * dim_ + d.second; };
+  numTies_ = model.ties.size();
   for (const TiedDof& tiedDof : eliminateTies(ties, fixed)) {
     Dependent d{lidOf(tiedDof.dof), gidOf(tiedDof.dof), {}};
+    if (d.lid >= 0)
+      for (const auto& [e, w] : tiedDof.equations) {
+        const int tie = ties[e].tie;
+        tieForceTerms_.push_back(
+            {d.lid, tie, ties[e].dofs.front().second, w * model.ties[tie].coefficients.front()});
+      }
     auto& partners = partners_[tiedDof.dof.first];
     for (const auto& [dof, c] : tiedDof.terms) {
       d.terms.push_back({lidOf(dof), gidOf(dof), c, fixed.count(dof) > 0});
@@ -354,6 +361,17 @@ void LinearConstraints::reduce(Matrix* matrix, Vector* residual) const {
     kValues[diagonal] = 1.0;
   }
   tangent.fillComplete(tangent.getDomainMap(), tangent.getRangeMap());
+}
+
+std::vector<std::array<double, 3>> LinearConstraints::tieForces(const Vector& residual) const {
+  std::vector<std::array<double, 3>> local(numTies_), global(numTies_);
+  const auto r = residual.getData(0);
+  for (const TieForceTerm& t : tieForceTerms_)
+    local[t.tie][t.component] += t.w * r[t.lid];
+  if (numTies_ > 0)
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(3 * numTies_),
+                       local.front().data(), global.front().data());
+  return global;
 }
 
 std::vector<std::array<double, 3>> LinearConstraints::reactions(const Vector& residual) const {

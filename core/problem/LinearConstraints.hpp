@@ -81,6 +81,10 @@ class LinearConstraints {
   // components, from a residual before reduce() (owned entries; collective). A node on several
   // planes splits its force along their normals (at equilibrium it lies in their span).
   std::vector<std::array<double, 3>> reactions(const Vector& residual) const;
+  // The force each tie exerts on the nodes of its first group (summed, per component), from a
+  // residual before reduce() (owned entries; collective): the equations' multipliers mu solve
+  // A_D^T mu = R_D on the dependent dofs D, and the force is sum_e mu_e a_e,first.
+  std::vector<std::array<double, 3>> tieForces(const Vector& residual) const;
 
  private:
   struct Term {
@@ -111,6 +115,14 @@ class LinearConstraints {
   std::vector<std::vector<std::array<double, 3>>> normals_;                // per nodes_ entry
   std::map<std::int64_t, std::vector<std::array<double, 3>>> axisPlanes_;  // by mesh node
   std::size_t numConditions_ = 0;
+  struct TieForceTerm {
+    LO lid;   // an owned dependent dof
+    int tie;  // model.ties index
+    int component;
+    double w;  // the force's component += w R(lid)
+  };
+  std::vector<TieForceTerm> tieForceTerms_;
+  std::size_t numTies_ = 0;
   int anywhere_ = 0;
   Teuchos::RCP<const Comm> comm_;
 };

@@ -165,6 +165,8 @@ Problem::Problem(SolidModel model, const Teuchos::RCP<const Comm>& comm)
     reactions_.push_back({bc.name, {}});
   for (const auto& s : model_.symmetries)
     reactions_.push_back({s.name, {}});
+  for (const auto& tie : model_.ties)
+    reactions_.push_back({tie.name, {}});
   for (const auto& spring : model_.springs)
     springForces_.push_back({spring.name, {}});
 
@@ -594,6 +596,9 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
   const auto planes = linearConstraints_->reactions(*residual);
   for (std::size_t s = 0; s < planes.size(); ++s)
     reactions_[model_.dirichlet.size() + s].force = planes[s];
+  const auto ties = linearConstraints_->tieForces(*residual);
+  for (std::size_t t = 0; t < ties.size(); ++t)
+    reactions_[model_.dirichlet.size() + planes.size() + t].force = ties[t];
   if (!deferConstraints_) linearConstraints_->reduce(reducedTangent, residual);
 }
 

@@ -101,7 +101,8 @@ class Problem : public NonlinearSystem {
   // Collective (an export and a reduction the first time after an assembly).
   double internalForceNorm() const override;
   // Reactions of the Dirichlet conditions (those of the symmetry planes normal to an axis
-  // among them), then of the inclined symmetry planes, at the last assemble() with a residual,
+  // among them), then of the inclined symmetry planes, then the force each tie exerts on its
+  // first group's nodes, at the last assemble() with a residual,
   // plus what addToReactions added since (the contact forces at supported nodes).
   const std::vector<Reaction>& reactions() const { return reactions_; }
   // Adds forces that other terms put on the constrained dofs (contact's, shaped as an owned

@@ -127,6 +127,106 @@ std::vector<std::vector<std::int64_t>> matchedNodes(const Mesh& mesh, const TieC
   return tuples;
 }
 
+// Gauss-Jordan elimination over the equations, one at a time. Each dependent dof p is kept as
+// its expression in independent dofs and as the combination of the original equations whose
+// reduced row (1 at p, minus the expression) it is: the multipliers of the equations follow from
+// the residual at the dependents through those combinations (TiedDof::equations).
+class GaussJordan {
+ public:
+  void add(const TieEquation& equation, int index, const std::set<MeshDof>& fixed) {
+    // The equation with the dependents found so far substituted, and its combination.
+    Row row;
+    Combination combination{{index, 1.0}};
+    for (std::size_t i = 0; i < equation.dofs.size(); ++i) {
+      const auto found = dependent_.find(equation.dofs[i]);
+      if (found == dependent_.end()) {
+        accumulate(row, {{equation.dofs[i], equation.coefficients[i]}}, 1.0);
+      } else {
+        accumulate(row, found->second, equation.coefficients[i]);
+        accumulate(combination, combination_[found->first], -equation.coefficients[i]);
+      }
+    }
+    double largest = 0;
+    for (const auto& term : row)
+      largest = std::max(largest, std::abs(term.second));
+    row.erase(std::remove_if(
+                  row.begin(), row.end(),
+                  [&](const auto& e) { return std::abs(e.second) <= kDropTolerance * largest; }),
+              row.end());
+    std::size_t pivot = row.size();
+    for (std::size_t i = 0; i < row.size(); ++i)
+      if (!fixed.count(row[i].first) &&
+          (pivot == row.size() || std::abs(row[i].second) > std::abs(row[pivot].second)))
+        pivot = i;
+    if (pivot == row.size()) return;  // prescribed, or implied by the earlier equations
+    const MeshDof p = row[pivot].first;
+    const double a = row[pivot].second;
+    Row expression;
+    for (std::size_t i = 0; i < row.size(); ++i)
+      if (i != pivot) expression.push_back({row[i].first, -row[i].second / a});
+    for (auto& term : combination)
+      term.second /= a;
+    substitute(p, expression, combination);
+    for (const auto& term : expression)
+      users_[term.first].insert(p);
+    dependent_[p] = expression;
+    combination_[p] = combination;
+    order_.push_back(p);
+  }
+
+  std::vector<TiedDof> dependents() const {
+    std::vector<TiedDof> out;
+    for (const MeshDof& d : order_) {
+      TiedDof tied{d, {}, {}};
+      for (const auto& term : dependent_.at(d))
+        if (term.second != 0) tied.terms.push_back(term);
+      for (const auto& term : combination_.at(d))
+        if (term.second != 0) tied.equations.push_back(term);
+      out.push_back(tied);
+    }
+    return out;
+  }
+
+ private:
+  using Row = std::vector<std::pair<MeshDof, double>>;
+  using Combination = std::vector<std::pair<int, double>>;
+
+  // row += scale * terms, merging repeated keys.
+  template <class Key>
+  static void accumulate(std::vector<std::pair<Key, double>>& row,
+                         const std::vector<std::pair<Key, double>>& terms, double scale) {
+    for (const auto& [key, c] : terms) {
+      auto it = std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == key; });
+      if (it == row.end())
+        row.push_back({key, scale * c});
+      else
+        it->second += scale * c;
+    }
+  }
+
+  // The earlier dependents that use p (d = ... + c p) now use its expression.
+  void substitute(const MeshDof& p, const Row& expression, const Combination& combination) {
+    const auto users = users_.find(p);
+    if (users == users_.end()) return;
+    for (const MeshDof& d : users->second) {
+      Row& r = dependent_[d];
+      const auto at = std::find_if(r.begin(), r.end(), [&](const auto& e) { return e.first == p; });
+      const double c = at->second;
+      r.erase(at);
+      accumulate(r, expression, c);
+      accumulate(combination_[d], combination, c);
+      for (const auto& term : expression)
+        users_[term.first].insert(d);
+    }
+    users_.erase(users);
+  }
+
+  std::map<MeshDof, Row> dependent_;            // each in independent dofs
+  std::map<MeshDof, Combination> combination_;  // each reduced row's original equations
+  std::map<MeshDof, std::set<MeshDof>> users_;  // independent dof -> dependents using it
+  std::vector<MeshDof> order_;                  // dependents in the order found
+};
+
 }  // namespace
 
 std::vector<TieEquation> tieEquations(const SolidModel& model) {
@@ -192,74 +292,10 @@ std::vector<std::vector<std::int64_t>> linkedNodes(const std::vector<TieEquation
 
 std::vector<TiedDof> eliminateTies(const std::vector<TieEquation>& equations,
                                    const std::set<MeshDof>& fixed) {
-  using Row = std::vector<std::pair<MeshDof, double>>;
-  std::map<MeshDof, Row> dependent;                 // each in independent dofs
-  std::map<MeshDof, std::set<MeshDof>> dependents;  // independent dof -> dependents using it
-  std::vector<MeshDof> order;                       // dependents in the order found
-  // row += scale * terms, merging repeated dofs.
-  const auto add = [](Row& row, const Row& terms, double scale) {
-    for (const auto& [dof, c] : terms) {
-      auto it = std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == dof; });
-      if (it == row.end())
-        row.push_back({dof, scale * c});
-      else
-        it->second += scale * c;
-    }
-  };
-  for (const TieEquation& equation : equations) {
-    Row row;
-    for (std::size_t i = 0; i < equation.dofs.size(); ++i) {
-      const auto found = dependent.find(equation.dofs[i]);
-      if (found == dependent.end())
-        add(row, {{equation.dofs[i], equation.coefficients[i]}}, 1.0);
-      else
-        add(row, found->second, equation.coefficients[i]);
-    }
-    double largest = 0;
-    for (const auto& term : row)
-      largest = std::max(largest, std::abs(term.second));
-    row.erase(std::remove_if(
-                  row.begin(), row.end(),
-                  [&](const auto& e) { return std::abs(e.second) <= kDropTolerance * largest; }),
-              row.end());
-    std::size_t pivot = row.size();
-    for (std::size_t i = 0; i < row.size(); ++i)
-      if (!fixed.count(row[i].first) &&
-          (pivot == row.size() || std::abs(row[i].second) > std::abs(row[pivot].second)))
-        pivot = i;
-    if (pivot == row.size()) continue;  // prescribed, or implied by the earlier equations
-    const MeshDof p = row[pivot].first;
-    Row expression;
-    for (std::size_t i = 0; i < row.size(); ++i)
-      if (i != pivot) expression.push_back({row[i].first, -row[i].second / row[pivot].second});
-    // Earlier dependents that use p now use its expression.
-    const auto users = dependents.find(p);
-    if (users != dependents.end()) {
-      for (const MeshDof& d : users->second) {
-        Row& r = dependent[d];
-        const auto at =
-            std::find_if(r.begin(), r.end(), [&](const auto& e) { return e.first == p; });
-        const double c = at->second;
-        r.erase(at);
-        add(r, expression, c);
-        for (const auto& term : expression)
-          dependents[term.first].insert(d);
-      }
-      dependents.erase(users);
-    }
-    for (const auto& term : expression)
-      dependents[term.first].insert(p);
-    dependent[p] = expression;
-    order.push_back(p);
-  }
-  std::vector<TiedDof> out;
-  for (const MeshDof& d : order) {
-    Row terms;
-    for (const auto& term : dependent[d])
-      if (term.second != 0) terms.push_back(term);
-    out.push_back({d, terms});
-  }
-  return out;
+  GaussJordan elimination;
+  for (std::size_t e = 0; e < equations.size(); ++e)
+    elimination.add(equations[e], static_cast<int>(e), fixed);
+  return elimination.dependents();
 }
 
 }  // namespace contactlab

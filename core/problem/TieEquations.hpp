@@ -27,10 +27,14 @@ struct TieEquation {
   std::vector<double> coefficients;  // sum_i coefficients[i] u(dofs[i]) = 0
 };
 
-// u(dof) = sum_j coefficient_j u(term_j), the terms independent dofs.
+// u(dof) = sum_j coefficient_j u(term_j), the terms independent dofs. `equations`: the
+// reduced row of this dependent as a combination of the original equations (by index), so that
+// the equations' multipliers, with the residual R balancing the ties' forces
+// (R = A^T mu on the tied dofs), are mu_e = sum over dependents d of w_de R(d).
 struct TiedDof {
   MeshDof dof;
   std::vector<std::pair<MeshDof, double>> terms;
+  std::vector<std::pair<int, double>> equations;
 };
 
 // Every equation of model.ties. Throws InputError with a sentence for a group that is not one,

@@ -4,7 +4,9 @@ change in convergence (Newton iterations, status / threshold / geometry fixed-po
 linear solves, converged steps, step cuts, cycling events, the failure's name) shows up even
 when the answer stays within the verification tolerances.
 
-usage: check_iterations.py CONTACTLAB SCENES_DIR WORKDIR GOLD [--update]
+usage: check_iterations.py CONTACTLAB SCENES_DIR WORKDIR GOLD [--update | --shard K/N]
+--shard K/N runs the rows whose index is K modulo N only (the suite runs the gold in shards, so
+that no single test runs long enough to time out on a busy machine).
 Each gold row names a scene, its formulation (`-` for the scene's own) and `;`-separated
 --set arguments (e.g. an algorithm preset); the run must reproduce every count exactly, except in
 rows with a `tolerance` > 0: runs whose path goes through a cycling (non-converging) Newton are
@@ -20,10 +22,17 @@ import csv, json, os, shutil, subprocess, sys
 exe, scenes, work, gold = sys.argv[1:5]
 update = "--update" in sys.argv[5:]
 rows = list(csv.DictReader(open(gold)))
+shard, shards = 0, 1
+if "--shard" in sys.argv[5:]:
+    shard, shards = map(int, sys.argv[sys.argv.index("--shard") + 1].split("/"))
+    if update or not 0 <= shard < shards:
+        sys.exit("--shard K/N: 0 <= K < N, and not with --update (which rewrites the whole gold)")
 fields = ["newton", "status", "threshold", "geometry", "linear_solves", "steps", "cuts",
           "cycling", "failure"]
 failures, out_rows = [], []
 for index, row in enumerate(rows):
+    if index % shards != shard:
+        continue
     out = os.path.join(work, f"{index:02d}-{row['scene']}")
     shutil.rmtree(out, ignore_errors=True)
     cmd = [exe, "run", os.path.join(scenes, row["scene"] + ".yaml"), "--out", out]
