@@ -1,22 +1,20 @@
 #include "core/problem/AxisymmetricKernel.hpp"
 
+#include "core/problem/SmallStrainProducts.hpp"
+
 namespace contactlab {
-namespace {
 
-// The Voigt slots the element carries: rr, zz, tt (hoop), rz; the 3D law's xx, yy, zz, xy.
-constexpr int kRows[4] = {0, 1, 2, 3};
-
-}  // namespace
-
+// The ring's rows rr, zz, tt (hoop), rz in the 3D law's Voigt slots xx, yy, zz, xy, through the
+// plane-strain products plus the hoop row (SmallStrainProducts.hpp).
 void AxisymmetricKernel::evaluate(const double* x, const double* u, const Material& material,
                                   const double* stateOld, double* stateNew, double* residual,
                                   double* tangent, double* pointStress, double* averageStress,
                                   const std::optional<double>& temperature) const {
-  const int n = numNodes_, nd = 2 * n;
+  const int n = numNodes_;
   beginEvaluation(material, stateOld, stateNew, residual, tangent, averageStress);
   double volume = 0.0;
   double dNdx[kMaxNodes * 2];
-  double B[4][kMaxNodes * 2];  // strain = B u, rows rr, zz, tt, rz
+  double CB[4 * kMaxNodes * 2], SB[4 * kMaxNodes * 2];
   MaterialInput in;
   in.temperature = temperature;
   MaterialOutput out;
@@ -26,29 +24,14 @@ void AxisymmetricKernel::evaluate(const double* x, const double* u, const Materi
     double r = 0.0;
     for (int a = 0; a < n; ++a)
       r += N[a] * x[3 * a];
-    for (int v = 0; v < 4; ++v)
-      for (int k = 0; k < nd; ++k)
-        B[v][k] = 0.0;
-    for (int a = 0; a < n; ++a) {
-      const double dr = dNdx[2 * a], dz = dNdx[2 * a + 1];
-      B[0][2 * a] = dr;
-      B[1][2 * a + 1] = dz;
-      B[2][2 * a] = N[a] / r;
-      B[3][2 * a] = dz;
-      B[3][2 * a + 1] = dr;
-    }
     in.strain.fill(0.0);
-    for (int v = 0; v < 4; ++v) {
-      double e = 0.0;
-      for (int k = 0; k < nd; ++k)
-        e += B[v][k] * u[k];
-      in.strain[kRows[v]] = e;
-    }
+    ringStrain(n, N, dNdx, r, u, in.strain.data());
     evaluateSmallStrainPoint(q, w, material, stateOld, stateNew, in, out, pointStress,
                              averageStress, volume);
-    addOperatorTerms(4, kRows, B, nd, w, out.stress.data(), out.tangent.data(), 6, residual,
-                     tangent);
+    if (residual) addRingForce(n, N, dNdx, r, out.stress.data(), w, residual);
+    if (tangent) addRingTangent(n, N, dNdx, r, out.tangent.data(), w, CB, SB, tangent);
   }
+  if (tangent) addMirroredUpperBlocks<2>(tangent);
   if (averageStress)
     for (int k = 0; k < 6; ++k)
       averageStress[k] /= volume;

@@ -1,8 +1,8 @@
 #pragma once
 // An element technology's kernel written twice: per dimension D for plane-strain and 3D cells
 // (on the plain kernels' products, SmallStrainProducts.hpp / FiniteStrainProducts.hpp), and once
-// for the axisymmetric ring (through the run-time SlotOperator, whose rows carry the hoop
-// strain). Derived declares
+// for the axisymmetric ring, whose hoop row the ring products or the run-time SlotOperator
+// carry. Derived declares
 //   template <int D> void evaluatePlanar(ARGS) const;   void evaluateRing(ARGS) const;
 // (ARGS those of ElementKernel::evaluate), befriends this class and instantiates it in its
 // source file (template class PlanarOrRingKernel<Derived>;); evaluate() calls the one the cell

@@ -6,7 +6,7 @@
 // (Q2/P1, tet10/P1; Simo & Hughes, Computational Inelasticity, 1998, section 4.4), which for a
 // discontinuous pressure space is this same modified-strain element. The material sees
 //   eps_bar = eps + (theta_bar - tr eps) m / n,   theta_bar = Pi(tr eps),
-// m the diagonal slots (SlotOperator: n = 3 in 3D and axisymmetry, where the hoop strain
+// m the diagonal slots (n = 3 in 3D and axisymmetry, where the hoop strain
 // enters the dilatation, and 2 in plane strain, whose out-of-plane strain stays 0), and the
 // element is f = int B_bar^T sigma(eps_bar) dV, K = int B_bar^T C B_bar dV: the consistent
 // tangent, symmetric when C is, constant for a linear law (so the problem keeps it).
@@ -28,14 +28,19 @@ class ProjectedDilatationKernel : public PlanarOrRingKernel<ProjectedDilatationK
 
  private:
   friend class PlanarOrRingKernel<ProjectedDilatationKernel>;
-  // Plane strain and 3D, written per dimension (the full-integration kernel's products).
+  // Plane strain and 3D, written per dimension, and the ring (its hoop row): both through
+  // evaluateCell on the full-integration kernels' products (SmallStrainProducts.hpp).
   template <int D>
   void evaluatePlanar(const double* x, const double* u, const Material& material,
                       const double* stateOld, double* stateNew, double* residual, double* tangent,
                       double* pointStress, double* averageStress,
                       const std::optional<double>& temperature) const;
-  // The ring (axisymmetric), through the run-time SlotOperator: its hoop row.
   void evaluateRing(const double* x, const double* u, const Material& material,
+                    const double* stateOld, double* stateNew, double* residual, double* tangent,
+                    double* pointStress, double* averageStress,
+                    const std::optional<double>& temperature) const;
+  template <class Cell, class Cells>
+  void evaluateCell(const Cells& cells, const double* x, const double* u, const Material& material,
                     const double* stateOld, double* stateNew, double* residual, double* tangent,
                     double* pointStress, double* averageStress,
                     const std::optional<double>& temperature) const;

@@ -6,6 +6,7 @@
 // Voigt arrays have the 6 components of Material.hpp (xx yy zz xy yz xz, engineering shears);
 // in plane strain B's rows are xx yy xy (zz is neither set nor read). Defined here, so that
 // each kernel inlines them (the calls are per quadrature point of cells as small as quad4).
+// The ring's variants (ringStrain, addRingForce, addRingTangent) add the hoop row.
 namespace contactlab {
 
 namespace small_strain_detail {
@@ -109,6 +110,80 @@ inline void addSmallStrainTangent(int n, const double* dNdx, const double* C6, d
         for (int c = 0; c < a * D; ++c)
           row[c] += g[j] * s[c];
       }
+    }
+  }
+}
+
+// The ring of an axisymmetric cell (x = r, y = z, 2 dofs per node): the plane products plus
+// the hoop row eps_tt = sum_a N_a u_a,r / r in Voigt slot zz (2). N: the point's shape values,
+// r: its radius. The same conventions as above.
+inline void ringStrain(int n, const double* N, const double* dNdx, double r, const double* u,
+                       double* strain) {
+  smallStrain<2>(n, dNdx, u, strain);
+  double hoop = 0.0;
+  for (int a = 0; a < n; ++a)
+    hoop += N[a] * u[2 * a];
+  strain[2] = hoop / r;
+}
+
+inline void addRingForce(int n, const double* N, const double* dNdx, double r, const double* s,
+                         double w, double* residual) {
+  addSmallStrainForce<2>(n, dNdx, s, w, residual);
+  const double f = w * s[2] / r;
+  for (int a = 0; a < n; ++a)
+    residual[2 * a] += f * N[a];
+}
+
+// tangent += w B^T C B over the ring's rows, in the node blocks of addSmallStrainTangent (the
+// upper ones, and where C is unsymmetric the lower ones' difference). CB, SB: 4 nd doubles each.
+inline void addRingTangent(int n, const double* N, const double* dNdx, double r, const double* C6,
+                           double w, double* CB, double* SB, double* tangent) {
+  constexpr int kSlot[4] = {0, 1, 3, 2};  // rows xx yy xy (those of kVoigt2), then the hoop
+  constexpr int kHoop = 3;
+  const int nd = 2 * n;
+  const double invr = 1.0 / r;
+  double C[4][4];
+  bool symmetric = true;
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q)
+      C[p][q] = C6[kSlot[p] * 6 + kSlot[q]];
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < p; ++q)
+      symmetric = symmetric && C[p][q] == C[q][p];
+  // (C B)[v][b 2 + k] = sum_l C[v][voigt(k, l)] dN_b/dx_l (+ C[v][hoop] N_b / r for k = 0).
+  for (int b = 0; b < n; ++b) {
+    const double* g = &dNdx[b * 2];
+    const double hb = N[b] * invr;
+    for (int k = 0; k < 2; ++k)
+      for (int v = 0; v < 4; ++v) {
+        const int k0 = small_strain_detail::kVoigt2[k][0], k1 = small_strain_detail::kVoigt2[k][1];
+        double s = C[v][k0] * g[0] + C[v][k1] * g[1];
+        if (k == 0) s += C[v][kHoop] * hb;
+        CB[v * nd + b * 2 + k] = w * s;
+        if (symmetric) continue;
+        double t = (C[v][k0] - C[k0][v]) * g[0] + (C[v][k1] - C[k1][v]) * g[1];
+        if (k == 0) t += (C[v][kHoop] - C[kHoop][v]) * hb;
+        SB[v * nd + b * 2 + k] = w * t;
+      }
+  }
+  // Row (a, i) of B^T M: dN_a/dx_j M[voigt(i, j)] (+ N_a / r M[hoop] for i = 0).
+  for (int a = 0; a < n; ++a) {
+    const double* g = &dNdx[a * 2];
+    const double ha = N[a] * invr;
+    for (int i = 0; i < 2; ++i) {
+      double* row = &tangent[(a * 2 + i) * nd];
+      const int i0 = small_strain_detail::kVoigt2[i][0], i1 = small_strain_detail::kVoigt2[i][1];
+      const double *m0 = &CB[i0 * nd], *m1 = &CB[i1 * nd], *mh = &CB[kHoop * nd];
+      if (i == 0)
+        for (int c = a * 2; c < nd; ++c)
+          row[c] += g[0] * m0[c] + g[1] * m1[c] + ha * mh[c];
+      else
+        for (int c = a * 2; c < nd; ++c)
+          row[c] += g[0] * m0[c] + g[1] * m1[c];
+      if (symmetric) continue;
+      const double *s0 = &SB[i0 * nd], *s1 = &SB[i1 * nd], *sh = &SB[kHoop * nd];
+      for (int c = 0; c < a * 2; ++c)
+        row[c] += g[0] * s0[c] + g[1] * s1[c] + (i == 0 ? ha * sh[c] : 0.0);
     }
   }
 }
