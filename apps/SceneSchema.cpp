@@ -123,7 +123,7 @@ ParameterList tieItem() {
         "tied: for each component and each matched tuple of nodes, sum_i a_i u(node_i) = 0. "
         "Groups of one node tie those nodes; groups of several (the same count in each) are "
         "matched by the translation between their centroids (a coincident interface, periodic "
-        "faces). Not on a contact surface or an inclined symmetry plane");
+        "faces). Not on an inclined symmetry plane");
   p.set("Coefficients", Teuchos::Array<double>(),
         "The a_i, one per group (code_aster's COEF_MULT, Abaqus' *EQUATION coefficients); "
         "empty means [1, -1]: the second group's nodes move with the first's. The right side "

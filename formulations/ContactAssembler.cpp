@@ -48,8 +48,11 @@ class ColumnLayout {
 }  // namespace
 
 ContactAssembler::ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplacements,
-                                   const ContactSurfaceState& state)
-    : map_(std::move(map)), ownedDisplacements_(ownedDisplacements), state_(state) {}
+                                   const ContactSurfaceState& state, PartnerDofs partners)
+    : map_(std::move(map)),
+      ownedDisplacements_(ownedDisplacements),
+      state_(state),
+      partners_(std::move(partners)) {}
 
 void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<ContactPoint>& points) {
   const auto kLocal = solidTangent.getLocalMatrixHost();
@@ -59,17 +62,37 @@ void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<Contac
   const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
   layOutRows(points);
 
+  // Each point's columns (its dofs, geometryDofs and the partners of a dependent among them)
+  // and the rows it adds them to (its own, and its dependents' partners', owned here).
+  const auto couplings = [&](const ContactPoint& pt, std::vector<GO>& columns,
+                             std::vector<LO>& rows) {
+    columns.assign(pt.dofs.begin(), pt.dofs.end());
+    columns.insert(columns.end(), pt.geometryDofs.begin(), pt.geometryDofs.end());
+    rows.clear();
+    for (std::size_t i = 0; i < pt.dofs.size(); ++i)
+      if (pt.rows[i] >= 0) rows.push_back(pt.rows[i]);
+    if (rows.empty() || !partners_) return;
+    const std::size_t own = columns.size();
+    for (std::size_t i = 0; i < own; ++i)
+      for (const GO partner : partners_(columns[i])) {
+        columns.push_back(partner);
+        const LO row = map_->getLocalElement(partner);
+        if (i < pt.dofs.size() && pt.rows[i] >= 0 && row != invalid) rows.push_back(row);
+      }
+  };
+  std::vector<GO> columns;
+  std::vector<LO> rows;
+
   std::vector<GO> remote;  // the columns this rank does not own
   for (LO c = 0; c < solidColumns; ++c)
     if (map_->getLocalElement(kCols->getGlobalElement(c)) == invalid)
       remote.push_back(kCols->getGlobalElement(c));
-  for (const ContactPoint& pt : points)
-    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
-      if (pt.rows[i] < 0) continue;
-      for (const auto* ids : {&pt.dofs, &pt.geometryDofs})
-        for (const GO gid : *ids)
-          if (map_->getLocalElement(gid) == invalid) remote.push_back(gid);
-    }
+  for (const ContactPoint& pt : points) {
+    couplings(pt, columns, rows);
+    if (rows.empty()) continue;
+    for (const GO gid : columns)
+      if (map_->getLocalElement(gid) == invalid) remote.push_back(gid);
+  }
   const ColumnLayout column(*map_, std::move(remote));
   const std::vector<GO>& columnIds = column.ids();
 
@@ -78,14 +101,12 @@ void ContactAssembler::buildGraph(const Matrix& solidTangent, std::vector<Contac
   for (LO c = 0; c < solidColumns; ++c)
     solidColumn[c] = column(kCols->getGlobalElement(c));
   std::vector<std::vector<LO>> added(owned);
-  for (const ContactPoint& pt : points)
-    for (std::size_t i = 0; i < pt.dofs.size(); ++i) {
-      if (pt.rows[i] < 0) continue;
-      auto& row = added[pt.rows[i]];
-      for (const auto* ids : {&pt.dofs, &pt.geometryDofs})
-        for (const GO gid : *ids)
-          row.push_back(column(gid));
-    }
+  for (const ContactPoint& pt : points) {
+    couplings(pt, columns, rows);
+    for (const LO r : rows)
+      for (const GO gid : columns)
+        added[r].push_back(column(gid));
+  }
   Teuchos::ArrayRCP<size_t> rowStart(owned + 1, 0);
   std::vector<LO> entries;
   entries.reserve(kLocal.graph.entries.extent(0));

@@ -9,21 +9,28 @@
 #include "formulations/ContactPoint.hpp"
 #include "formulations/ContactSurfaceState.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace contactlab {
 
 class ContactAssembler {
  public:
+  // The dofs a dependent dof's row and column move to (LinearConstraints::partnerDofs; empty for
+  // any other dof).
+  using PartnerDofs = std::function<std::vector<GO>(GO)>;
+
   // `map`: the monolithic map, its first `ownedDisplacements` entries the solid's owned dofs.
   ContactAssembler(Teuchos::RCP<const Map> map, LO ownedDisplacements,
-                   const ContactSurfaceState& state);
+                   const ContactSurfaceState& state, PartnerDofs partners = {});
 
   // Each point's local rows (what a residual needs), after a new pairing.
   void layOutRows(std::vector<ContactPoint>& points) const;
-  // The graph of the solid's tangent plus every point's dofs x (dofs, geometryDofs); sets each
-  // point's rows and column indices. Only a tangent needs it: a residual-only evaluation at a
-  // new pairing (a line search's trial point under generalized Newton) does without.
+  // The graph of the solid's tangent plus every point's dofs x (dofs, geometryDofs), widened by
+  // the partners of a dependent dof among them (their columns in the point's rows, the point's
+  // columns in their rows: what the constraints' reduction moves there); sets each point's rows
+  // and column indices. Only a tangent needs it: a residual-only evaluation at a new pairing (a
+  // line search's trial point under generalized Newton) does without.
   void buildGraph(const Matrix& solidTangent, std::vector<ContactPoint>& points);
   const Teuchos::RCP<Matrix>& matrix() const { return matrix_; }
   // Whether the graph changed since the last call.
@@ -44,6 +51,7 @@ class ContactAssembler {
   Teuchos::RCP<const Map> map_;
   LO ownedDisplacements_;
   const ContactSurfaceState& state_;
+  PartnerDofs partners_;
   Teuchos::RCP<Matrix> matrix_;
   std::vector<std::size_t> solidOffsets_;  // solid CRS entry -> our CRS entry
   bool patternChanged_ = true;

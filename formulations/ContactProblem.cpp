@@ -117,17 +117,17 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
         for (int c : bc.components)
           constrainedSurfaceDofs_.insert(dofs.globalNode(node) * dim_ + c);
   kernel_ = std::make_unique<ContactPointKernel>(dim_, zones_, discretizations_, *state_);
-  // A tie's rows and columns move between its nodes, which the contact graph does not follow.
-  for (std::int64_t node : solid_.constraints().tiedNodes())
-    if (surfaceNodes.count(node))
-      throw InputError("node " + std::to_string(mesh.nodeId(node)) +
-                       " is tied (Ties) and on a contact surface; ties on contact surfaces are "
-                       "not supported");
   bool inclinedSurface = false;  // a surface node on an inclined symmetry plane
   for (std::int64_t node : solid_.constraints().nodes())
     inclinedSurface = inclinedSurface || surfaceNodes.count(node) > 0;
   kernel_->setSurfaceConstrained(!constrainedSurfaceDofs_.empty() || inclinedSurface);
-  assembler_ = std::make_unique<ContactAssembler>(map_, ownedDisplacements_, *state_);
+  // A tie's dependent dof on a surface moves its row and column to its partners: the contact
+  // graph follows them.
+  ContactAssembler::PartnerDofs partners;
+  if (!solid_.constraints().tiedNodes().empty())
+    partners = [this](GO gid) { return solid_.constraints().partnerDofs(gid); };
+  assembler_ =
+      std::make_unique<ContactAssembler>(map_, ownedDisplacements_, *state_, std::move(partners));
 }
 
 ContactProblem::~ContactProblem() = default;

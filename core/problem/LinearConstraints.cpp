@@ -212,6 +212,8 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
     }
   }
   addTies(model, dofs, ties, fixed);
+  for (std::size_t d = 0; d < all_.size(); ++d)
+    dependentOf_[all_[d].gid] = d;
   const int local = all_.empty() ? 0 : 1;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(anywhere_));
 }
@@ -260,6 +262,15 @@ void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
     partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
     all_.push_back(d);
   }
+}
+
+std::vector<GO> LinearConstraints::partnerDofs(GO gid) const {
+  const auto it = dependentOf_.find(gid);
+  if (it == dependentOf_.end()) return {};
+  std::vector<GO> out;
+  for (const Term& t : all_[it->second].terms)
+    if (!t.prescribed) out.push_back(t.gid);
+  return out;
 }
 
 std::vector<std::int64_t> LinearConstraints::partnerNodes(std::int64_t node) const {

@@ -15,8 +15,9 @@
 // the constrained problem's own.
 //
 // A tie's dependent moves its row and column to other nodes: the matrix graph must hold them
-// (partnerNodes: MatrixAssembler widens each element holding a dependent node), and the rows
-// must be on one rank (DofMap owns the linked nodes together).
+// (partnerNodes: MatrixAssembler widens each element holding a dependent node; partnerDofs:
+// ContactAssembler each contact point), and the rows must be on one rank (DofMap owns the
+// linked nodes together).
 //
 // Planes normal to an axis are Dirichlet conditions (u_axis = 0): resolveSymmetryConditions
 // turns them into those, so the contact code drops a friction direction they fix as it does for
@@ -62,6 +63,9 @@ class LinearConstraints {
   // its row and column move to (empty: none).
   const std::vector<std::int64_t>& tiedNodes() const { return tiedNodes_; }
   std::vector<std::int64_t> partnerNodes(std::int64_t node) const;
+  // For a dependent dof (global id), the free dofs its row and column move to; empty for any
+  // other dof. Every rank answers for every dof.
+  std::vector<GO> partnerDofs(GO gid) const;
   // Nodes (mesh indices) that carry an inclined symmetry condition (every rank's).
   const std::vector<std::int64_t>& nodes() const { return nodes_; }
   // The unit normals of the inclined planes through a mesh node (empty: none).
@@ -112,6 +116,7 @@ class LinearConstraints {
   std::vector<std::int64_t> nodes_;                                        // sorted
   std::vector<std::int64_t> tiedNodes_;                                    // sorted
   std::map<std::int64_t, std::vector<std::int64_t>> partners_;             // by dependent node
+  std::map<GO, std::size_t> dependentOf_;                                  // all_'s entry by gid
   std::vector<std::vector<std::array<double, 3>>> normals_;                // per nodes_ entry
   std::map<std::int64_t, std::vector<std::array<double, 3>>> axisPlanes_;  // by mesh node
   std::size_t numConditions_ = 0;

@@ -618,6 +618,10 @@ void Problem::addToReactions(const Vector& forces) {
   for (std::size_t s = 0; s < planes.size(); ++s)
     for (int c = 0; c < 3; ++c)
       reactions_[model_.dirichlet.size() + s].force[c] += planes[s][c];
+  const auto ties = linearConstraints_->tieForces(forces);
+  for (std::size_t t = 0; t < ties.size(); ++t)
+    for (int c = 0; c < 3; ++c)
+      reactions_[model_.dirichlet.size() + planes.size() + t].force[c] += ties[t][c];
 }
 
 void Problem::commitState() {
