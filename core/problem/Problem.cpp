@@ -593,12 +593,7 @@ void Problem::assemble(const Vector& u, double t, Vector* residual, bool withTan
     for (int c = 0; c < 3; ++c)
       springForces_[s].force[c] = global[reactionSums + 3 * s + c];
   if (linearConstraints_->empty()) return;
-  const auto planes = linearConstraints_->reactions(*residual);
-  for (std::size_t s = 0; s < planes.size(); ++s)
-    reactions_[model_.dirichlet.size() + s].force = planes[s];
-  const auto ties = linearConstraints_->tieForces(*residual);
-  for (std::size_t t = 0; t < ties.size(); ++t)
-    reactions_[model_.dirichlet.size() + planes.size() + t].force = ties[t];
+  constraintReactions(*residual, false);
   if (!deferConstraints_) linearConstraints_->reduce(reducedTangent, residual);
 }
 
@@ -613,15 +608,19 @@ void Problem::addToReactions(const Vector& forces) {
   for (std::size_t d = 0; d < model_.dirichlet.size(); ++d)
     for (int c = 0; c < 3; ++c)
       reactions_[d].force[c] += global[3 * d + c];
+  constraintReactions(forces, true);
+}
+
+void Problem::constraintReactions(const Vector& forces, bool add) {
   if (linearConstraints_->empty()) return;
-  const auto planes = linearConstraints_->reactions(forces);
-  for (std::size_t s = 0; s < planes.size(); ++s)
-    for (int c = 0; c < 3; ++c)
-      reactions_[model_.dirichlet.size() + s].force[c] += planes[s][c];
-  const auto ties = linearConstraints_->tieForces(forces);
-  for (std::size_t t = 0; t < ties.size(); ++t)
-    for (int c = 0; c < 3; ++c)
-      reactions_[model_.dirichlet.size() + planes.size() + t].force[c] += ties[t][c];
+  std::vector<std::array<double, 3>> all = linearConstraints_->reactions(forces);
+  const std::vector<std::array<double, 3>> ties = linearConstraints_->tieForces(forces);
+  all.insert(all.end(), ties.begin(), ties.end());
+  for (std::size_t k = 0; k < all.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      double& force = reactions_[model_.dirichlet.size() + k].force[c];
+      force = add ? force + all[k][c] : all[k][c];
+    }
 }
 
 void Problem::commitState() {

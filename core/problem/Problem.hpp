@@ -172,6 +172,9 @@ class Problem : public NonlinearSystem {
   std::optional<double> blockTemperature(int block, double t) const;
 
  private:
+  // The inclined planes' reactions and the ties' forces (their entries after the Dirichlet
+  // conditions') from `forces`, a residual or forces added to it: set, or added to them.
+  void constraintReactions(const Vector& forces, bool add);
   // One element of this rank: its overlap nodes and dofs, and its internal variables.
   struct LocalElement {
     int block;
