@@ -32,7 +32,8 @@ Teuchos::RCP<Operator> createIfpack2Preconditioner(const Teuchos::RCP<const Matr
     }
     params.set("inner preconditioner parameters", inner);
     params.set("schwarz: overlap level", options.overlap);
-    // The default ZERO is not symmetric, and CG then fails (TRILINOS.md).
+    // The default ZERO is not symmetric, and CG then fails (doc/architecture.md "Trilinos and
+    // Debian").
     params.set("schwarz: combine mode", options.symmetric ? "ADD" : "ZERO");
     params.set("schwarz: use reordering", false);
   } else {

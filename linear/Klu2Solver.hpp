@@ -1,12 +1,12 @@
 #pragma once
 // Direct solver KLU2 through Amesos2. Debian's Trilinos 13.2 (GCC 12) miscompiles KLU2's
 // non-transposed solve, which Amesos2 uses on more than one rank or for a non-contiguous map:
-// wrong answers, no error (TRILINOS.md). So this class gathers the matrix on rank 0, onto a
-// one-rank communicator and a contiguous map [0, N): there Amesos2 takes its single-process path,
-// which reads the CRS arrays as the CCS arrays of A^T and calls the transposed solve, the one
-// that works. It runs on any number of ranks (serially on rank 0), and every solve is checked
-// against the original matrix: a relative residual above the tolerance throws, so a wrong answer
-// is never returned silently. Prefer MUMPS for anything large.
+// wrong answers, no error (doc/architecture.md "Trilinos and Debian"). So this class gathers the
+// matrix on rank 0, onto a one-rank communicator and a contiguous map [0, N): there Amesos2 takes
+// its single-process path, which reads the CRS arrays as the CCS arrays of A^T and calls the
+// transposed solve, the one that works. It runs on any number of ranks (serially on rank 0), and
+// every solve is checked against the original matrix: a relative residual above the tolerance
+// throws, so a wrong answer is never returned silently. Prefer MUMPS for anything large.
 #include "linear/LinearSolver.hpp"
 
 #include <Teuchos_ParameterList.hpp>

@@ -23,7 +23,8 @@ Teuchos::RCP<Operator> createMueLuPreconditioner(const Teuchos::RCP<const Matrix
   smoother.set("relaxation: sweeps", options.sweeps);
   smoother.set("relaxation: damping factor", options.damping);
   params.set("smoother: params", smoother);
-  // MueLu's default coarse solver is KLU2: wrong on more than one rank (TRILINOS.md).
+  // MueLu's default coarse solver is KLU2: wrong on more than one rank (doc/architecture.md
+  // "Trilinos and Debian").
   params.set("coarse: type", "RELAXATION");
   Teuchos::ParameterList coarse;
   coarse.set("relaxation: type", "Symmetric Gauss-Seidel");

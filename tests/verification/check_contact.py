@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs a contact scene with the contactlab command and compares its contact results with a
-reference nobody on this project wrote (../shared/VERIFICATION.md).
+reference nobody on this project wrote (doc/verification.md, cases V1-V7).
 
 usage: check_contact.py CONTACTLAB SCENE OUTDIR RANKS CASE TOL [--set key=value ...]
 CASE:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Non-uniqueness above the critical friction coefficient, on a continuum (VERIFICATION.md V6,
+"""Non-uniqueness above the critical friction coefficient, on a continuum (doc/verification.md V6,
 issue 6): the inclined strut of scenes/strut-2d.yaml.
 
 usage: check_uniqueness.py CONTACTLAB SCENE WORKDIR

@@ -1,5 +1,5 @@
 // The dense pieces of the uniqueness diagnostic: critical mu as a generalized eigenvalue, and
-// determinants kept as mantissa and exponent; VERIFICATION.md V6 on the one-node spring models
+// determinants kept as mantissa and exponent; doc/verification.md V6 on the one-node spring models
 // with the augmented-Lagrangian law's own Jacobian.
 #include "algorithms/CriticalFriction.hpp"
 #include "formulations/AugmentedLagrangian.hpp"

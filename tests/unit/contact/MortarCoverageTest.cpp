@@ -198,7 +198,7 @@ TEST(MortarIntegration, DistantMasterOnACurvedSlaveIsNoOverlap) {
   }
 }
 
-// VERIFICATION.md V3's rotated case: the hex faces of a 5 x 5 block top against a 3 x 3 block
+// doc/verification.md V3's rotated case: the hex faces of a 5 x 5 block top against a 3 x 3 block
 // bottom rotated by 5 degrees about the vertical axis through the centre. The union of the cells
 // is the overlap of the two unit squares: 1 - (c + s - 1)^2 / (2 c s) (four corner triangles cut).
 TEST(MortarIntegration, RotatedMeshCoversTheSquaresOverlap) {

@@ -1,4 +1,4 @@
-// Manufactured solutions (VERIFICATION.md V7): u_i = sin(a_i . x), with the body force that
+// Manufactured solutions (doc/verification.md V7): u_i = sin(a_i . x), with the body force that
 // makes it exact, on a sequence of meshes of every element type. The observed rates of the
 // L2 error approach p + 1 and those of the energy (H1 seminorm) error approach p.
 #include "ProblemTestSupport.hpp"

@@ -1,4 +1,4 @@
-// Element patch test (VERIFICATION.md V7): on a distorted mesh, a linear displacement field
+// Element patch test (doc/verification.md V7): on a distorted mesh, a linear displacement field
 // imposed on the boundary is reproduced exactly inside, with the constant stress it implies,
 // for every element type.
 #include "ProblemTestSupport.hpp"
