@@ -3,14 +3,17 @@
 #               x algorithm presets x discretizations on a small contact scene, under a minute)
 #               and print its table; `make run SCENE=scenes/x.yaml` runs that one scene instead
 #   make test   install missing Debian packages, build, run every test (unit, verification, mpi)
+# and `make install [PREFIX=/usr/local]`: the command, the libraries for find_package(contactlab)
+# and the Python module (PREFIX/lib/python3/dist-packages/contactlab: `import contactlab`).
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?=
 STUDY ?= scenes/studies/quick-comparison.yaml
 STUDY_ARGS ?=
 CTEST_ARGS ?=
+PREFIX ?= /usr/local
 
-.PHONY: run test build deps configure clean format bench docs
+.PHONY: run test build deps configure clean format bench docs install
 
 # Missing packages: a line per phase, apt's output in $(BUILD_DIR)/install-deps.log.
 deps:
@@ -37,6 +40,9 @@ endif
 # (a run alone gives its rank every core it may use, linear/BlasThreads.hpp).
 test: build
 	cd $(BUILD_DIR) && OPENBLAS_NUM_THREADS=1 ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 bench: build
 	./bench/run.sh

@@ -407,9 +407,11 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   report.startFrom(start.totals);
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
-  if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
+  if (!start.resume) {
+    if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
+    slowDynamics_.start(u, start.time);
+  }
   loadReference_ = start.loadReference;
-  slowDynamics_.start(u, start.time);
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
   struct StaticAfterRun {
     const SlowDynamics& slowDynamics;
@@ -582,6 +584,11 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     t = sr.time;
     dt = sr.nextStepSize;
     cuts = 0;
+    if (start.maxSteps > 0 && report.steps >= start.maxSteps &&
+        t < options_.endTime * (1 - 1e-12)) {
+      report.paused = true;
+      return report;
+    }
   }
   report.converged = true;
   return report;

@@ -135,8 +135,10 @@ struct RunReport {
                             // "interrupted" (SIGINT or SIGTERM)
   std::string message;      // one sentence for the user
   int interruptSignal = 0;  // failure "interrupted": the signal (SIGINT, SIGTERM)
-  int steps = 0;            // converged steps
-  int iterations = 0;       // total Newton iterations
+  // RunStart::maxSteps steps converged before End Time: neither converged nor failed.
+  bool paused = false;
+  int steps = 0;       // converged steps
+  int iterations = 0;  // total Newton iterations
   int statusIterations = 0, thresholdIterations = 0, geometryIterations = 0;
   int linearSolves = 0;
   int cuts = 0;
@@ -181,6 +183,13 @@ struct RunStart {
   Teuchos::RCP<const Vector> increment, load;
   // The last loaded step's reference residual (StepReport::loadReference; 0: none yet).
   double loadReference = 0;
+  // > 0: the run pauses after this many converged steps (RunReport::paused); a run started
+  // from its last step's report (StepReport: time, nextStepSize, increment, load,
+  // loadReference, run) goes on as the uninterrupted run would.
+  int maxSteps = 0;
+  // The same StaticSolver's earlier run paused here (maxSteps): its own state goes on (slow
+  // dynamics' velocity, the step extrapolation) instead of starting from this one's.
+  bool resume = false;
 };
 
 class StaticSolver {

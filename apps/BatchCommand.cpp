@@ -79,7 +79,7 @@ int runRequest(const std::vector<std::string>& fields, const Teuchos::RCP<const 
                  "OUT not empty\n";
     return 2;
   }
-  RunOptions options;
+  SimulationOptions options;
   options.outputDirectory = fields[0];
   options.scenePath = fields[1];
   options.overrides.assign(fields.begin() + 2, fields.end());

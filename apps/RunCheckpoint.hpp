@@ -2,7 +2,7 @@
 // The checkpoint of a run: checkpoint.h5 in its output folder, replaced (atomically) after each
 // converged step. It holds everything the next step starts from, so that a new run can start
 // from it (the scene's `Initial State: {From: DIR}`) and a killed run can be continued
-// (`contactlab run --restart DIR`, RunCommand): the load time, step number and next step size,
+// (`contactlab run --restart DIR`, Simulation): the load time, step number and next step size,
 // the displacements by mesh node id, the contact point unknowns and friction history
 // (ContactProblem::convergedHistory), the internal variables of every element by element id
 // (Problem::gatherElementStates), and what --restart needs to append to the output series. HDF5

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace contactlab {
@@ -62,11 +63,9 @@ struct SceneModel {
   std::vector<std::string> advice;
   // Sentences for the log about values the scene left to contactlab (automatic coefficients).
   std::vector<std::string> notes;
-  // Per contact zone whose Normal (Tangential) Augmentation the scene left at 0: the r_n (r_t)
-  // computed for it (AutomaticAugmentation.hpp), reported in summary.json; Lagrange's Normal
-  // Complementarity Constant c_n in the first map.
-  std::map<std::string, double> automaticNormalAugmentation;
-  std::map<std::string, double> automaticTangentialAugmentation;
+  // Per contact zone: the formulation's coefficients the scene left at 0 and the values computed
+  // for them (FormulationRegistry: automaticCoefficients), reported in summary.json.
+  std::map<std::string, std::vector<std::pair<std::string, double>>> automaticCoefficients;
 };
 
 // Reads, validates and builds. Collective: every rank calls it with the same arguments.

@@ -5,8 +5,8 @@
 #include "base/NumberText.hpp"
 #include "core/io/ParameterValidation.hpp"
 #include "core/materials/MaterialRegistry.hpp"
-#include "core/problem/ElementTechnology.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
+#include "core/problem/ElementTechnology.hpp"
 #include "formulations/ContactDiscretization.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
@@ -164,8 +164,7 @@ const std::vector<Axis>& axes() {
        [](std::ostream& o) { describeRegistry(o, materialRegistry(), "Materials/<block>"); }},
       {"element-technology",
        [](std::ostream& o) {
-         describeRegistry(o, elementTechnologyRegistry(),
-                          "Materials/<block>/Element Technology");
+         describeRegistry(o, elementTechnologyRegistry(), "Materials/<block>/Element Technology");
        }},
       {"formulation",
        [](std::ostream& o) {

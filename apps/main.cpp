@@ -215,7 +215,7 @@ int dispatch(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int argc, char*
     }
     return contactlab::batchCommand(comm, quiet);
   }
-  contactlab::RunOptions options;
+  contactlab::SimulationOptions options;
   options.validateOnly = command == "validate";
   options.criticalMu = command == "critical-mu";
   for (std::size_t i = 1; i < args.size(); ++i) {

@@ -554,6 +554,15 @@ ContactResultants ContactProblem::resultants() const {
   return contactResultants(lawResults(), output);
 }
 
+bool ContactProblem::tangentSymmetric(bool geometricTerms) const {
+  const int nt = dim_ - 1;
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    if (!zones_[z].law->symmetricJacobian(zones_[z].friction > 0 ? nt : 0)) return false;
+    if (geometricTerms && discretizations_[z]->linearizesGeometry()) return false;
+  }
+  return true;
+}
+
 void ContactProblem::addPointData(MeshPiece& piece) const {
   addContactPointData(solid_.dofs().overlapNodes(), results(), piece);
 }

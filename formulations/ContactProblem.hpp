@@ -129,6 +129,12 @@ class ContactProblem : public NonlinearSystem, public ContactControls {
   // their master: opened, PrescribedSlip.hpp). Collective.
   std::vector<std::int64_t> prescribedGapNodes(std::size_t zone) const;
   ContactResultants resultants() const;
+  // Whether the contact rows keep a symmetric solid tangent symmetric: every zone's law for its
+  // friction (ContactLaw::symmetricJacobian), and, with the geometry's terms in the tangent
+  // (`geometricTerms`: the geometry in Newton with Geometric Terms pairing or full), no zone
+  // whose discretization linearizes its geometry (its terms differentiate the normal along one
+  // side only).
+  bool tangentSymmetric(bool geometricTerms) const;
   // Whether any point has been closed at a converged step (surfaces that never meet: false).
   bool everInContact() const { return everInContact_; }
   // Adds contact_pressure, tangential_traction, gap, slip, contact_status to a piece made by

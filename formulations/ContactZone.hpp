@@ -43,7 +43,7 @@ struct ContactZone {
   std::string coefficientAdvice;
   std::string formulation;  // registry name, for reports
   std::shared_ptr<const ContactLaw> law;
-  // The contact stiffness E / h of the zone (AutomaticAugmentation.hpp; 0: unknown), the scale
+  // The contact stiffness E / h of the zone (ContactScale.hpp; 0: unknown), the scale
   // of the multiplier rows as forces (LawOutput::normalRowForce).
   double stiffnessScale = 0.0;
   // The surfaces' measure weight (SurfaceWeight.hpp): 2 pi r in an axisymmetric model, set by

@@ -1,10 +1,12 @@
 #include "formulations/FormulationRegistry.hpp"
 
+#include "base/NumberText.hpp"
 #include "formulations/AugmentedLagrangian.hpp"
 #include "formulations/Lagrange.hpp"
 #include "formulations/NormalFieldAugmentedLagrangian.hpp"
 #include "formulations/Penalty.hpp"
 
+#include <map>
 #include <utility>
 
 namespace contactlab {
@@ -51,6 +53,46 @@ std::invalid_argument named(const std::invalid_argument& e, const std::string& k
   return std::invalid_argument(std::string(e.what()) + " (" + keys + ")");
 }
 
+// The contact pressure, as a fraction of E, at which the automatic r_t makes the stick
+// stiffness mu p r_t of the augmented friction law equal to r_n = E / h.
+constexpr double kAutomaticContactStrain = 0.01;
+
+// A normal coefficient E / h (the augmented Lagrangian's r_n, Lagrange's c_n).
+AutomaticCoefficient contactStiffness(const std::string& key, const std::string& symbol) {
+  return {key, false, [](const ContactScale& s, double) { return s.stiffness(); },
+          [key, symbol](const ContactScale& s, double, double value) {
+            return key + " " + symbol + " = E / h = " + numberText(value) +
+                   " (automatic: E = " + numberText(s.youngModulus) +
+                   ", the softer body's; h = " + numberText(s.facetSize) +
+                   ", the slave facets' median edge)";
+          }};
+}
+
+// r_t when a frictional scene leaves Tangential Augmentation at 0: 1 / (0.01 mu h), i.e.
+// r_n / (mu p) at p = 1 % of E. The multiplier Lambda is a number and r_t Lambda's change per
+// unit slip: its natural scale is (E / h) / (mu p), so 1 / h (the old advice) is E / (mu p)
+// times too small wherever the contact strain p / E is small: code_aster SSNV128 (p / E =
+// 4e-4, mu = 1) failed with r_t = 1 / h under every algorithm and converges from 1e4 to 1e8
+// (1 / (0.01 h) = 8e4). Measured on the 9 frictional scenes shipped with contactlab (p / E
+// from 5e-5 to 0.05): all converge with it, in 0.75x to 2.4x the Newton iterations of their
+// hand-picked r_t; 1 / (0.001 mu h) fails 2 of them (doc/verification.md "SSNV128").
+AutomaticCoefficient tangentialAugmentation() {
+  return {"Tangential Augmentation", true,
+          [](const ContactScale& s, double mu) {
+            return 1.0 / (kAutomaticContactStrain * mu * s.facetSize);
+          },
+          [](const ContactScale& s, double mu, double value) {
+            return "Tangential Augmentation r_t = 1 / (" + numberText(kAutomaticContactStrain) +
+                   " mu h) = " + numberText(value) + " (automatic: mu = " + numberText(mu) +
+                   ", h = " + numberText(s.facetSize) + ")";
+          }};
+}
+
+std::map<std::string, std::vector<AutomaticCoefficient>>& automaticCoefficientTable() {
+  static std::map<std::string, std::vector<AutomaticCoefficient>> table;
+  return table;
+}
+
 }  // namespace
 
 FormulationRegistry& formulationRegistry() {
@@ -58,8 +100,15 @@ FormulationRegistry& formulationRegistry() {
   return registry;
 }
 
+const std::vector<AutomaticCoefficient>& automaticCoefficients(const std::string& formulation) {
+  static const std::vector<AutomaticCoefficient> none;
+  const auto it = automaticCoefficientTable().find(formulation);
+  return it == automaticCoefficientTable().end() ? none : it->second;
+}
+
 void registerFormulations() {
   auto& r = formulationRegistry();
+  auto& automatic = automaticCoefficientTable();
   r.add({"penalty",
          "Penalty: p = eps_n <-g>, regularized Coulomb friction; no multipliers, inexact "
          "(interpenetration p/eps_n)",
@@ -134,6 +183,11 @@ void registerFormulations() {
              throw named(e, "Normal Augmentation, Tangential Augmentation, Normal Field Penalty");
            }
          }});
+  // Left at 0, these come from the zone's contact scale (the laws' converged states do not
+  // depend on them: they set the Newton path).
+  automatic["lagrange"] = {contactStiffness("Normal Complementarity Constant", "c_n")};
+  for (const char* name : {"augmented-lagrangian", "normal-field-augmented-lagrangian"})
+    automatic[name] = {contactStiffness("Normal Augmentation", "r_n"), tangentialAugmentation()};
 }
 
 }  // namespace contactlab

@@ -2,6 +2,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <cctype>
 #include <vector>
 
 namespace contactlab {
@@ -39,6 +40,14 @@ JsonValue typedSection(const Teuchos::ParameterList& section) {
 
 const char* loop(bool inNewton) {
   return inNewton ? "newton" : "fixed-point";
+}
+
+// "Normal Augmentation" -> "normal_augmentation".
+std::string snakeCase(const std::string& key) {
+  std::string out;
+  for (char c : key)
+    out += c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
 }
 
 JsonValue orNull(const std::string& text) {
@@ -88,15 +97,11 @@ JsonValue SummaryJson::formulations() const {
     JsonValue formulation = typedSection(section.sublist(zone.name).sublist("Formulation"))
                                 .set("friction", zone.friction)
                                 .set("master", zone.obstacle ? "obstacle" : "surface");
-    // The r_n a scene left at 0 (its parameters above say 0).
-    const auto automatic = sm_.automaticNormalAugmentation.find(zone.name);
-    if (automatic != sm_.automaticNormalAugmentation.end())
-      formulation.set(zone.formulation == "lagrange" ? "automatic_normal_complementarity_constant"
-                                                     : "automatic_normal_augmentation",
-                      automatic->second);
-    const auto tangential = sm_.automaticTangentialAugmentation.find(zone.name);
-    if (tangential != sm_.automaticTangentialAugmentation.end())
-      formulation.set("automatic_tangential_augmentation", tangential->second);
+    // The coefficients a scene left at 0 (its parameters above say 0): automatic_<key>.
+    const auto automatic = sm_.automaticCoefficients.find(zone.name);
+    if (automatic != sm_.automaticCoefficients.end())
+      for (const auto& [key, value] : automatic->second)
+        formulation.set("automatic_" + snakeCase(key), value);
     zones.set(zone.name, formulation);
   }
   return zones;

@@ -32,7 +32,7 @@ std::string temporaryOf(const std::string& file) {
   return std::regex_match(file, match, pattern) ? match[1].str() : std::string();
 }
 
-// What a run writes (RunCommand, VtkSeriesWriter, ProfileCsv): what an earlier run's folder
+// What a run writes (RunOutputs, VtkSeriesWriter, ProfileCsv): what an earlier run's folder
 // without a manifest (written before runs kept one) may lose.
 bool isRunOutput(const std::string& name) {
   static const std::regex pattern(

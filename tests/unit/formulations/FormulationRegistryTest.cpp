@@ -48,5 +48,39 @@ TEST(FormulationRegistry, DefaultsOfRequiredCoefficientsAreRejectedByName) {
   EXPECT_THROW(registry.get("no-such-law"), std::invalid_argument);
 }
 
+// Each automatic coefficient is a parameter of its formulation whose default is 0 (automatic),
+// with its rule on the scale: c_n and r_n = E / h, r_t = 1 / (0.01 mu h); the penalty has none
+// (its coefficients are the model's: they set the penetration).
+TEST(FormulationRegistry, AutomaticCoefficientsAreZeroDefaultsWithTheirRule) {
+  registerFormulations();
+  const ContactScale scale{200.0, 0.05};  // E / h = 4000
+  EXPECT_TRUE(automaticCoefficients("penalty").empty());
+  EXPECT_TRUE(automaticCoefficients("no-such-formulation").empty());
+  const auto& lagrange = automaticCoefficients("lagrange");
+  ASSERT_EQ(lagrange.size(), 1u);
+  EXPECT_EQ(lagrange[0].key, "Normal Complementarity Constant");
+  EXPECT_DOUBLE_EQ(lagrange[0].value(scale, 0.3), 4000.0);
+  for (const char* name : {"augmented-lagrangian", "normal-field-augmented-lagrangian"}) {
+    const auto& list = automaticCoefficients(name);
+    ASSERT_EQ(list.size(), 2u) << name;
+    EXPECT_EQ(list[0].key, "Normal Augmentation");
+    EXPECT_FALSE(list[0].needsFriction);
+    EXPECT_DOUBLE_EQ(list[0].value(scale, 0.5), 4000.0);
+    EXPECT_EQ(list[1].key, "Tangential Augmentation");
+    EXPECT_TRUE(list[1].needsFriction);
+    EXPECT_DOUBLE_EQ(list[1].value(scale, 0.5), 1.0 / (0.01 * 0.5 * 0.05));
+    EXPECT_NE(list[1].note(scale, 0.5, 4e4).find("r_t = 1 / (0.01 mu h) = 40000"),
+              std::string::npos)
+        << list[1].note(scale, 0.5, 4e4);
+  }
+  for (const std::string& name : formulationRegistry().names()) {
+    const auto params = formulationRegistry().get(name).validParameters();
+    for (const AutomaticCoefficient& c : automaticCoefficients(name)) {
+      ASSERT_TRUE(params->isParameter(c.key)) << name << ": " << c.key;
+      EXPECT_EQ(params->get<double>(c.key), 0.0) << name << ": " << c.key;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contactlab

@@ -1,4 +1,4 @@
-#include "apps/AutomaticAugmentation.hpp"
+#include "formulations/ContactScale.hpp"
 
 #include "core/materials/ReferenceStiffness.hpp"
 
@@ -59,14 +59,14 @@ std::set<std::string> blocksBounded(const Mesh& mesh, const std::string& group) 
 
 }  // namespace
 
-AugmentationScale automaticAugmentation(
-    const Mesh& mesh, const std::map<std::string, std::shared_ptr<const Material>>& materials,
-    const std::string& slave, const std::string& master) {
+ContactScale contactScale(const Mesh& mesh,
+                          const std::map<std::string, std::shared_ptr<const Material>>& materials,
+                          const std::string& slave, const std::string& master) {
   std::set<std::string> blocks = blocksBounded(mesh, slave);
   if (!master.empty())
     for (const std::string& b : blocksBounded(mesh, master))
       blocks.insert(b);
-  AugmentationScale scale;
+  ContactScale scale;
   scale.youngModulus = std::numeric_limits<double>::infinity();
   for (const std::string& b : blocks) {
     const auto it = materials.find(b);
@@ -85,7 +85,7 @@ AugmentationScale automaticAugmentation(
   return scale;
 }
 
-std::string augmentationAdvice(const std::string& key, double value, double automatic) {
+std::string coefficientAdvice(const std::string& key, double value, double automatic) {
   if (!(value > 0) || !(automatic > 0)) return "";
   const double ratio = value / automatic;
   if (ratio >= 0.1 && ratio <= 10) return "";

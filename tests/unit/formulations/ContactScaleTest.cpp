@@ -1,7 +1,7 @@
 // The automatic r_n = E / h: E of the softer body the contact surfaces bound, h the median
 // corner edge of the slave facets (a graded surface's coarse facets do not set it).
-#include "apps/AutomaticAugmentation.hpp"
 #include "core/materials/LinearElastic.hpp"
+#include "formulations/ContactScale.hpp"
 
 #include <gtest/gtest.h>
 #include <map>
@@ -39,27 +39,25 @@ std::map<std::string, std::shared_ptr<const Material>> materials(double soft, do
           {"hard", std::make_shared<LinearElastic>(hard, 0.3)}};
 }
 
-TEST(AutomaticAugmentation, SofterBodyOverMedianSlaveEdge) {
+TEST(ContactScale, SofterBodyOverMedianSlaveEdge) {
   const Mesh mesh = twoBlocks();
-  const auto scale = automaticAugmentation(mesh, materials(10, 1000), "soft-top", "hard-bottom");
+  const auto scale = contactScale(mesh, materials(10, 1000), "soft-top", "hard-bottom");
   EXPECT_DOUBLE_EQ(scale.youngModulus, 10.0);
   EXPECT_DOUBLE_EQ(scale.facetSize, 1.0);  // median of 1, 1, 3 (the mean would be 5/3)
-  EXPECT_DOUBLE_EQ(scale.normalAugmentation(), 10.0);
+  EXPECT_DOUBLE_EQ(scale.stiffness(), 10.0);
   // The softer body sets E whichever side it is on.
-  EXPECT_DOUBLE_EQ(
-      automaticAugmentation(mesh, materials(1000, 10), "soft-top", "hard-bottom").youngModulus,
-      10.0);
+  EXPECT_DOUBLE_EQ(contactScale(mesh, materials(1000, 10), "soft-top", "hard-bottom").youngModulus,
+                   10.0);
 }
 
-TEST(AutomaticAugmentation, ObstacleCountsTheSlaveBodyOnly) {
+TEST(ContactScale, ObstacleCountsTheSlaveBodyOnly) {
   const Mesh mesh = twoBlocks();
-  EXPECT_DOUBLE_EQ(automaticAugmentation(mesh, materials(1000, 10), "soft-top", "").youngModulus,
-                   1000.0);
+  EXPECT_DOUBLE_EQ(contactScale(mesh, materials(1000, 10), "soft-top", "").youngModulus, 1000.0);
 }
 
-TEST(AutomaticAugmentation, NoMaterialIsRefused) {
+TEST(ContactScale, NoMaterialIsRefused) {
   const Mesh mesh = twoBlocks();
-  EXPECT_THROW(automaticAugmentation(mesh, {}, "soft-top", ""), std::invalid_argument);
+  EXPECT_THROW(contactScale(mesh, {}, "soft-top", ""), std::invalid_argument);
 }
 
 }  // namespace
