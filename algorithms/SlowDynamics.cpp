@@ -20,6 +20,12 @@ void SlowDynamics::start(const Vector& x0, double t0) {
   previousStep_ = 0;
 }
 
+void SlowDynamics::restorePrevious(const Vector& previous, double previousStep) {
+  if (!options_.enabled) return;
+  previous_ = Teuchos::rcp(new Vector(previous, Teuchos::Copy));
+  previousStep_ = previousStep;
+}
+
 Teuchos::RCP<Vector> SlowDynamics::predictor(double t) const {
   // u* = u_n + dt v_n with v_n = (u_n - u_(n-1)) / dt_n: the implicit Euler acceleration is
   // (u - u*) / dt^2. Written entry by entry as u_n + ratio (u_n - u_(n-1)), the rounding the

@@ -41,6 +41,13 @@ class SlowDynamics {
   void requireMass(const NonlinearSystem& system) const;
   // The run starts from the state x0 at time t0 (at rest: no velocity).
   void start(const Vector& x0, double t0);
+  // After start(): the state of the step before x0's and that step's length (a checkpoint's),
+  // so that the next step's predictor moves with the velocity the uninterrupted run had.
+  void restorePrevious(const Vector& previous, double previousStep);
+  // What restorePrevious takes back: the state before the last converged one (null: none) and
+  // the last step's length.
+  Teuchos::RCP<const Vector> previousState() const { return previous_; }
+  double previousStep() const { return previousStep_; }
   // Before an attempt at the step to time t: the system's inertia for it.
   void beginStep(NonlinearSystem& system, double t) const;
   // The step converged at x, t: x enters the history and the system is static again.

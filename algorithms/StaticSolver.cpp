@@ -410,6 +410,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   if (!start.resume) {
     if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
     slowDynamics_.start(u, start.time);
+    if (start.slowDynamicsPrevious)
+      slowDynamics_.restorePrevious(*start.slowDynamicsPrevious, start.slowDynamicsStep);
   }
   loadReference_ = start.loadReference;
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
@@ -569,6 +571,8 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
     sr.load = extrapolation_.load();
     u.assign(*x);
     slowDynamics_.commit(problem_, u, sr.time);
+    sr.slowDynamicsPrevious = slowDynamics_.previousState();
+    sr.slowDynamicsStep = slowDynamics_.previousStep();
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;

@@ -183,6 +183,10 @@ struct RunStart {
   Teuchos::RCP<const Vector> increment, load;
   // The last loaded step's reference residual (StepReport::loadReference; 0: none yet).
   double loadReference = 0;
+  // Slow dynamics' state before the last step's, and that step's length (StepReport::
+  // slowDynamicsPrevious, slowDynamicsStep), when the checkpoint kept them.
+  Teuchos::RCP<const Vector> slowDynamicsPrevious;
+  double slowDynamicsStep = 0;
   // > 0: the run pauses after this many converged steps (RunReport::paused); a run started
   // from its last step's report (StepReport: time, nextStepSize, increment, load,
   // loadReference, run) goes on as the uninterrupted run would.

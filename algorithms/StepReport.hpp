@@ -52,6 +52,11 @@ struct StepReport {
   // The step's increment and its plain start's residual (Newton/Extrapolation), for a
   // checkpoint; null when the run does not extrapolate.
   Teuchos::RCP<const Vector> increment, load;
+  // Slow dynamics' state before this step's and this step's length (null without slow
+  // dynamics): what a continued run needs for its next predictor (SlowDynamics::
+  // restorePrevious).
+  Teuchos::RCP<const Vector> slowDynamicsPrevious;
+  double slowDynamicsStep = 0;
 };
 
 }  // namespace contactlab

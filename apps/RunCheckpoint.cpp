@@ -153,6 +153,13 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
     lastStep[2] = problem.gatherDisplacements(*last.load);
     lastStep[3] = contact ? contact->pointUnknowns(*last.load) : std::vector<double>{};
   }
+  std::array<std::vector<double>, 2> previous;  // slow dynamics': displacements, unknowns
+  const bool hasPrevious = !last.slowDynamicsPrevious.is_null();
+  if (hasPrevious) {
+    previous[0] = problem.gatherDisplacements(*last.slowDynamicsPrevious);
+    previous[1] =
+        contact ? contact->pointUnknowns(*last.slowDynamicsPrevious) : std::vector<double>{};
+  }
   const std::vector<double> displacements = problem.gatherDisplacements(x);
   const ElementStates elements = problem.gatherElementStates();
   ContactHistory history;
@@ -214,6 +221,12 @@ void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const 
       file.writeDoubles("last_step/load/displacement", lastStep[2], mesh.dim, "force");
       file.writeDoubles("last_step/load/unknowns", lastStep[3]);
     }
+    if (hasPrevious) {
+      file.writeDoubles("last_step/slow_dynamics_previous/displacement", previous[0], mesh.dim,
+                        "length (the mesh's unit)");
+      file.writeDoubles("last_step/slow_dynamics_previous/unknowns", previous[1]);
+      file.writeAttribute("last_step_length", last.slowDynamicsStep);
+    }
     file.commit();
   });
 }
@@ -232,7 +245,9 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
   ElementStates elements;
   ContactHistory history;
   std::array<std::vector<double>, 4> lastStep;  // as writeCheckpoint's
-  bool hasLast = false;
+  std::array<std::vector<double>, 2> previous;
+  double previousStep = 0;
+  bool hasLast = false, hasPrevious = false;
   collectively(comm, [&] {
     const Hdf5Reader file(path);
     info = readInfo(file);
@@ -242,6 +257,13 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
       lastStep[1] = file.doubles("last_step/increment/unknowns");
       lastStep[2] = file.doubles("last_step/load/displacement");
       lastStep[3] = file.doubles("last_step/load/unknowns");
+    }
+    hasPrevious =
+        last != nullptr && file.hasDataset("last_step/slow_dynamics_previous/displacement");
+    if (hasPrevious) {
+      previous[0] = file.doubles("last_step/slow_dynamics_previous/displacement");
+      previous[1] = file.doubles("last_step/slow_dynamics_previous/unknowns");
+      previousStep = file.doubleAttribute("last_step_length");
     }
     if (file.integerAttribute("dim") != mesh.dim)
       throw InputError("the checkpoint's mesh is " + std::to_string(file.integerAttribute("dim")) +
@@ -283,6 +305,13 @@ CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, Cont
       if (contact) contact->setPointUnknowns(lastStep[2 * v + 1], *vector);
       (v == 0 ? last->increment : last->load) = vector;
     }
+  }
+  if (hasPrevious) {
+    Teuchos::RCP<Vector> vector = Teuchos::rcp(new Vector(x.getMap()));
+    problem.scatterDisplacements(previous[0], *vector);
+    if (contact) contact->setPointUnknowns(previous[1], *vector);
+    last->slowDynamicsPrevious = vector;
+    last->slowDynamicsStep = previousStep;
   }
   return info;
 }

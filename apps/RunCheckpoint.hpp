@@ -45,6 +45,10 @@ struct CheckpointInfo {
 // from the checkpoint starts its next step as the uninterrupted run does.
 struct LastStep {
   Teuchos::RCP<const Vector> increment, load;
+  // Slow dynamics' state before the last step's, and the step's length (StepReport::
+  // slowDynamicsPrevious, slowDynamicsStep; null without slow dynamics).
+  Teuchos::RCP<const Vector> slowDynamicsPrevious;
+  double slowDynamicsStep = 0;
 };
 
 // The file in a run's output folder.

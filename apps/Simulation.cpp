@@ -248,6 +248,8 @@ void Simulation::restoreStartingPoint() {
     next_.step = checkpointInfo_.step;
     next_.increment = last.increment;
     next_.load = last.load;
+    next_.slowDynamicsPrevious = last.slowDynamicsPrevious;
+    next_.slowDynamicsStep = last.slowDynamicsStep;
     next_.loadReference = checkpointInfo_.loadReference;
     if (restart_) {  // the same run: its cut step size and its counts go on
       next_.stepSize = checkpointInfo_.stepSize;
@@ -340,6 +342,8 @@ void Simulation::advance(int maxSteps) {
     next_.increment = s.increment;
     next_.load = s.load;
     next_.loadReference = s.loadReference;
+    next_.slowDynamicsPrevious = s.slowDynamicsPrevious;
+    next_.slowDynamicsStep = s.slowDynamicsStep;
   };
   auto onIteration = [&](const StaticSolver::IterateProgress& p) {
     outputs_->iteration(p, elapsed());

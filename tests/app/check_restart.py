@@ -13,7 +13,7 @@ shorter End Time does not rescale them, and the steps are 1/8, exact in binary, 
 last time is the long run's.
 
 usage: check_restart.py CONTACTLAB CASE WORKDIR [--ranks N]
-       (CASE: friction | friction-penalty | friction-fixed-point | plasticity)"""
+       (CASE: friction | friction-penalty | friction-fixed-point | plasticity | slow-dynamics)"""
 import argparse, csv, json, os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -103,8 +103,17 @@ FRICTION_PENALTY = FRICTION.replace("Name: restart-friction", "Name: restart-fri
 FRICTION_FIXED_POINT = FRICTION.replace(
     "Name: restart-friction", "Name: restart-friction-fixed-point").replace(
     "  Load Steps:", "  Algorithm: {Method: fixed-point}\n  Load Steps:")
+# Slow dynamics measures each step's inertia from a predictor that moves with the last step's
+# velocity: the checkpoint's last_step/slow_dynamics_previous carries the state before the last
+# one, so that the continued run's first predictor is the uninterrupted run's.
+SLOW_DYNAMICS = FRICTION.replace("Name: restart-friction", "Name: restart-slow-dynamics").replace(
+    "linear-elastic: {E: 1.0, nu: 0.3}", "linear-elastic: {E: 1.0, nu: 0.3, density: 1.0}").replace(
+    "  Load Steps:",
+    "  Algorithm: {Regularization: slow-dynamics, slow-dynamics: {Time Scale: 3.0e-3}}\n"
+    "  Load Steps:")
 SCENES = {"friction": FRICTION, "friction-penalty": FRICTION_PENALTY,
-          "friction-fixed-point": FRICTION_FIXED_POINT, "plasticity": PLASTICITY}
+          "friction-fixed-point": FRICTION_FIXED_POINT, "plasticity": PLASTICITY,
+          "slow-dynamics": SLOW_DYNAMICS}
 
 # Fields of the last frame compared (those the frame has).
 FIELDS = ["displacement", "contact_pressure", "tangential_traction", "slip", "stress",
