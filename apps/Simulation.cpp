@@ -13,6 +13,7 @@
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactProblem.hpp"
+#include "linear/LinearSolverRegistry.hpp"
 
 #include <exception>
 #include <filesystem>
@@ -77,17 +78,6 @@ void reportElementTechnologies(const Problem& problem) {
     else if (t.reason.find(", but ") != std::string::npos)
       std::cerr << "contactlab: block '" << t.block << "': full integration: " << t.reason << "\n";
   }
-}
-
-// MUMPS' Mode 'automatic' (the default): LDL^T with 2x2 pivots (SYM = 2) on a symmetric
-// tangent, about 1.8x faster than LU on a 3D Hertz model of 125 571 dofs (doc/performance.md),
-// LU otherwise. Written into the scene, so summary.json reports the mode used.
-void resolveSolverMode(Teuchos::ParameterList& scene, bool symmetric) {
-  Teuchos::ParameterList& section = scene.sublist("Linear Solver");
-  if (section.get<std::string>("Type") != "mumps") return;
-  Teuchos::ParameterList& mumps = section.sublist("mumps");
-  if (mumps.get<std::string>("Mode", "automatic") != "automatic") return;
-  mumps.set("Mode", symmetric ? "symmetric-indefinite" : "general");
 }
 
 // An InputError whose message names `where` (the scene's path) once.
@@ -265,7 +255,10 @@ void Simulation::restoreStartingPoint() {
 
 // The linear solver in the mode the tangent allows, and the checks that need it.
 void Simulation::resolveLinearSolver() {
-  resolveSolverMode(*sm_.scene.params, tangentIsSymmetric(sm_, *problem_, contact_.get()));
+  // MUMPS' Mode 'automatic' (the default): LDL^T with 2x2 pivots on a symmetric tangent, about
+  // 1.8x faster than LU on a 3D Hertz model of 125 571 dofs (doc/performance.md), LU otherwise.
+  resolveAutomaticMode(sm_.scene.params->sublist("Linear Solver"),
+                       tangentIsSymmetric(sm_, *problem_, contact_.get()));
   giveBack_ = std::make_unique<SolverGiveBack>(options_.solverPool, solver_);
   if (options_.solverPool) {
     giveBack_->key = solverKey(*sm_.scene.params, comm_->getSize());
@@ -400,11 +393,8 @@ int Simulation::finish() {
   RunReport report = report_;
   // A geometry retry made a symmetric-mode solver take any matrix (LinearSolver::takeAnyMatrix):
   // summary.json reports the mode the run ended in.
-  if (!giveBack_->assumption.empty() && solver_->symmetryAssumption().empty()) {
-    Teuchos::ParameterList& section = sm_.scene.params->sublist("Linear Solver");
-    if (section.get<std::string>("Type") == "mumps")
-      section.sublist("mumps").set("Mode", "general");
-  }
+  if (!giveBack_->assumption.empty() && solver_->symmetryAssumption().empty())
+    recordGeneralMode(sm_.scene.params->sublist("Linear Solver"));
   // summary.json and the last line count the whole run, its part before a restart too: the
   // solver's counts start from the checkpoint's (RunStart::totals), its steps are this run's.
   if (restart_) report.steps += static_cast<int>(checkpointInfo_.stepsRows);

@@ -44,6 +44,28 @@ bool computesDeterminant(const std::string& type) {
   return valid->isParameter("Determinant") && valid->isType<bool>("Determinant");
 }
 
+namespace {
+
+// The type's parameters in `section` when that type declares a string Mode, else null.
+Teuchos::ParameterList* modeParameters(Teuchos::ParameterList& section) {
+  const std::string type = section.get<std::string>("Type");
+  const auto valid = linearSolverRegistry().get(type).validParameters();
+  if (!valid->isParameter("Mode") || !valid->isType<std::string>("Mode")) return nullptr;
+  return &section.sublist(type);
+}
+
+}  // namespace
+
+void resolveAutomaticMode(Teuchos::ParameterList& section, bool symmetric) {
+  Teuchos::ParameterList* params = modeParameters(section);
+  if (!params || params->get<std::string>("Mode", "automatic") != "automatic") return;
+  params->set("Mode", symmetric ? "symmetric-indefinite" : "general");
+}
+
+void recordGeneralMode(Teuchos::ParameterList& section) {
+  if (Teuchos::ParameterList* params = modeParameters(section)) params->set("Mode", "general");
+}
+
 std::string solversComputingDeterminant() {
   std::string names;
   for (const std::string& name : linearSolverRegistry().names())

@@ -21,6 +21,17 @@ void registerLinearSolvers();
 // registry, not a list of names, says which ones can.
 bool computesDeterminant(const std::string& type);
 
+// A solver that can read a symmetric matrix's one triangle declares a string parameter `Mode`
+// whose default `automatic` leaves the choice to the application, which knows whether its
+// tangent is symmetric (the convention, as `Determinant`'s). In the scene's Linear Solver section
+// `section` ({Type, <type>: {...}}), an `automatic` Mode of such a type becomes
+// `symmetric-indefinite` (LDL^T with 2x2 pivots) or `general` (LU); nothing changes for a type
+// without the parameter or a Mode given. Written into the scene, so summary.json reports it.
+void resolveAutomaticMode(Teuchos::ParameterList& section, bool symmetric);
+// The section's Mode `general` (when its type has one): what a solver that dropped its symmetry
+// for the run (LinearSolver::takeAnyMatrix) ran in.
+void recordGeneralMode(Teuchos::ParameterList& section);
+
 // The solvers of the registry that can compute a determinant, comma-separated.
 std::string solversComputingDeterminant();
 

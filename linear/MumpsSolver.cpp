@@ -40,7 +40,8 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsSolver::validParameters() {
   using Teuchos::tuple;
   auto p = Teuchos::rcp(new Teuchos::ParameterList("mumps"));
   // 'automatic' is the application's to resolve (it knows whether its tangent is symmetric:
-  // apps/Simulation.cpp); a solver built with it unresolved takes any matrix.
+  // resolveAutomaticMode in LinearSolverRegistry.hpp); a solver built with it unresolved takes
+  // any matrix.
   Teuchos::setStringToIntegralParameter<Mode>(
       "Mode", "automatic", "Matrix type given to MUMPS (SYM)",
       tuple<std::string>("automatic", "general", "symmetric", "symmetric-indefinite"),

@@ -84,5 +84,32 @@ TEST(LinearSolverRegistry, InvalidParametersAreLinearSolverErrors) {
   EXPECT_THROW(linearSolverRegistry().get("belos").build(badValue, world()), LinearSolverError);
 }
 
+// Mode 'automatic' is resolved by the registry's convention (a string parameter Mode), not by
+// the type's name: MUMPS takes the tangent's symmetry, a given Mode stays, klu2 has none.
+TEST(LinearSolverRegistry, AutomaticModeFollowsTheTangentWhereTheTypeHasAMode) {
+  registerLinearSolvers();
+  auto section = [](const std::string& type, const std::string& mode) {
+    Teuchos::ParameterList p;
+    p.set("Type", type);
+    if (!mode.empty()) p.sublist(type).set("Mode", mode);
+    return p;
+  };
+  Teuchos::ParameterList mumps = section("mumps", "automatic");
+  resolveAutomaticMode(mumps, true);
+  EXPECT_EQ(mumps.sublist("mumps").get<std::string>("Mode"), "symmetric-indefinite");
+  Teuchos::ParameterList unsymmetric = section("mumps", "");
+  resolveAutomaticMode(unsymmetric, false);
+  EXPECT_EQ(unsymmetric.sublist("mumps").get<std::string>("Mode"), "general");
+  Teuchos::ParameterList given = section("mumps", "symmetric");
+  resolveAutomaticMode(given, false);
+  EXPECT_EQ(given.sublist("mumps").get<std::string>("Mode"), "symmetric");
+  recordGeneralMode(given);
+  EXPECT_EQ(given.sublist("mumps").get<std::string>("Mode"), "general");
+  Teuchos::ParameterList klu2 = section("klu2", "");
+  resolveAutomaticMode(klu2, true);
+  recordGeneralMode(klu2);
+  EXPECT_FALSE(klu2.sublist("klu2").isParameter("Mode"));
+}
+
 }  // namespace
 }  // namespace contactlab
