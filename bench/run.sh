@@ -3,7 +3,8 @@
 # usage: bench/run.sh [--large] [SECTION...]
 #   --large adds the ~600 000-dof cases (long, ~20 GB); SECTIONs (elasticity, hertz, nonlinear,
 #   ironing, algorithms, critical-mu, mortar, ironing3d, normal-field, tube-expansion,
-#   blade-root, factorization-reuse, single-precision, peers, study-process, scene-presets)
+#   blade-root, factorization-reuse, single-precision, peers, study-process, scene-presets,
+#   python-module)
 #   run only those tables, all by default (ironing3d and normal-field write
 #   doc/verification.md, study-process doc/studies.md, scene-presets doc/algorithms.md; peers
 #   installs GetFEM and CalculiX with apt-get when they are missing).
@@ -138,6 +139,12 @@ if want study-process; then
   # study): five studies, about 8 minutes.
   python3 bench/study_process.py "$BUILD/apps/contactlab" scenes "$BUILD/bench-study-process" \
     --doc doc/studies.md
+fi
+if want python-module; then
+  # The same scenes by `contactlab run` and by the Python module's contactlab.run(), whole
+  # processes (about a minute).
+  python3 bench/python_module.py "$BUILD/apps/contactlab" "$BUILD/python" scenes \
+    "$BUILD/bench-python-module" --doc doc/performance.md
 fi
 if want peers; then
   # contactlab, GetFEM and CalculiX on the same tet10 quarter hemisphere, one program at a
