@@ -317,14 +317,14 @@ void Simulation::advance(int maxSteps) {
     staticRun_ = std::make_unique<StaticRun>(system, contact_.get(), *solver_, sm_.solverOptions);
   auto onStep = [&](const StepReport& s, const Vector& state) {
     time_ = s.time;
-    outputs_->step(s, state, elapsed());
     StepResult result;
+    if (contact_) result.contact = contact_->resultants();
+    outputs_->step(s, state, result.contact, elapsed());
     result.step = s.step;
     result.time = s.time;
     result.iterations = s.iterations;
     result.cuts = s.cuts;
     result.residual = s.residual;
-    if (contact_) result.contact = contact_->resultants();
     history_.push_back(result);
     // Where the next step starts: as the uninterrupted run would go on (a restart's start).
     next_.time = s.time;

@@ -77,7 +77,8 @@ RunOutputs::RunOutputs(const SceneModel& sm, Problem& problem, ContactProblem* c
 
 RunOutputs::~RunOutputs() = default;
 
-void RunOutputs::step(const StepReport& s, const Vector& state, double elapsed) {
+void RunOutputs::step(const StepReport& s, const Vector& state, const ContactResultants& cr,
+                      double elapsed) {
   // The displacement part of the system's unknowns (the whole vector without contact).
   auto solution =
       contact_ ? contact_->displacement(state) : Teuchos::rcp(new Vector(state, Teuchos::Copy));
@@ -87,9 +88,7 @@ void RunOutputs::step(const StepReport& s, const Vector& state, double elapsed) 
   std::optional<double> stage;
   for (double t : sm_.contactTimes)
     if (std::abs(s.time - t) <= 1e-9 * sm_.solverOptions.endTime) stage = t;
-  ContactResultants cr;
   if (contact_) {
-    cr = contact_->resultants();
     if (root_)
       ContactCsv(folder_.path("contact.csv")).write(*contact_, sm_.contact, *sm_.model.mesh);
     if (stage) {

@@ -47,8 +47,10 @@ class RunOutputs {
              const Vector& x);
   ~RunOutputs();
 
-  // Collective. After a converged step: every per-step file, then the checkpoint.
-  void step(const StepReport& s, const Vector& state, double elapsed);
+  // Collective. After a converged step (`resultants`: its contact forces, zero without
+  // contact): every per-step file, then the checkpoint.
+  void step(const StepReport& s, const Vector& state, const ContactResultants& resultants,
+            double elapsed);
   void iteration(const StaticSolver::IterateProgress& p, double elapsed) {
     if (root_) progress_.iteration(p, elapsed);
   }
