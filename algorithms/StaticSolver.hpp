@@ -132,7 +132,8 @@ struct RunReport {
                             // passedThrough), "degraded-contact" (a forced
                             // cycling treatment's state violates the contact law and Newton
                             // from it without the treatment failed), "step-too-small",
-                            // "interrupted" (SIGINT or SIGTERM)
+                            // "interrupted" (SIGINT or SIGTERM), "stopped" (a
+                            // stepped Simulation finished before End Time)
   std::string message;      // one sentence for the user
   int interruptSignal = 0;  // failure "interrupted": the signal (SIGINT, SIGTERM)
   // RunStart::maxSteps steps converged before End Time: neither converged nor failed.

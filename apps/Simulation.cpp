@@ -391,6 +391,12 @@ int Simulation::finish() {
         "on a simulation built to validate");
   finished_ = true;
   RunReport report = report_;
+  if (!ended_) {  // stepped, then finished before its end: said as such, not as a success
+    report.failure = "stopped";
+    report.message = "finished at t = " + numberText(time_) +
+                     " before Load Steps/End Time = " + numberText(sm_.solverOptions.endTime) +
+                     " (the simulation was stepped and not run to its end)";
+  }
   // A geometry retry made a symmetric-mode solver take any matrix (LinearSolver::takeAnyMatrix):
   // summary.json reports the mode the run ended in.
   if (!giveBack_->assumption.empty() && solver_->symmetryAssumption().empty())

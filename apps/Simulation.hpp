@@ -84,7 +84,8 @@ class Simulation {
   const RunReport& run();
   // Writes summary.json and the closing lines (also after a failure), with the critical
   // friction coefficient for `criticalMu`. Returns the exit code `contactlab run` gives:
-  // 0 converged, 1 failed numerically, 128 + signal when interrupted. Collective; once.
+  // 0 converged, 1 failed numerically (or "stopped": finished before End Time), 128 + signal
+  // when interrupted. Collective; once.
   int finish();
 
   bool ended() const { return ended_; }

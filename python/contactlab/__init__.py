@@ -87,7 +87,9 @@ class Simulation:
         return self._s.run()
 
     def finish(self):
-        """Writes summary.json (also after a failure); returns `contactlab run`'s exit code."""
+        """Writes summary.json (also after a failure); returns `contactlab run`'s exit code.
+        Finished before End Time (after step() calls), the run is recorded as failure "stopped"
+        (exit code 1). Once per simulation."""
         code = self._s.finish()
         text = self._s.summary_json()
         self._summary = json.loads(text) if text and text != "null" else None

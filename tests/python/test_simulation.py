@@ -269,6 +269,18 @@ class SimulationTest(unittest.TestCase):
             with self.assertRaises(contactlab.InputError):
                 contactlab.study(path, os.path.join(out, "broken"))
 
+    def test_finished_before_its_end_is_stopped(self):
+        with Folder() as out:
+            sim = contactlab.Simulation(HERTZ, set=SMALL, out=out, quiet=True)
+            self.assertTrue(sim.step())
+            self.assertEqual(sim.finish(), 1)
+            self.assertFalse(sim.summary["converged"])
+            self.assertEqual(sim.summary["failure"], "stopped")
+            self.assertIn("before Load Steps/End Time = 1", sim.summary["message"])
+            self.assertEqual(sim.summary["load_steps"]["converged"], 1)
+            with self.assertRaises(RuntimeError):
+                sim.finish()  # once
+
     def test_a_failed_run_reports_and_keeps_its_steps(self):
         with Folder() as out:
             # Two Newton iterations cannot solve the contact step: the run fails at step 1.
