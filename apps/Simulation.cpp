@@ -219,7 +219,6 @@ void Simulation::build() {
 // The state the run starts from: refused now if it is not this model's.
 void Simulation::restoreStartingPoint() {
   next_.time = 0;
-  time_ = 0;
   if (checkpoint_.empty()) return;
   const bool continueTime = restart_ || sm_.initialStateContinuesTime;
   const std::string what =
@@ -246,7 +245,6 @@ void Simulation::restoreStartingPoint() {
       next_.totals = checkpointInfo_.totals;
     }
   }
-  time_ = next_.time;
   if (next_.time >= sm_.solverOptions.endTime * (1 - 1e-12))
     throw InputError(what + ": the checkpoint is at t = " + numberText(checkpointInfo_.time) +
                      ", not before Load Steps/End Time = " + numberText(sm_.solverOptions.endTime) +
@@ -316,7 +314,6 @@ void Simulation::advance(int maxSteps) {
   if (!staticRun_)
     staticRun_ = std::make_unique<StaticRun>(system, contact_.get(), *solver_, sm_.solverOptions);
   auto onStep = [&](const StepReport& s, const Vector& state) {
-    time_ = s.time;
     StepResult result;
     if (contact_) result.contact = contact_->resultants();
     outputs_->step(s, state, result.contact, elapsed());
@@ -393,7 +390,7 @@ int Simulation::finish() {
   RunReport report = report_;
   if (!ended_) {  // stepped, then finished before its end: said as such, not as a success
     report.failure = "stopped";
-    report.message = "finished at t = " + numberText(time_) +
+    report.message = "finished at t = " + numberText(next_.time) +
                      " before Load Steps/End Time = " + numberText(sm_.solverOptions.endTime) +
                      " (the simulation was stepped and not run to its end)";
   }
@@ -412,7 +409,7 @@ int Simulation::finish() {
     record.criticalMu = JsonValue();
     if (!report.interruptSignal)
       record.criticalMu =
-          criticalMuSummary(sm_, contact_.get(), *x_, time_, report.steps, comm_, console_);
+          criticalMuSummary(sm_, contact_.get(), *x_, next_.time, report.steps, comm_, console_);
   }
   // The summary, also when the run failed (the last converged step stays written).
   const double localMemory = peakMemoryMB();

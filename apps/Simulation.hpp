@@ -91,7 +91,8 @@ class Simulation {
   bool ended() const { return ended_; }
   // The counts and the failure so far (converged once End Time is reached).
   const RunReport& report() const { return report_; }
-  double time() const { return time_; }
+  // The last converged step's load time (the start's before any).
+  double time() const { return next_.time; }
   const std::vector<StepResult>& history() const { return history_; }
   // The last converged step's contact points (every zone; empty without contact).
   std::vector<ContactPointResult> contactPoints() const;
@@ -136,8 +137,7 @@ class Simulation {
   std::string checkpoint_;
   bool restart_ = false;
   CheckpointInfo checkpointInfo_;
-  RunStart next_;    // where the next step starts
-  double time_ = 0;  // of the last converged step (the start's before any)
+  RunStart next_;  // where the next step starts
   std::unique_ptr<Problem> problem_;
   std::unique_ptr<ContactProblem> contact_;
   std::unique_ptr<LinearSolver> solver_;
