@@ -3,7 +3,7 @@
 #include "apps/SceneLoadFunction.hpp"
 #include "apps/SceneValues.hpp"
 #include "base/InputError.hpp"
-#include "core/contact/MortarIntegration.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 #include "formulations/FormulationRegistry.hpp"
 
 #include <algorithm>
@@ -15,14 +15,6 @@ namespace contactlab {
 namespace {
 
 using Teuchos::ParameterList;
-
-// The first facet group of `slave` whose corners carry no share of a smooth pressure (tri6,
-// quad8: hasTransformedBasis), or null.
-const CellGroup* cornerlessFacets(const Mesh& mesh, const std::string& slave) {
-  for (const CellGroup* g : mesh.findBoundaries(slave))
-    if (hasTransformedBasis(g->type)) return g;
-  return nullptr;
-}
 
 // Slave and Master (or an Obstacle), No Friction Group and No Contact Group, checked against
 // the mesh's boundary groups (the same on every rank, so every rank agrees).
@@ -147,6 +139,23 @@ void fillAutomaticCoefficients(ParameterList& params, ContactZone& zone, const s
   }
 }
 
+// Discretization: a registry name, or automatic's pick (noted with its reason); refused when
+// the zone's formulation cannot run on it.
+void readDiscretization(const ParameterList& z, const std::string& path, const Mesh& mesh,
+                        ContactZone& zone, std::vector<std::string>& notes) {
+  const std::string requested = z.get<std::string>("Discretization");
+  zone.discretization = requested;
+  if (requested == "automatic") {
+    const AutomaticDiscretization pick = chooseAutomaticDiscretization(mesh, zone.slave, *zone.law);
+    zone.discretization = pick.name;
+    if (!pick.reason.empty())
+      notes.push_back("Contact/" + zone.name + ": Discretization " + pick.name +
+                      " (automatic: " + pick.reason + ")");
+  }
+  const std::string refusal = contactDiscretizationType(zone.discretization).refusal(*zone.law);
+  if (!refusal.empty()) throw InputError(path + "/Discretization: " + refusal);
+}
+
 // Contact/<zone>.
 ContactZone contactZone(const ParameterList& z, const std::string& name, SceneModel& sm,
                         const std::string& where) {
@@ -166,9 +175,6 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, SceneMo
   zone.initialContact = initial == "all"    ? InitialContact::all
                         : initial == "none" ? InitialContact::none
                                             : InitialContact::interpenetrated;
-  const std::string discretization = z.get<std::string>("Discretization");
-  zone.discretization =
-      discretization == "mortar" ? Discretization::mortar : Discretization::nodeToSegment;
   zone.multiplierBasis = z.get<std::string>("Multiplier Basis") == "standard"
                              ? MultiplierBasis::Standard
                              : MultiplierBasis::Dual;
@@ -184,22 +190,7 @@ ContactZone contactZone(const ParameterList& z, const std::string& name, SceneMo
   } catch (const std::invalid_argument& e) {
     throw InputError(path + "/Formulation/" + zone.formulation + ": " + e.what());
   }
-  // 'automatic': mortar on tri6 and quad8 slave facets, whose corners carry no share (or a
-  // negative one) of a smooth pressure, so that node-to-segment's collocation there is not
-  // sound (a uniform pressure on hex20 against a plane comes out with a 13 % spread, 3D Hertz
-  // in tet10 with friction failed to converge); node-to-segment elsewhere, and for a normal
-  // field, which mortar does not pair (doc/verification.md "Mortar against an obstacle").
-  if (discretization == "automatic" && !zone.law->hasNormalField())
-    if (const CellGroup* g = cornerlessFacets(mesh, zone.slave)) {
-      zone.discretization = Discretization::mortar;
-      sm.notes.push_back("Contact/" + name + ": Discretization mortar (automatic: " +
-                         info(g->type).name + " slave facets)");
-    }
-  if (zone.law->hasNormalField() && zone.discretization == Discretization::mortar)
-    throw InputError(path + "/Formulation: " + zone.formulation +
-                     " runs with node-to-segment (against a master surface or an obstacle), not "
-                     "mortar (its normal is the master's at a point, which mortar does not "
-                     "pair)");
+  readDiscretization(z, path, mesh, zone, sm.notes);
   if (zone.initialContact != InitialContact::interpenetrated && !zone.law->hasMultipliers())
     throw InputError(path + "/Initial Contact: '" + initial + "' sets the starting statuses " +
                      "through the contact multipliers, and " + zone.formulation +
@@ -222,10 +213,10 @@ void readContactZones(const ParameterList& contact, SceneModel& sm, const std::s
   // Node-to-segment collocates at the slave nodes, and tri6/quad8 corners carry no (or a
   // negative) share of a smooth pressure: it runs, its forces are not consistent loads.
   for (const ContactZone& zone : sm.contact)
-    if (zone.discretization == Discretization::nodeToSegment)
+    if (contactDiscretizationType(zone.discretization).traits().collocatesAtSlaveNodes)
       if (const CellGroup* g = cornerlessFacets(*sm.model.mesh, zone.slave))
         sm.advice.push_back(
-            "Contact/" + zone.name + ": node-to-segment on " + info(g->type).name +
+            "Contact/" + zone.name + ": " + zone.discretization + " on " + info(g->type).name +
             " slave facets collocates at corners that carry no share of a smooth pressure "
             "(a uniform pressure on tet10 comes out with a 7 % spread, 3D Hertz on two tet10 "
             "bodies 5.5 % RMS off); 'Discretization: mortar' enforces contact on quadratic "

@@ -7,7 +7,7 @@
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "core/problem/ElementTechnology.hpp"
-#include "formulations/ContactDiscretization.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 

@@ -7,7 +7,7 @@
 #include "core/materials/MaterialRegistry.hpp"
 #include "core/mesh/MeshSourceRegistry.hpp"
 #include "core/problem/ElementTechnology.hpp"
-#include "formulations/ContactDiscretization.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 #include "formulations/FormulationRegistry.hpp"
 #include "linear/LinearSolverRegistry.hpp"
 
@@ -302,19 +302,21 @@ ParameterList contactItem(const ParameterList* user, const std::string& where,
         "(formulations with multipliers only): a starting point, which changes the answer only "
         "where it is not unique (doc/algorithms.md)",
         choices({"interpenetrated", "all", "none"}));
+  std::vector<std::string> discretizations = {"automatic"};
+  for (const auto& name : contactDiscretizationRegistry().names())
+    discretizations.push_back(name);
   p.set("Discretization", "automatic",
-        "Where the contact conditions hold: 'automatic' (mortar on tri6 and quad8 slave facets, "
-        "i.e. tet10 and hex20 bodies, but for the normal-field formulation; node-to-segment "
-        "otherwise), 'node-to-segment' (at each slave node against the "
-        "closest master point; a slave node beyond a free edge of the master surface, by more "
-        "than 5 % of the edge's facet, faces no master and is open) or 'mortar' (weighted over "
-        "the slave surface by the mortar "
-        "integrals D and M, each slave facet against the master surface nearest to it that faces "
-        "it; against an Obstacle, each slave node at its facets' D-weighted position against "
-        "the obstacle; its geometry is a fixed point, doc/verification.md). On tri6 and quad8 "
-        "slave facets node-to-segment collocates at corners that carry no share of a smooth "
-        "pressure; mortar is the sound choice there",
-        choices({"automatic", "node-to-segment", "mortar"}));
+        "Where the contact conditions hold (one of: automatic, " +
+            contactDiscretizationRegistry().joinedNames() +
+            "; `contactlab list discretization`). 'automatic' takes mortar on tri6 and quad8 slave "
+            "facets (tet10 and hex20 bodies), whose corners carry no share of a smooth pressure "
+            "so that collocation at the slave nodes is not sound there, but for the normal-field "
+            "formulation, which mortar does not pair; node-to-segment otherwise. node-to-segment: "
+            "a slave node beyond a free edge of the master surface, by more than 5 % of the "
+            "edge's facet, faces no master and is open. mortar: each slave facet against the "
+            "master surface nearest to it that faces it; its geometry is a fixed point "
+            "(doc/verification.md)",
+        choices(discretizations));
   p.set("Multiplier Basis", "dual",
         "mortar: the multiplier basis, 'dual' (biorthogonal to the slave's shape functions, "
         "built on the covered part of each facet: nodal pressures like lumped ones) or "

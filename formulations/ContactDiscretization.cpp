@@ -1,14 +1,7 @@
 #include "formulations/ContactDiscretization.hpp"
 
-#include "base/InputError.hpp"
-#include "formulations/MortarDiscretization.hpp"
-#include "formulations/NodeToSegmentDiscretization.hpp"
-#include "formulations/ObstacleDiscretization.hpp"
-#include "formulations/ObstacleMortarDiscretization.hpp"
-
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace contactlab {
 
@@ -39,62 +32,6 @@ void ContactDiscretization::subtractMasterSide(const ContactPoint& pt,
       relative[c] -= pt.N[a] * xm[c];
       slip[c] -= pt.N[a] * (um[c] - umc[c]);
     }
-  }
-}
-
-ContactDiscretizationRegistry& contactDiscretizationRegistry() {
-  static ContactDiscretizationRegistry registry("contact discretization");
-  return registry;
-}
-
-namespace {
-template <class D>
-ContactDiscretizationRegistry::Builder builder() {
-  return [](const Teuchos::ParameterList&, const ContactZone& zone, const Mesh& mesh, int dim) {
-    return std::unique_ptr<ContactDiscretization>(new D(zone, mesh, dim));
-  };
-}
-Teuchos::RCP<const Teuchos::ParameterList> none() {
-  return Teuchos::rcp(new Teuchos::ParameterList);
-}
-}  // namespace
-
-void registerContactDiscretizations() {
-  auto& r = contactDiscretizationRegistry();
-  r.add({"node-to-segment",
-         "Each slave node against the closest point of the master surface, with the smoothed "
-         "normal there (the seed's collocation)",
-         none, builder<NodeToSegmentDiscretization>()});
-  r.add({"mortar",
-         "Weighted over the slave facets: D and M integrated on the current surfaces, a point "
-         "per slave node (dual or standard multiplier basis)",
-         none, builder<MortarDiscretization>()});
-  r.add({"rigid-obstacle",
-         "Each slave node against its projection on an analytic rigid surface (plane, sphere, "
-         "cylinder) that may translate",
-         none, builder<ObstacleDiscretization>()});
-  r.add({"rigid-obstacle-mortar",
-         "Weighted over the slave facets against an analytic rigid surface: a point per slave "
-         "node at the facets' D-weighted position (mortar's multiplier basis)",
-         none, builder<ObstacleMortarDiscretization>()});
-}
-
-std::string discretizationName(const ContactZone& zone) {
-  if (zone.obstacle)
-    return zone.discretization == Discretization::mortar ? "rigid-obstacle-mortar"
-                                                         : "rigid-obstacle";
-  return zone.discretization == Discretization::mortar ? "mortar" : "node-to-segment";
-}
-
-std::unique_ptr<ContactDiscretization> makeContactDiscretization(const ContactZone& zone,
-                                                                 const Mesh& mesh, int dim) {
-  registerContactDiscretizations();
-  try {
-    return contactDiscretizationRegistry()
-        .get(discretizationName(zone))
-        .build(Teuchos::ParameterList(), zone, mesh, dim);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("Contact/" + zone.name + ": " + e.what());
   }
 }
 

@@ -4,12 +4,11 @@
 // current configuration into paired contact points, each with its frozen geometry (master nodes
 // and coefficients, normal), gives the kinematics the master side of each point, and, for the
 // geometry in Newton, recomputes a point's geometry at perturbed positions. One class per
-// discretization, chosen by name from a registry:
-//   node-to-segment  NodeToSegmentDiscretization  a slave node against its closest master point
+// discretization and target (ContactDiscretizationType.hpp builds them):
+//   node-to-segment  NodeToSegmentDiscretization   a slave node against its closest master point
+//                    ObstacleDiscretization        a slave node against an analytic surface
 //   mortar           MortarDiscretization          weighted over the slave facets (D and M)
-//   rigid-obstacle   ObstacleDiscretization        a slave node against an analytic surface
-//   rigid-obstacle-mortar  ObstacleMortarDiscretization  mortar's weighted gaps against one
-#include "base/Registry.hpp"
+//                    ObstacleMortarDiscretization  mortar's weighted gaps against an obstacle
 #include "core/mesh/Mesh.hpp"
 #include "formulations/ContactControls.hpp"
 #include "formulations/ContactPoint.hpp"
@@ -93,17 +92,6 @@ class ContactDiscretization {
   double searchDistance_;
 };
 
-using ContactDiscretizationRegistry =
-    Registry<ContactDiscretization, const ContactZone&, const Mesh&, int>;
-ContactDiscretizationRegistry& contactDiscretizationRegistry();
-void registerContactDiscretizations();
-
-// The registry's name for a zone: its Discretization, or with an obstacle rigid-obstacle
-// (node-to-segment) or rigid-obstacle-mortar.
-std::string discretizationName(const ContactZone& zone);
-// The zone's discretization, built through the registry (InputError for missing groups).
-std::unique_ptr<ContactDiscretization> makeContactDiscretization(const ContactZone& zone,
-                                                                 const Mesh& mesh, int dim);
 // A key of a point's coupled nodes (FNV-1a of `nodes`, in [0, 2^30)): a new key, a new pairing
 // and so a new graph (the mortar discretizations' ContactPoint::facet).
 int couplingKey(const std::vector<std::int64_t>& nodes);

@@ -1,6 +1,7 @@
 #include "formulations/ContactPointFields.hpp"
 
 #include "core/contact/SurfacePressure.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,8 @@ RecoveredFields recoveredFields(const Mesh& mesh, const std::vector<ContactZone>
   recovered.pressure.assign(points.size(), nan);
   recovered.traction.assign(points.size(), {nan, nan, nan});
   for (std::size_t z = 0; z < zones.size(); ++z) {
-    if (zones[z].discretization != Discretization::nodeToSegment) continue;
+    if (!contactDiscretizationType(zones[z].discretization).traits().collocatesAtSlaveNodes)
+      continue;
     // Quadratic 3D facets: on tri6 f / w is not a pressure (corner integrals 0), on quad8 the
     // corner integrals are negative, and on quad9 f / w is a lumped projection with a small
     // corner share; the linear field of SurfacePressure.hpp is the traction there (3D Hertz,

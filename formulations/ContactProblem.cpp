@@ -6,7 +6,7 @@
 #include "core/contact/TributaryAreas.hpp"
 #include "core/problem/LinearConstraints.hpp"
 #include "formulations/ContactAssembler.hpp"
-#include "formulations/ContactDiscretization.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 #include "formulations/ContactPoint.hpp"
 #include "formulations/ContactPointFields.hpp"
 #include "formulations/ContactPointKernel.hpp"
@@ -45,11 +45,8 @@ ContactProblem::ContactProblem(Problem& solid, std::vector<ContactZone> zones)
     discretizations_.push_back(makeContactDiscretization(zone, mesh, dim_));
     std::map<std::int64_t, std::array<double, 3>> slaveNormals;
     if (zone.law->hasNormalField()) {
-      if (zone.discretization == Discretization::mortar)
-        throw InputError(
-            "Contact/" + zone.name + ": " + zone.law->name() +
-            " runs with node-to-segment (against a master surface or an obstacle), not "
-            "mortar (its normal is the master's at a point, which mortar does not pair)");
+      const std::string refusal = contactDiscretizationType(zone.discretization).refusal(*zone.law);
+      if (!refusal.empty()) throw InputError("Contact/" + zone.name + ": " + refusal);
       std::vector<std::int64_t> facetNodes;
       for (const CellGroup* g : mesh.findBoundaries(zone.slave))
         facetNodes.insert(facetNodes.end(), g->nodes.begin(), g->nodes.end());

@@ -18,11 +18,6 @@ namespace contactlab {
 // the first iterate has these statuses (formulations with multipliers only).
 enum class InitialContact { interpenetrated, all, none };
 
-// Where the contact conditions are collocated: at the slave nodes against the closest master
-// point (node-to-segment), or weighted over the slave surface with the mortar matrices D and M
-// (a point per slave node, its gap n_j . (sum_k D_jk x_k - sum_l M_jl x_l) / sum_k D_jk).
-enum class Discretization { nodeToSegment, mortar };
-
 struct ContactZone {
   std::string name;
   std::string slave;   // boundary physical group (its nodes are the contact points)
@@ -33,8 +28,10 @@ struct ContactZone {
   // (twice the largest slave facet size).
   double searchDistance = 0.0;
   InitialContact initialContact = InitialContact::interpenetrated;
-  Discretization discretization = Discretization::nodeToSegment;
-  MultiplierBasis multiplierBasis = MultiplierBasis::Dual;  // mortar only
+  // Where the contact conditions hold: a contact discretization registry name
+  // (ContactDiscretizationType.hpp), e.g. node-to-segment or mortar.
+  std::string discretization = "node-to-segment";
+  MultiplierBasis multiplierBasis = MultiplierBasis::Dual;  // where the discretization has one
   // Boundary group of slave nodes without friction (code_aster's SANS_GROUP_NO_FR); empty:
   // none. Nodes whose tangential motion the Dirichlet conditions fix need not be listed.
   std::string noFrictionGroup;

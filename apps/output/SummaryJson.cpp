@@ -1,5 +1,7 @@
 #include "apps/output/SummaryJson.hpp"
 
+#include "formulations/ContactDiscretizationType.hpp"
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <cctype>
@@ -107,15 +109,12 @@ JsonValue SummaryJson::formulations() const {
   return zones;
 }
 
-// Per zone: node-to-segment, or mortar with its multiplier basis.
+// Per zone: its discretization, with the multiplier basis where it has one.
 JsonValue SummaryJson::discretizations() const {
   if (!contact_) return JsonValue();
   JsonValue zones = JsonValue::object();
   for (const auto& zone : sm_.contact)
-    zones.set(zone.name,
-              zone.discretization == Discretization::nodeToSegment ? std::string("node-to-segment")
-              : zone.multiplierBasis == MultiplierBasis::Dual      ? std::string("mortar (dual)")
-                                                              : std::string("mortar (standard)"));
+    zones.set(zone.name, contactDiscretizationType(zone.discretization).label(zone));
   return zones;
 }
 

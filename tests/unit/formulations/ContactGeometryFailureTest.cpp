@@ -50,7 +50,7 @@ struct StackedMortar {
     zone.slave = "upper-bottom";
     zone.master = "lower-top";
     zone.law = formulationRegistry().get("augmented-lagrangian").build(p);
-    zone.discretization = Discretization::mortar;
+    zone.discretization = "mortar";
     return {zone};
   }
   // x with every slave surface node displaced onto one point: every slave facet collapses.

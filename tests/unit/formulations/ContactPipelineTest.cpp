@@ -7,7 +7,7 @@
 #include "core/mesh/MeshGenerators.hpp"
 #include "core/problem/Problem.hpp"
 #include "formulations/ContactAssembler.hpp"
-#include "formulations/ContactDiscretization.hpp"
+#include "formulations/ContactDiscretizationType.hpp"
 #include "formulations/ContactPointKernel.hpp"
 #include "formulations/ContactSurfaceState.hpp"
 #include "formulations/FormulationRegistry.hpp"
@@ -204,7 +204,7 @@ TEST(MasterSurface, FreeBoundaryIsTheOutlineNotTheKinks) {
 
 TEST(ContactDiscretization, MortarGapIsTheDistanceAndTheWeightsCoverTheInterface) {
   StackedSurfaces s(0.1);
-  s.zone.discretization = Discretization::mortar;
+  s.zone.discretization = "mortar";
   s.state->import(*s.u);
   auto d = makeContactDiscretization(s.zone, *s.mesh, 2);
   d->prepare(*s.state, 1.0);
