@@ -408,10 +408,11 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
   mpiComm_ = rawMpiComm(u.getMap()->getComm());
   if (controls_ && !start.fromState) controls_->seedInitialStatuses(u, start.time);
   if (!start.resume) {
-    if (start.increment && start.load) extrapolation_.restore(*start.increment, *start.load);
+    const StepContinuation& c = start.continuation;
+    if (c.increment && c.load) extrapolation_.restore(*c.increment, *c.load);
     slowDynamics_.start(u, start.time);
-    if (start.slowDynamicsPrevious)
-      slowDynamics_.restorePrevious(*start.slowDynamicsPrevious, start.slowDynamicsStep);
+    if (c.slowDynamicsPrevious)
+      slowDynamics_.restorePrevious(*c.slowDynamicsPrevious, c.slowDynamicsStep);
   }
   loadReference_ = start.loadReference;
   // However the run ends, what runs after it (outputs, diagnostics) sees the static system.
@@ -567,12 +568,12 @@ RunReport StaticSolver::run(Vector& u, const StepCallback& onStep,
       continue;
     }
     extrapolation_.record(u, *x);
-    sr.increment = extrapolation_.increment();
-    sr.load = extrapolation_.load();
+    sr.continuation.increment = extrapolation_.increment();
+    sr.continuation.load = extrapolation_.load();
     u.assign(*x);
     slowDynamics_.commit(problem_, u, sr.time);
-    sr.slowDynamicsPrevious = slowDynamics_.previousState();
-    sr.slowDynamicsStep = slowDynamics_.previousStep();
+    sr.continuation.slowDynamicsPrevious = slowDynamics_.previousState();
+    sr.continuation.slowDynamicsStep = slowDynamics_.previousStep();
     problem_.commitState(u, sr.time);
     ++report.steps;
     sr.nextStepSize = cuts == 0 ? std::min(2 * dt, nominal) : dt;

@@ -179,17 +179,13 @@ struct RunStart {
   double stepSize = 0;
   bool fromState = false;
   RunTotals totals;  // the counts so far: a killed run continued counts the whole run
-  // The last step's increment and plain start's residual (StepReport::increment, load), when
-  // the checkpoint kept them: the first step extrapolates as the uninterrupted run's did.
-  Teuchos::RCP<const Vector> increment, load;
+  // The last step's continuation (StepReport::continuation), when the checkpoint kept it: the
+  // first step extrapolates, and slow dynamics predicts, as the uninterrupted run's did.
+  StepContinuation continuation;
   // The last loaded step's reference residual (StepReport::loadReference; 0: none yet).
   double loadReference = 0;
-  // Slow dynamics' state before the last step's, and that step's length (StepReport::
-  // slowDynamicsPrevious, slowDynamicsStep), when the checkpoint kept them.
-  Teuchos::RCP<const Vector> slowDynamicsPrevious;
-  double slowDynamicsStep = 0;
   // > 0: the run pauses after this many converged steps (RunReport::paused); a run started
-  // from its last step's report (StepReport: time, nextStepSize, increment, load,
+  // from its last step's report (StepReport: time, nextStepSize, continuation,
   // loadReference, run) goes on as the uninterrupted run would.
   int maxSteps = 0;
   // The same StaticSolver's earlier run paused here (maxSteps): its own state goes on (slow

@@ -29,6 +29,17 @@ struct RunTotals {
   CyclingCounts cycling{};
 };
 
+// What a run continued after a step needs to start its next step as the uninterrupted run
+// would (a checkpoint's last_step, a paused run's state): the step's increment and its plain
+// start's residual (Newton/Extrapolation; null when the run does not extrapolate), and slow
+// dynamics' state before the step with the step's length (null without slow dynamics;
+// SlowDynamics::restorePrevious).
+struct StepContinuation {
+  Teuchos::RCP<const Vector> increment, load;
+  Teuchos::RCP<const Vector> slowDynamicsPrevious;
+  double slowDynamicsStep = 0;
+};
+
 struct StepReport {
   int step = 0;  // 1-based, converged steps
   double time = 0;
@@ -49,14 +60,7 @@ struct StepReport {
   double residual = 0;
   CyclingCounts cycling{};
   PhaseSeconds seconds;
-  // The step's increment and its plain start's residual (Newton/Extrapolation), for a
-  // checkpoint; null when the run does not extrapolate.
-  Teuchos::RCP<const Vector> increment, load;
-  // Slow dynamics' state before this step's and this step's length (null without slow
-  // dynamics): what a continued run needs for its next predictor (SlowDynamics::
-  // restorePrevious).
-  Teuchos::RCP<const Vector> slowDynamicsPrevious;
-  double slowDynamicsStep = 0;
+  StepContinuation continuation;  // for a checkpoint, or the next step of a paused run
 };
 
 }  // namespace contactlab

@@ -142,7 +142,7 @@ std::string sceneHash(const Teuchos::ParameterList& scene) {
 }
 
 void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const Problem& problem,
-                     ContactProblem* contact, const Vector& x, const LastStep& last) {
+                     ContactProblem* contact, const Vector& x, const StepContinuation& last) {
   // Collective gathers first; then rank 0 writes, and every rank learns whether it could. The
   // last step's vectors before the history, whose gather leaves x in the surface state.
   const bool hasLast = !last.increment.is_null() && !last.load.is_null();
@@ -236,7 +236,7 @@ CheckpointInfo readCheckpointInfo(const std::string& path) {
 }
 
 CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, ContactProblem* contact,
-                                 Vector& x, bool continueTime, LastStep* last) {
+                                 Vector& x, bool continueTime, StepContinuation* last) {
   const Mesh& mesh = *problem.model().mesh;
   const Comm& comm = *problem.dofs().comm();
   // Reading and checking: every rank reads the same file, and agrees on any failure.

@@ -40,17 +40,6 @@ struct CheckpointInfo {
   RunTotals totals;
 };
 
-// The last converged step's increment and its plain start's residual, on the system's map
-// (StepReport::increment, load: Newton/Extrapolation), when the run kept them: a run continued
-// from the checkpoint starts its next step as the uninterrupted run does.
-struct LastStep {
-  Teuchos::RCP<const Vector> increment, load;
-  // Slow dynamics' state before the last step's, and the step's length (StepReport::
-  // slowDynamicsPrevious, slowDynamicsStep; null without slow dynamics).
-  Teuchos::RCP<const Vector> slowDynamicsPrevious;
-  double slowDynamicsStep = 0;
-};
-
 // The file in a run's output folder.
 constexpr const char* kCheckpointFile = "checkpoint.h5";
 std::string checkpointPath(const std::string& folder);
@@ -61,7 +50,7 @@ std::string sceneHash(const Teuchos::ParameterList& scene);
 
 // Collective: gathers the converged state x (after commitState) on rank 0, which writes `path`.
 void writeCheckpoint(const std::string& path, const CheckpointInfo& info, const Problem& problem,
-                     ContactProblem* contact, const Vector& x, const LastStep& last = {});
+                     ContactProblem* contact, const Vector& x, const StepContinuation& last = {});
 
 // Reads what a checkpoint says besides the state (any rank). Throws InputError for a missing or
 // unreadable file.
@@ -71,9 +60,10 @@ CheckpointInfo readCheckpointInfo(const std::string& path);
 // unknowns), the problem's elements and the contact points. Throws InputError, the same on every
 // rank, when the file is missing or unreadable or its mesh, elements or contact points are not
 // this model's. continueTime false: the contact history's converged time is 0 (Initial State
-// Time: zero), else the checkpoint's. `last`, when given, receives the checkpoint's LastStep
-// (null vectors where it has none).
+// Time: zero), else the checkpoint's. `last`, when given, receives the checkpoint's last step's
+// StepContinuation (null vectors where it has none).
 CheckpointInfo restoreCheckpoint(const std::string& path, Problem& problem, ContactProblem* contact,
-                                 Vector& x, bool continueTime = true, LastStep* last = nullptr);
+                                 Vector& x, bool continueTime = true,
+                                 StepContinuation* last = nullptr);
 
 }  // namespace contactlab

@@ -223,7 +223,7 @@ void Simulation::restoreStartingPoint() {
   const bool continueTime = restart_ || sm_.initialStateContinuesTime;
   const std::string what =
       restart_ ? "--restart " + options_.restartDirectory : sm_.scene.path + ": Initial State/From";
-  LastStep last;
+  StepContinuation last;
   try {
     checkpointInfo_ =
         restoreCheckpoint(checkpoint_, *problem_, contact_.get(), *x_, continueTime, &last);
@@ -235,10 +235,7 @@ void Simulation::restoreStartingPoint() {
     // The same time line as the run that wrote it: its next step starts as it would have.
     next_.time = checkpointInfo_.time;
     next_.step = checkpointInfo_.step;
-    next_.increment = last.increment;
-    next_.load = last.load;
-    next_.slowDynamicsPrevious = last.slowDynamicsPrevious;
-    next_.slowDynamicsStep = last.slowDynamicsStep;
+    next_.continuation = last;
     next_.loadReference = checkpointInfo_.loadReference;
     if (restart_) {  // the same run: its cut step size and its counts go on
       next_.stepSize = checkpointInfo_.stepSize;
@@ -329,11 +326,8 @@ void Simulation::advance(int maxSteps) {
     next_.stepSize = s.nextStepSize;
     next_.fromState = true;
     next_.totals = s.run;
-    next_.increment = s.increment;
-    next_.load = s.load;
+    next_.continuation = s.continuation;
     next_.loadReference = s.loadReference;
-    next_.slowDynamicsPrevious = s.slowDynamicsPrevious;
-    next_.slowDynamicsStep = s.slowDynamicsStep;
   };
   auto onIteration = [&](const StaticSolver::IterateProgress& p) {
     outputs_->iteration(p, elapsed());

@@ -125,7 +125,7 @@ void RunOutputs::step(const StepReport& s, const Vector& state, const ContactRes
   const bool last = s.time >= sm_.solverOptions.endTime;
   if (sm_.checkpointEvery > 0 && (s.step % sm_.checkpointEvery == 0 || last))
     writeCheckpoint(folder_.path(kCheckpointFile), checkpoint_, problem_, contact_, state,
-                    {s.increment, s.load, s.slowDynamicsPrevious, s.slowDynamicsStep});
+                    s.continuation);
   killAfterStepForTests(s.step, *comm_);
 }
 
