@@ -71,6 +71,7 @@ class Simulation:
                               str(restart) if restart is not None else "", bool(validate),
                               bool(critical_mu))
         self._summary = None
+        self._history = None  # the history's arrays, built once per converged step
 
     def on_iteration(self, observer):
         """observer(progress) after each Newton iterate (step, time, iteration, residual, target,
@@ -80,10 +81,12 @@ class Simulation:
 
     def step(self):
         """One converged load step; False once the run has ended (report says how)."""
+        self._history = None
         return self._s.step()
 
     def run(self):
         """The steps left, to End Time or the first failure; returns report."""
+        self._history = None
         return self._s.run()
 
     def finish(self):
@@ -113,8 +116,14 @@ class Simulation:
     def history(self):
         """Per converged step, as steps.csv's columns of the same names: step, time,
         newton_iterations, cuts, residual, normal_force (sum w p), contact_force (n x 3, the
-        sum of w (p n + t) on the slave surfaces), contact_points, stick_points, slip_points."""
-        return self._s.history()
+        sum of w (p n + t) on the slave surfaces), contact_points, stick_points, slip_points.
+        Built once per converged step (reading it after every step costs one step's worth); the
+        arrays are read-only, shared by the reads until the next step."""
+        if self._history is None:
+            self._history = self._s.history()
+            for column in self._history.values():
+                column.setflags(write=False)
+        return dict(self._history)
 
     def contact_points(self):
         """The last converged step's contact points: zone, node (ids), x and reference (n x 3),

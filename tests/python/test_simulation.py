@@ -57,6 +57,10 @@ class SimulationTest(unittest.TestCase):
             while stepped.step():
                 times.append(stepped.time)
                 self.assertEqual(len(stepped.history["time"]), len(times))
+                # Built once per step: the reads until the next step share the arrays, which
+                # are read-only.
+                self.assertIs(stepped.history["normal_force"], stepped.history["normal_force"])
+                self.assertFalse(stepped.history["time"].flags.writeable)
             self.assertTrue(stepped.ended)
             self.assertFalse(stepped.step())  # nothing more to do
             self.assertEqual(stepped.finish(), 0)
