@@ -194,7 +194,8 @@ void readSymmetries(const ParameterList& symmetry, SolidModel& model, const std:
   }
 }
 
-void readTies(const ParameterList& ties, SolidModel& model, const std::string& where) {
+void readTies(const ParameterList& ties, SolidModel& model, double endTime,
+              const std::string& where) {
   const int dim = model.mesh->dim;
   for (auto it = ties.begin(); it != ties.end(); ++it) {
     const std::string path = "Ties/" + ties.name(it);
@@ -207,6 +208,10 @@ void readTies(const ParameterList& ties, SolidModel& model, const std::string& w
       tie.coefficients.push_back(a);
     if (tie.coefficients.empty() && tie.groups.size() == 2) tie.coefficients = {1.0, -1.0};
     tie.components = componentList(t, dim, where, path);
+    tie.value = t.get<double>("Value");
+    if (!std::isfinite(tie.value))
+      throw InputError(where + ": " + path + "/Value must be a finite number");
+    tie.function = loadFunction(t, endTime, where, path);
     model.ties.push_back(tie);
   }
 }
@@ -328,6 +333,7 @@ void addLandingTimes(SceneModel& sm) {
         landing.push_back(k);
   };
   addKinks(sm.model.dirichlet);
+  addKinks(sm.model.ties);
   addKinks(sm.model.surfaceLoads);
   addKinks(sm.model.bodyForces);
   addKinks(sm.model.centrifugalLoads);
@@ -430,7 +436,7 @@ SceneModel loadScene(SceneFile scene, const Teuchos::RCP<const Comm>& comm, Mesh
   model.temperatures = blockTemperatures(p.sublist("Temperature"), model, endTime, where);
   readDirichlet(p.sublist("Dirichlet"), model, endTime, where);
   readSymmetries(p.sublist("Symmetry"), model, where);
-  readTies(p.sublist("Ties"), model, where);
+  readTies(p.sublist("Ties"), model, endTime, where);
   readSprings(p.sublist("Springs"), model, where);
   readLoads(p.sublist("Loads"), model, endTime, where);
   readContactZones(p.sublist("Contact"), sm, where);

@@ -120,18 +120,27 @@ ParameterList tieItem() {
   ParameterList p;
   p.set("Groups", Teuchos::Array<std::string>(),
         "Two or more node groups (boundary physical groups or Point Groups) whose nodes are "
-        "tied: for each component and each matched tuple of nodes, sum_i a_i u(node_i) = 0. "
+        "tied: for each component and each matched tuple of nodes, sum_i a_i u(node_i) = "
+        "Value * Function(t). "
         "Groups of one node tie those nodes; groups of several (the same count in each) are "
         "matched by the translation between their centroids (a coincident interface, periodic "
         "faces). Not on an inclined symmetry plane");
   p.set("Coefficients", Teuchos::Array<double>(),
         "The a_i, one per group (code_aster's COEF_MULT, Abaqus' *EQUATION coefficients); "
-        "empty means [1, -1]: the second group's nodes move with the first's. The right side "
-        "is zero");
+        "empty means [1, -1]: the second group's nodes move with the first's");
   p.set("Components", "xyz",
         "Components tied, each with its own equation: any of x, y, z (e.g. 'y', 'xy'); 'xyz' "
         "means all (x and y in 2D, where z alone is refused)",
         choices({"x", "y", "z", "xy", "xz", "yz", "xyz"}));
+  p.set("Value", 0.0,
+        "The right side of every equation at the end of the load (code_aster's COEF_IMPO): 0 "
+        "ties the nodes; otherwise it prescribes their relative motion (e.g. Coefficients "
+        "[1, -1], Value 0.1: the first group's nodes 0.1 ahead of the second's). A tie with a "
+        "right side must leave a dof to make dependent in each equation: not every dof "
+        "prescribed, not implied by other ties");
+  setTimeFunction(p,
+                  "Time scaling of Value, as a Dirichlet condition's: 'ramp' (the default), "
+                  "'constant' or 'table'");
   return p;
 }
 

@@ -1,6 +1,7 @@
 #include "core/problem/LinearConstraints.hpp"
 
 #include "base/InputError.hpp"
+#include "base/NumberText.hpp"
 #include "core/materials/Tensor3.hpp"
 #include "core/problem/DofMap.hpp"
 
@@ -29,6 +30,27 @@ std::string vectorText(const std::array<double, 3>& v) {
 std::ptrdiff_t find(const LO* begin, const LO* end, LO col) {
   const LO* it = std::find(begin, end, col);
   return it == end ? -1 : it - begin;
+}
+
+// A tie with a right side whose equation made nothing dependent: its dofs are all prescribed,
+// or it follows from other equations, and the right sides may then contradict one another.
+void refuseRedundantRightSides(const SolidModel& model, const std::vector<TieEquation>& ties,
+                               const std::vector<RedundantEquation>& redundant) {
+  for (const RedundantEquation& r : redundant)
+    for (const auto& [e, w] : r.combination) {
+      const TieCondition& tie = model.ties[ties[e].tie];
+      if (tie.value == 0 || w == 0) continue;
+      const TieCondition& own = model.ties[ties[r.equation].tie];
+      const MeshDof& dof = ties[r.equation].dofs.front();
+      throw InputError("tie '" + own.name + "': the equation of node " +
+                       std::to_string(model.mesh->nodeId(dof.first)) + " (component " +
+                       "xyz"[dof.second] +
+                       ") leaves no dof to make dependent (every dof in it is " +
+                       "prescribed, or it follows from other ties' equations), and tie '" +
+                       tie.name + "' has a right side (Value " + numberText(tie.value) +
+                       "), which could contradict them; remove the duplicate tie or the " +
+                       "Dirichlet condition on its nodes");
+    }
 }
 
 }  // namespace
@@ -202,7 +224,7 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
     const GO gidBase = dofs.globalNode(node) * dim_;
     for (std::size_t r = 0; r < pivots.size(); ++r) {
       const int k = pivots[r];
-      Dependent d{owned ? static_cast<LO>(overlap * dim_ + k) : LO(-1), gidBase + k, {}};
+      Dependent d{owned ? static_cast<LO>(overlap * dim_ + k) : LO(-1), gidBase + k, {}, {}};
       for (int j = 0; j < dim_; ++j) {
         if (std::find(pivots.begin(), pivots.end(), j) != pivots.end() || rows[r][j] == 0) continue;
         d.terms.push_back({owned ? static_cast<LO>(overlap * dim_ + j) : LO(-1), gidBase + j,
@@ -243,14 +265,20 @@ void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
   };
   const auto gidOf = [&](const MeshDof& d) { return dofs.globalNode(d.first) * dim_ + d.second; };
   numTies_ = model.ties.size();
-  for (const TiedDof& tiedDof : eliminateTies(ties, fixed)) {
-    Dependent d{lidOf(tiedDof.dof), gidOf(tiedDof.dof), {}};
-    if (d.lid >= 0)
-      for (const auto& [e, w] : tiedDof.equations) {
-        const int tie = ties[e].tie;
+  for (const TieCondition& tie : model.ties)
+    tieFunctions_.push_back(tie.function);
+  std::vector<RedundantEquation> redundant;
+  const std::vector<TiedDof> dependents = eliminateTies(ties, fixed, &redundant);
+  refuseRedundantRightSides(model, ties, redundant);
+  for (const TiedDof& tiedDof : dependents) {
+    Dependent d{lidOf(tiedDof.dof), gidOf(tiedDof.dof), {}, {}};
+    for (const auto& [e, w] : tiedDof.equations) {
+      const int tie = ties[e].tie;
+      if (d.lid >= 0)
         tieForceTerms_.push_back(
             {d.lid, tie, ties[e].dofs.front().second, w * model.ties[tie].coefficients.front()});
-      }
+      if (model.ties[tie].value != 0) d.rightSide.push_back({tie, w * model.ties[tie].value});
+    }
     auto& partners = partners_[tiedDof.dof.first];
     for (const auto& [dof, c] : tiedDof.terms) {
       d.terms.push_back({lidOf(dof), gidOf(dof), c, fixed.count(dof) > 0});
@@ -289,6 +317,14 @@ std::vector<std::array<double, 3>> LinearConstraints::planeNormals(std::int64_t 
   const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
   if (it == nodes_.end() || *it != node) return {};
   return normals_[static_cast<std::size_t>(it - nodes_.begin())];
+}
+
+void LinearConstraints::impose(double t, double* owned) const {
+  project(owned);
+  for (const Dependent& d : all_)
+    if (d.lid >= 0)
+      for (const auto& [tie, weight] : d.rightSide)
+        owned[d.lid] += weight * tieFunctions_[static_cast<std::size_t>(tie)](t);
 }
 
 void LinearConstraints::project(double* owned) const {

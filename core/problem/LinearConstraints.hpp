@@ -1,18 +1,19 @@
 #pragma once
-// Dofs eliminated by homogeneous linear constraints: symmetry (roller) conditions n . u = 0 on
-// planes that are not normal to an axis, and ties between the dofs of nodes (TieCondition,
-// TieEquations.hpp). Each dependent dof k is written in independent ones,
-// u_k = sum_j c_kj u_j, so u = T v with v the independent dofs. A symmetry plane makes one
+// Dofs eliminated by linear constraints: symmetry (roller) conditions n . u = 0 on planes that
+// are not normal to an axis, and ties between the dofs of nodes (TieCondition,
+// TieEquations.hpp), whose right side g(t) may be nonzero. Each dependent dof k is written in
+// independent ones, u_k = sum_j c_kj u_j + b_k(t), so u = T v + b(t) with v the independent
+// dofs; b is nonzero only on the dependents of ties with a right side. A symmetry plane makes one
 // component per node dependent (two where a node lies on two planes in 3D), on the node's
 // other components; a tie's equation one dof, on the other nodes' dofs.
 //
 // The system solved is T^T K T v = -T^T R, which stays symmetric when K is: reduce() combines
 // the dependent rows and columns of an assembled tangent into their partners' and leaves a unit
-// row and column in their place (zero residual there, like a Dirichlet dof), and project()
-// writes the dependent components back from the others. A Newton increment is completed by
-// project() after each linear solve (NonlinearSystem::completeIncrement): the constraints are
-// linear and homogeneous, so every iterate then satisfies them exactly and the Newton step is
-// the constrained problem's own.
+// row and column in their place (zero residual there, like a Dirichlet dof). impose(t) writes
+// the dependent components of a state from the others with b(t), as the Dirichlet values are
+// set at a step's start (Problem::applyDirichlet); project() writes those of an increment
+// without b, after each linear solve (NonlinearSystem::completeIncrement): every iterate then
+// satisfies the constraints exactly and the Newton step is the constrained problem's own.
 //
 // A tie's dependent moves its row and column to other nodes: the matrix graph must hold them
 // (partnerNodes: MatrixAssembler widens each element holding a dependent node; partnerDofs:
@@ -74,9 +75,12 @@ class LinearConstraints {
   // imposed as Dirichlet conditions (model.axisSymmetries).
   std::vector<std::array<double, 3>> allPlaneNormals(std::int64_t node) const;
 
-  // u_k = sum_j c_kj u_j on this rank's dependent components. `owned`: an owned vector whose
-  // first entries are the solid's owned dofs (the solid's or the contact problem's).
+  // u_k = sum_j c_kj u_j on this rank's dependent components (an increment). `owned`: an owned
+  // vector whose first entries are the solid's owned dofs (the solid's or the contact
+  // problem's).
   void project(double* owned) const;
+  // u_k = sum_j c_kj u_j + b_k(t): a state at time t, the ties' right sides included.
+  void impose(double t, double* owned) const;
   // T^T K T on a fill-complete matrix whose first rows are the solid's owned dofs and whose
   // displacement columns carry the solid's global dof ids, T^T R on a residual shaped alike
   // (either may be null). Collective when a matrix is given.
@@ -101,12 +105,15 @@ class LinearConstraints {
     LO lid;  // owned LID (-1: another rank's node)
     GO gid;
     std::vector<Term> terms;
+    // b_k(t) = sum of weight * (the tie's function at t), by model.ties index (empty: 0).
+    std::vector<std::pair<int, double>> rightSide;
   };
   struct OwnedNode {
     LO firstLid;                                                // LID of component 0
     std::vector<std::pair<int, std::array<double, 3>>> planes;  // (condition, unit normal)
   };
   // The ties' dependents (after the planes': a tied node on an inclined plane is refused).
+  // Throws InputError for a tie with a right side whose equation is prescribed or implied.
   void addTies(const SolidModel& model, const DofMap& dofs, const std::vector<TieEquation>& ties,
                const std::set<MeshDof>& fixed);
 
@@ -127,6 +134,7 @@ class LinearConstraints {
     double w;  // the force's component += w R(lid)
   };
   std::vector<TieForceTerm> tieForceTerms_;
+  std::vector<LoadFunction> tieFunctions_;  // by model.ties index
   std::size_t numTies_ = 0;
   int anywhere_ = 0;
   Teuchos::RCP<const Comm> comm_;

@@ -112,6 +112,10 @@ struct TieCondition {
   std::vector<std::string> groups;   // boundary physical groups or point groups
   std::vector<double> coefficients;  // one per group, not all zero
   std::vector<int> components;       // 0 = x, 1 = y, 2 = z
+  // The right side of each equation, value * function(t) (code_aster's COEF_IMPO): 0 ties the
+  // nodes; otherwise it prescribes their relative motion, e.g. u_a - u_b = an opening.
+  double value = 0.0;
+  LoadFunction function;
 };
 
 // A discrete spring from each node of a group to ground: in every listed component, a force

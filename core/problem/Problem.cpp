@@ -358,7 +358,7 @@ void Problem::applyDirichlet(double t, Vector& u) const {
     data[c.lid] =
         bc.field ? bc.field(&mesh.coords[3 * c.node], c.component, t) : bc.value * bc.function(t);
   }
-  linearConstraints_->project(data.getRawPtr());
+  linearConstraints_->impose(t, data.getRawPtr());
 }
 
 void Problem::completeIncrement(Vector& dx) const {

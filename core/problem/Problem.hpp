@@ -88,7 +88,7 @@ class Problem : public NonlinearSystem {
   const Teuchos::RCP<Matrix>& tangent() const override;
 
   // Sets the prescribed values at time t in u (owned entries), and the dofs an inclined
-  // symmetry plane or a tie makes dependent.
+  // symmetry plane or a tie makes dependent (with the ties' right sides at t).
   void applyDirichlet(double t, Vector& u) const override;
   // Writes the dependent components of an increment from the others (LinearConstraints).
   void completeIncrement(Vector& dx) const override;

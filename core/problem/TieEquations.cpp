@@ -133,7 +133,9 @@ std::vector<std::vector<std::int64_t>> matchedNodes(const Mesh& mesh, const TieC
 // the residual at the dependents through those combinations (TiedDof::equations).
 class GaussJordan {
  public:
-  void add(const TieEquation& equation, int index, const std::set<MeshDof>& fixed) {
+  // Whether the equation made a dof dependent; when not, `redundant` (if given) receives it.
+  bool add(const TieEquation& equation, int index, const std::set<MeshDof>& fixed,
+           std::vector<RedundantEquation>* redundant) {
     // The equation with the dependents found so far substituted, and its combination.
     Row row;
     Combination combination{{index, 1.0}};
@@ -158,7 +160,10 @@ class GaussJordan {
       if (!fixed.count(row[i].first) &&
           (pivot == row.size() || std::abs(row[i].second) > std::abs(row[pivot].second)))
         pivot = i;
-    if (pivot == row.size()) return;  // prescribed, or implied by the earlier equations
+    if (pivot == row.size()) {  // prescribed, or implied by the earlier equations
+      if (redundant) redundant->push_back({index, combination});
+      return false;
+    }
     const MeshDof p = row[pivot].first;
     const double a = row[pivot].second;
     Row expression;
@@ -172,6 +177,7 @@ class GaussJordan {
     dependent_[p] = expression;
     combination_[p] = combination;
     order_.push_back(p);
+    return true;
   }
 
   std::vector<TiedDof> dependents() const {
@@ -291,10 +297,11 @@ std::vector<std::vector<std::int64_t>> linkedNodes(const std::vector<TieEquation
 }
 
 std::vector<TiedDof> eliminateTies(const std::vector<TieEquation>& equations,
-                                   const std::set<MeshDof>& fixed) {
+                                   const std::set<MeshDof>& fixed,
+                                   std::vector<RedundantEquation>* redundant) {
   GaussJordan elimination;
   for (std::size_t e = 0; e < equations.size(); ++e)
-    elimination.add(equations[e], static_cast<int>(e), fixed);
+    elimination.add(equations[e], static_cast<int>(e), fixed, redundant);
   return elimination.dependents();
 }
 

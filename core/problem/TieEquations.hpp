@@ -2,7 +2,8 @@
 // The equations of a model's ties (TieCondition, Loads.hpp) and their elimination.
 //
 // tieEquations() reads each tie's groups and matches their nodes into tuples; every tuple and
-// listed component gives one homogeneous equation sum_i a_i u(node_i, c) = 0. eliminateTies()
+// listed component gives one equation sum_i a_i u(node_i, c) = g(t), g the tie's right side
+// (TieCondition::value and function; 0: homogeneous). eliminateTies()
 // brings the equations to reduced row echelon form by Gauss-Jordan elimination: each equation
 // makes one dof dependent (its largest coefficient among the dofs that no Dirichlet condition
 // fixes and no earlier equation made dependent; the first such on a tie) and every dependent is
@@ -24,13 +25,14 @@ using MeshDof = std::pair<std::int64_t, int>;
 struct TieEquation {
   int tie = 0;  // index in model.ties
   std::vector<MeshDof> dofs;
-  std::vector<double> coefficients;  // sum_i coefficients[i] u(dofs[i]) = 0
+  std::vector<double> coefficients;  // sum_i coefficients[i] u(dofs[i]) = the tie's right side
 };
 
-// u(dof) = sum_j coefficient_j u(term_j), the terms independent dofs. `equations`: the
-// reduced row of this dependent as a combination of the original equations (by index), so that
-// the equations' multipliers, with the residual R balancing the ties' forces
-// (R = A^T mu on the tied dofs), are mu_e = sum over dependents d of w_de R(d).
+// u(dof) = sum_j coefficient_j u(term_j) + sum_e w_de g_e, the terms independent dofs.
+// `equations`: the reduced row of this dependent as a combination of the original equations
+// (by index, w_de), which gives both its right side (sum_e w_de g_e, g_e equation e's) and the
+// equations' multipliers: with the residual R balancing the ties' forces (R = A^T mu on the
+// tied dofs), mu_e = sum over dependents d of w_de R(d).
 struct TiedDof {
   MeshDof dof;
   std::vector<std::pair<MeshDof, double>> terms;
@@ -46,8 +48,18 @@ std::vector<TieEquation> tieEquations(const SolidModel& model);
 // rank must own together (DofMap).
 std::vector<std::vector<std::int64_t>> linkedNodes(const std::vector<TieEquation>& equations);
 
+// An equation that made no dof dependent (every dof prescribed, or implied by earlier
+// equations), and the equations (by index, with weights; itself with 1) whose combination its
+// reduced row is: with right sides, that combination of them must vanish.
+struct RedundantEquation {
+  int equation = 0;
+  std::vector<std::pair<int, double>> combination;
+};
+
 // The dependents of the equations; `fixed`: the dofs Dirichlet conditions prescribe.
+// `redundant`, when given, receives the equations that made nothing dependent.
 std::vector<TiedDof> eliminateTies(const std::vector<TieEquation>& equations,
-                                   const std::set<MeshDof>& fixed);
+                                   const std::set<MeshDof>& fixed,
+                                   std::vector<RedundantEquation>* redundant = nullptr);
 
 }  // namespace contactlab

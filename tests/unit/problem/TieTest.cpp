@@ -13,6 +13,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <cmath>
+#include <functional>
 #include <gtest/gtest.h>
 #include <set>
 
@@ -185,6 +186,82 @@ TEST(Ties, KeepAGeneralEquation) {
   const double clamp = problem.reactions()[0].force[0], f = problem.reactions()[1].force[0];
   EXPECT_GT(std::abs(f), 0.05);
   EXPECT_NEAR(f, clamp + 1.0, 1e-9);
+}
+
+// A right side: the column's two blocks, clamped at the foot and the head, with their interface
+// nodes held a shim's thickness apart, u(upper-bottom) - u(lower-top) = delta along y (Value
+// -delta on [1, -1] from lower-top). Mirror symmetry about the interface puts each side at
+// delta / 2, the blocks in equal compression: the foot's and the head's reactions are equal and
+// opposite, and the tie's force is the foot's. Half way along the ramp, half the shim.
+TEST(Ties, PrescribeARelativeMotion) {
+  auto comm = Tpetra::getDefaultComm();
+  const double delta = 0.01;
+  SolidModel model = shearedColumn("quad4", true, false);
+  model.pointLoads.clear();
+  model.ties[0].components = {0};
+  TieCondition shim = model.ties[0];
+  shim.name = "shim";
+  shim.components = {1};
+  shim.value = -delta;
+  model.ties.push_back(shim);
+  DirichletCondition clampHead = model.dirichlet[0];
+  clampHead.name = clampHead.group = "upper-top";
+  model.dirichlet.push_back(clampHead);
+  Problem problem(std::move(model), comm);
+  const Mesh& m = *problem.model().mesh;
+  const auto lower = m.boundaryNodes("lower-top"), upper = m.boundaryNodes("upper-bottom");
+  ASSERT_EQ(lower.size(), upper.size());
+  auto pairs = [&](const Vector& u, const std::function<void(const std::array<double, 3>&,
+                                                             const std::array<double, 3>&)>& f) {
+    int n = 0;
+    for (std::int64_t l : lower)
+      for (std::int64_t r : upper)
+        if (std::abs(m.coords[3 * l] - m.coords[3 * r]) < 1e-12)
+          f(problem.nodeDisplacement(u, l), problem.nodeDisplacement(u, r)), ++n;
+    EXPECT_EQ(n, static_cast<int>(lower.size()));
+  };
+  // The state at t = 0.5 before any solve: the dependents carry half the right side.
+  auto start = problem.createVector();
+  problem.applyDirichlet(0.5, *start);
+  pairs(*start, [&](const auto& ul, const auto& uu) {
+    EXPECT_NEAR(uu[1] - ul[1], 0.5 * delta, 1e-15);
+    EXPECT_EQ(uu[0] - ul[0], 0.0);
+  });
+  const StaticRun run = runWithMumps(problem, 3);
+  ASSERT_TRUE(run.report.converged) << run.report.message;
+  pairs(*run.u, [&](const auto& ul, const auto& uu) {
+    EXPECT_NEAR(uu[1] - ul[1], delta, 1e-14);
+    EXPECT_NEAR(ul[1], -0.5 * delta, 1e-10);
+    EXPECT_NEAR(uu[1], 0.5 * delta, 1e-10);
+    EXPECT_NEAR(uu[0], ul[0], 1e-15);
+  });
+  const auto& reactions = problem.reactions();  // foot, head, interface (x), shim (y)
+  ASSERT_EQ(reactions.size(), 4u);
+  const double foot = reactions[0].force[1], head = reactions[1].force[1];
+  EXPECT_GT(std::abs(foot), 1.0);  // E = 1e3, a 1 % strain over a width of 1, lateral restraint
+  EXPECT_NEAR(foot, -head, 1e-9 * std::abs(foot));
+  EXPECT_NEAR(std::abs(reactions[3].force[1]), std::abs(foot), 1e-9 * std::abs(foot));
+}
+
+// A right side on an equation that makes nothing dependent (the same tie twice, or a tie whose
+// every dof is prescribed) could contradict the others: refused, either order.
+TEST(Ties, RefuseARightSideWithNothingToEliminate) {
+  for (const bool valueFirst : {true, false}) {
+    SolidModel model = shearedColumn("quad4", true, false);
+    TieCondition twice = model.ties[0];
+    twice.name = "twice";
+    (valueFirst ? model.ties[0] : twice).value = 0.1;
+    model.ties.push_back(twice);
+    expectRefused(std::move(model), "leaves no dof to make dependent");
+  }
+  SolidModel held = shearedColumn("quad4", true, false);
+  held.ties[0].value = 0.1;
+  for (const char* group : {"lower-top", "upper-bottom"}) {
+    DirichletCondition d = held.dirichlet[0];
+    d.name = d.group = group;
+    held.dirichlet.push_back(d);
+  }
+  expectRefused(std::move(held), "has a right side");
 }
 
 // Gauss-Jordan over the equations: chains resolve to independent dofs, a prescribed dof is never
