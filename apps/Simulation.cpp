@@ -429,4 +429,8 @@ std::vector<double> Simulation::displacement() const {
   return problem_->gatherDisplacements(contact_ ? *contact_->displacement(*x_) : *x_);
 }
 
+NodalFields Simulation::nodalFields() const {
+  return problem_->nodalFields(contact_ ? *contact_->displacement(*x_) : *x_, next_.time);
+}
+
 }  // namespace contactlab

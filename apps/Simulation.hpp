@@ -26,6 +26,7 @@ class LinearSolver;
 class LinearSolverPool;
 class MeshCache;
 class Problem;
+struct NodalFields;
 class RunOutputs;
 class StaticRun;
 
@@ -99,6 +100,9 @@ class Simulation {
   // The last converged step's nodal displacements, dim per node, in the mesh's node order, on
   // rank 0 (empty on the others). Collective.
   std::vector<double> displacement() const;
+  // The last converged step's nodal stresses and plastic strains (Problem::nodalFields), on
+  // rank 0. Collective.
+  NodalFields nodalFields() const;
 
   const SceneModel& scene() const { return sm_; }
   const Problem& problem() const { return *problem_; }

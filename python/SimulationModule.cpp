@@ -251,6 +251,14 @@ PYBIND11_MODULE(_contactlab, m) {
            [](const SimulationHandle& h) {
              return matrix(h->displacement(), static_cast<std::size_t>(h->problem().dim()));
            })
+      .def("nodal_fields",
+           [](const SimulationHandle& h) {
+             const NodalFields f = h->nodalFields();
+             py::dict d;
+             d["stress"] = matrix(f.stress, 6);
+             if (!f.plasticStrain.empty()) d["equivalent_plastic_strain"] = column(f.plasticStrain);
+             return d;
+           })
       .def("coordinates",
            [](const SimulationHandle& h) { return matrix(h->scene().model.mesh->coords, 3); })
       .def("node_ids",

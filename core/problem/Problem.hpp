@@ -46,6 +46,12 @@ struct DisplacementErrors {
   double energyExact = 0;
 };
 
+// Fields at the mesh nodes (Problem::nodalFields).
+struct NodalFields {
+  std::vector<double> stress;         // 6 per node, Cauchy, Voigt order xx yy zz xy yz xz
+  std::vector<double> plasticStrain;  // 1 per node; empty without internal variables
+};
+
 // The internal variables' state over the model (collective), for summary.json.
 struct MaterialStateSummary {
   bool plasticity = false;           // some block's material has internal variables
@@ -152,6 +158,10 @@ class Problem : public NonlinearSystem {
   // temperatures a cell field temperature, for the writers.
   // Stresses at the block temperatures of time t (the time u converged at).
   MeshPiece outputPiece(const Vector& u, double t) const;
+  // Nodal averages of the element averages over every element around a node (the cell fields
+  // of outputPiece, smoothed), for every mesh node in mesh order, on rank 0 (empty on the
+  // others; NaN at a node without elements). Collective.
+  NodalFields nodalFields(const Vector& u, double t) const;
   MaterialStateSummary materialState() const;
   // Errors against an exact displacement u(x) and gradient du_i/dx_j (grad[i * 3 + j]),
   // integrated with a rule two degrees above the element's order (collective).
@@ -192,6 +202,8 @@ class Problem : public NonlinearSystem {
     std::vector<double> stiffness;
   };
   void checkModel() const;
+  // The element's equivalent plastic strain, averaged over its points (converged state).
+  double elementPlasticStrain(const LocalElement& e) const;
   ElementSetting elementSetting(int block) const;
   void checkElementGeometry() const;
   void gatherCoordinates(const std::vector<int>& overlapNodes, std::vector<double>& x) const;

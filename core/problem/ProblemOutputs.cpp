@@ -1,5 +1,6 @@
 // Problem's outputs: the fields written per step, the material-state summary, errors against an
 // exact solution and values at a mesh node. Read-only: none changes the converged state.
+#include "base/GatherOnRoot.hpp"
 #include "core/fem/IsoparametricMap.hpp"
 #include "core/fem/QuadratureRule.hpp"
 #include "core/fem/ReferenceElement.hpp"
@@ -61,6 +62,65 @@ std::array<double, 6> Problem::elementStress(std::size_t index, const Vector& uO
   return average;
 }
 
+double Problem::elementPlasticStrain(const LocalElement& e) const {
+  if (e.stateOld.empty()) return 0.0;
+  const Material& law = *blockMaterial_[e.block];
+  const int nq = static_cast<int>(e.stateOld.size()) / law.stateSize();
+  double sum = 0;
+  for (int q = 0; q < nq; ++q)
+    sum += law.equivalentPlasticStrain(&e.stateOld[q * law.stateSize()]);
+  return sum / nq;
+}
+
+NodalFields Problem::nodalFields(const Vector& u, double t) const {
+  // Per node: the sums of its elements' stresses (and plastic strains) and their count, on the
+  // overlap map's rows of component 0, added into the owned rows, then gathered on rank 0.
+  const int d = dim();
+  const bool plasticity = model_.hasInternalVariables();
+  const int width = plasticity ? 8 : 7;
+  MultiVector overlap(dofs_->overlapMap(), width), owned(dofs_->ownedMap(), width);
+  auto uOverlap = overlapCopy(u);
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto s = elementStress(i, *uOverlap, t);
+    const double plastic = plasticity ? elementPlasticStrain(elements_[i]) : 0.0;
+    for (int a : elements_[i].nodes) {
+      const LO row = static_cast<LO>(a * d);
+      for (int k = 0; k < 6; ++k)
+        overlap.sumIntoLocalValue(row, k, s[k]);
+      if (plasticity) overlap.sumIntoLocalValue(row, 6, plastic);
+      overlap.sumIntoLocalValue(row, width - 1, 1.0);
+    }
+  }
+  owned.doExport(overlap, *importer_, Tpetra::ADD);
+  const std::size_t ownedNodes = dofs_->numOwnedNodes();
+  std::vector<std::int64_t> nodes(dofs_->overlapNodes().begin(),
+                                  dofs_->overlapNodes().begin() + ownedNodes);
+  std::vector<double> values(ownedNodes * width);
+  for (int k = 0; k < width; ++k) {
+    auto column = owned.getData(k);
+    for (std::size_t a = 0; a < ownedNodes; ++a)
+      values[a * width + k] = column[a * d];
+  }
+  const MPI_Comm comm = rawMpiComm(comm_);
+  const std::vector<std::int64_t> allNodes = gatherOnRoot(nodes, MPI_INT64_T, comm);
+  const std::vector<double> allValues = gatherOnRoot(values, MPI_DOUBLE, comm);
+  NodalFields fields;
+  if (comm_->getRank() != 0) return fields;
+  const std::size_t n = model_.mesh->numNodes();
+  const double nan = std::nan("");
+  fields.stress.assign(6 * n, nan);
+  if (plasticity) fields.plasticStrain.assign(n, nan);
+  for (std::size_t i = 0; i < allNodes.size(); ++i) {
+    const double* v = &allValues[i * width];
+    const double count = v[width - 1];
+    if (count == 0) continue;
+    for (int k = 0; k < 6; ++k)
+      fields.stress[6 * allNodes[i] + k] = v[k] / count;
+    if (plasticity) fields.plasticStrain[allNodes[i]] = v[6] / count;
+  }
+  return fields;
+}
+
 MeshPiece Problem::outputPiece(const Vector& u, double t) const {
   const Mesh& mesh = *model_.mesh;
   const int dim = this->dim();
@@ -94,15 +154,8 @@ MeshPiece Problem::outputPiece(const Vector& u, double t) const {
     vm.values.push_back(std::sqrt(j2));
     material.values.push_back(e.block);
     rank.values.push_back(comm_->getRank());
-    if (!e.stateOld.empty()) {
-      const Material& law = *blockMaterial_[e.block];
-      const int nq = static_cast<int>(e.stateOld.size()) / law.stateSize();
-      double sum = 0;
-      for (int q = 0; q < nq; ++q)
-        sum += law.equivalentPlasticStrain(&e.stateOld[q * law.stateSize()]);
-      plasticStrain[i] = sum / nq;
-      plastic[i] = e.plastic ? 1.0 : 0.0;
-    }
+    plasticStrain[i] = elementPlasticStrain(e);
+    plastic[i] = e.plastic ? 1.0 : 0.0;
   }
   piece.cellData = {std::move(stress), std::move(vm), std::move(material), std::move(rank)};
   // Every rank writes the same fields (a piece without plastic elements writes zeros).

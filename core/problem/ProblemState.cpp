@@ -1,34 +1,13 @@
 // Problem's checkpoint hooks: its converged state gathered on rank 0 in mesh order, and set back
 // from the whole of it on every rank (a run continued on another number of ranks reads the
 // same file).
+#include "base/GatherOnRoot.hpp"
 #include "base/InputError.hpp"
 #include "core/problem/CollectiveError.hpp"
 #include "core/problem/Problem.hpp"
 
-#include <mpi.h>
-
-#include <numeric>
-
 namespace contactlab {
 namespace {
-
-// The concatenation of every rank's `local` on rank 0 (in rank order), empty elsewhere.
-template <class T>
-std::vector<T> gatherOnRoot(const std::vector<T>& local, MPI_Datatype type, MPI_Comm comm) {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const int count = static_cast<int>(local.size());
-  std::vector<int> counts(size), starts(size);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  std::vector<T> all;
-  if (rank == 0) {
-    std::partial_sum(counts.begin(), counts.end() - 1, starts.begin() + 1);
-    all.resize(static_cast<std::size_t>(starts.back()) + counts.back());
-  }
-  MPI_Gatherv(local.data(), count, type, all.data(), counts.data(), starts.data(), type, 0, comm);
-  return all;
-}
 
 std::vector<std::int64_t> blockStarts(const Mesh& mesh) {
   std::vector<std::int64_t> starts(mesh.blocks.size() + 1, 0);

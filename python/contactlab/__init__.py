@@ -21,6 +21,7 @@ import os
 import shutil
 import subprocess
 
+import numpy as np
 import yaml
 
 from ._contactlab import InputError, rank, ranks
@@ -134,6 +135,19 @@ class Simulation:
     def displacement(self):
         """Nodal displacements, numNodes x dim in the mesh's node order (rank 0)."""
         return self._s.displacement()
+
+    def nodal_fields(self):
+        """The last converged step's fields at the nodes (rank 0; empty arrays on the others):
+        the element averages result.vtu holds as cell fields, averaged over the elements around
+        each node. stress (numNodes x 6, Cauchy, xx yy zz xy yz xz), von_mises (numNodes, of
+        that averaged stress), and with plastic blocks equivalent_plastic_strain (numNodes). NaN
+        at a node on no element; the mesh's node order. Collective under mpirun."""
+        fields = self._s.nodal_fields()
+        s = fields["stress"]
+        fields["von_mises"] = np.sqrt(
+            0.5 * ((s[:, 0] - s[:, 1]) ** 2 + (s[:, 1] - s[:, 2]) ** 2 + (s[:, 2] - s[:, 0]) ** 2)
+            + 3.0 * (s[:, 3] ** 2 + s[:, 4] ** 2 + s[:, 5] ** 2))
+        return fields
 
     def coordinates(self):
         """Reference coordinates, numNodes x 3."""

@@ -285,6 +285,33 @@ class SimulationTest(unittest.TestCase):
             with self.assertRaises(RuntimeError):
                 sim.finish()  # once
 
+    def test_nodal_fields_known_states(self):
+        with Folder() as out:
+            # Uniaxial compression (hex27): sigma_zz = -2000 at every node, nothing else.
+            block = contactlab.run(os.path.join(SCENES, "block-compression-3d.yaml"),
+                                   set={"Output/VTK": False}, out=os.path.join(out, "block"),
+                                   quiet=True)
+            f = block.nodal_fields()
+            self.assertEqual(f["stress"].shape, (len(block.node_ids()), 6))
+            self.assertNotIn("equivalent_plastic_strain", f)
+            np.testing.assert_allclose(f["stress"][:, 2], -2000.0, rtol=1e-9)
+            np.testing.assert_allclose(f["stress"][:, [0, 1, 3, 4, 5]], 0.0, atol=1e-7)
+            np.testing.assert_allclose(f["von_mises"], 2000.0, rtol=1e-9)
+            # The plastic strip at Hill's plane-strain limit, homogeneous: sigma_xx = 2 sigma_y /
+            # sqrt 3, sigma_zz half of it, von Mises sigma_y = 250, the plastic strain uniform
+            # and the summary's largest.
+            strip = contactlab.run(os.path.join(SCENES, "plastic-strip-2d.yaml"),
+                                   set={"Output/VTK": False}, out=os.path.join(out, "strip"),
+                                   quiet=True)
+            f = strip.nodal_fields()
+            np.testing.assert_allclose(f["stress"][:, 0], 500 / np.sqrt(3), rtol=1e-3)
+            np.testing.assert_allclose(f["stress"][:, 2], 250 / np.sqrt(3), rtol=1e-3)
+            np.testing.assert_allclose(f["von_mises"], 250.0, rtol=1e-6)
+            eps = f["equivalent_plastic_strain"]
+            self.assertGreater(np.min(eps), 0.04)
+            np.testing.assert_allclose(eps, strip.summary["plasticity"]["max_equivalent_plastic_strain"],
+                                       rtol=1e-9)
+
     def test_a_failed_run_reports_and_keeps_its_steps(self):
         with Folder() as out:
             # Two Newton iterations cannot solve the contact step: the run fails at step 1.
