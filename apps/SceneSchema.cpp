@@ -124,7 +124,8 @@ ParameterList tieItem() {
         "Value * Function(t). "
         "Groups of one node tie those nodes; groups of several (the same count in each) are "
         "matched by the translation between their centroids (a coincident interface, periodic "
-        "faces). Not on an inclined symmetry plane");
+        "faces). A tied node may lie on an inclined symmetry plane (Symmetry): the plane's "
+        "equation is eliminated with the ties'");
   p.set("Coefficients", Teuchos::Array<double>(),
         "The a_i, one per group (code_aster's COEF_MULT, Abaqus' *EQUATION coefficients); "
         "empty means [1, -1]: the second group's nodes move with the first's");

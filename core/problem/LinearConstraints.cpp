@@ -38,11 +38,15 @@ void refuseRedundantRightSides(const SolidModel& model, const std::vector<TieEqu
                                const std::vector<RedundantEquation>& redundant) {
   for (const RedundantEquation& r : redundant)
     for (const auto& [e, w] : r.combination) {
+      if (ties[e].tie < 0) continue;  // a symmetry plane's: no right side
       const TieCondition& tie = model.ties[ties[e].tie];
       if (tie.value == 0 || w == 0) continue;
-      const TieCondition& own = model.ties[ties[r.equation].tie];
-      const MeshDof& dof = ties[r.equation].dofs.front();
-      throw InputError("tie '" + own.name + "': the equation of node " +
+      const TieEquation& equation = ties[r.equation];
+      const std::string own =
+          equation.tie >= 0 ? "tie '" + model.ties[equation.tie].name + "'"
+                            : "symmetry condition '" + model.symmetries[equation.plane].name + "'";
+      const MeshDof& dof = equation.dofs.front();
+      throw InputError(own + ": the equation of node " +
                        std::to_string(model.mesh->nodeId(dof.first)) + " (component " +
                        "xyz"[dof.second] +
                        ") leaves no dof to make dependent (every dof in it is " +
@@ -161,6 +165,14 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
     for (auto node : mesh.boundaryNodes(bc.group))
       for (int c : bc.components)
         fixed.insert({node, c});
+  std::set<std::int64_t> tiedNodes;
+  for (const TieEquation& e : ties)
+    for (const MeshDof& d : e.dofs)
+      tiedNodes.insert(d.first);
+  // The planes' equations at tied nodes, eliminated with the ties' (addTies).
+  std::vector<TieEquation> equations;
+  for (const SymmetryCondition& s : model.symmetries)
+    conditionNormals_.push_back(s.normal);
   // The planes through each node, without repeats (a node on two groups of one plane).
   std::map<std::int64_t, std::vector<std::pair<int, std::array<double, 3>>>> planes;
   for (std::size_t s = 0; s < model.symmetries.size(); ++s) {
@@ -185,6 +197,17 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
     normals_.emplace_back();
     for (const auto& entry : list)
       normals_.back().push_back(entry.second);
+    if (tiedNodes.count(node)) {
+      for (const auto& [condition, normal] : list) {
+        TieEquation e;
+        e.tie = -1;
+        e.plane = condition;
+        for (int c = 0; c < dim_; ++c)
+          if (normal[c] != 0) e.dofs.push_back({node, c}), e.coefficients.push_back(normal[c]);
+        equations.push_back(e);
+      }
+      continue;
+    }
     if (owned) ownedNodes_.push_back({static_cast<LO>(overlap * dim_), list});
     // Reduced row echelon form of the planes' rows over the free components (full pivoting):
     // each pivot row r then reads u_k + sum_j a_rj u_j = 0 over the non-pivot components j.
@@ -233,7 +256,8 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
       all_.push_back(d);
     }
   }
-  addTies(model, dofs, ties, fixed);
+  equations.insert(equations.end(), ties.begin(), ties.end());
+  addTies(model, dofs, equations, fixed);
   for (std::size_t d = 0; d < all_.size(); ++d)
     dependentOf_[all_[d].gid] = d;
   const int local = all_.empty() ? 0 : 1;
@@ -246,14 +270,9 @@ void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
   std::set<std::int64_t> tied;
   for (const TieEquation& e : ties)
     for (const MeshDof& d : e.dofs) {
-      const auto what = [&] {
-        return "tie '" + model.ties[e.tie].name + "': node " +
-               std::to_string(model.mesh->nodeId(d.first));
-      };
-      if (dofs.globalNode(d.first) < 0) throw InputError(what() + " is on no element");
-      if (std::binary_search(nodes_.begin(), nodes_.end(), d.first))
-        throw InputError(what() +
-                         " is on an inclined symmetry plane; a node with both is not supported");
+      if (e.tie >= 0 && dofs.globalNode(d.first) < 0)
+        throw InputError("tie '" + model.ties[e.tie].name + "': node " +
+                         std::to_string(model.mesh->nodeId(d.first)) + " is on no element");
       tied.insert(d.first);
     }
   tiedNodes_.assign(tied.begin(), tied.end());
@@ -273,6 +292,10 @@ void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
   for (const TiedDof& tiedDof : dependents) {
     Dependent d{lidOf(tiedDof.dof), gidOf(tiedDof.dof), {}, {}};
     for (const auto& [e, w] : tiedDof.equations) {
+      if (ties[e].plane >= 0) {
+        if (d.lid >= 0) planeForceTerms_.push_back({d.lid, ties[e].plane, w});
+        continue;
+      }
       const int tie = ties[e].tie;
       if (d.lid >= 0)
         tieForceTerms_.push_back(
@@ -453,6 +476,10 @@ std::vector<std::array<double, 3>> LinearConstraints::reactions(const Vector& re
         local[n.planes[a].first][c] += alpha * n.planes[a].second[c];
     }
   }
+  // At tied nodes: the planes' equations' multipliers along their normals.
+  for (const PlaneForceTerm& t : planeForceTerms_)
+    for (int c = 0; c < 3; ++c)
+      local[t.condition][c] += t.w * conditionNormals_[t.condition][c] * r[t.lid];
   // std::array<double, 3> has no padding: the lists are 3 n contiguous doubles.
   if (numConditions_ > 0)
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(3 * numConditions_),

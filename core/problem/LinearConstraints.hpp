@@ -53,8 +53,9 @@ class LinearConstraints {
   // nodes `dofs` owns together. A component a Dirichlet condition fixes is never dependent (its
   // value enters project() as given); where the planes leave no free component to eliminate,
   // the Dirichlet conditions hold the node. Every rank knows every node's dependents: a row may
-  // have columns of another rank's symmetry nodes. Throws InputError for a tied node on an
-  // inclined symmetry plane or without an element.
+  // have columns of another rank's symmetry nodes. At a tied node the planes' equations join the
+  // ties' in one elimination (their reactions then from the equations' multipliers). Throws
+  // InputError for a tied node without an element.
   LinearConstraints(const SolidModel& model, const DofMap& dofs,
                     const std::vector<TieEquation>& ties = {});
 
@@ -112,10 +113,10 @@ class LinearConstraints {
     LO firstLid;                                                // LID of component 0
     std::vector<std::pair<int, std::array<double, 3>>> planes;  // (condition, unit normal)
   };
-  // The ties' dependents (after the planes': a tied node on an inclined plane is refused).
-  // Throws InputError for a tie with a right side whose equation is prescribed or implied.
-  void addTies(const SolidModel& model, const DofMap& dofs, const std::vector<TieEquation>& ties,
-               const std::set<MeshDof>& fixed);
+  // The dependents of `equations`: the inclined planes' at tied nodes, then the ties'. Throws
+  // InputError for a tie with a right side whose equation is prescribed or implied.
+  void addTies(const SolidModel& model, const DofMap& dofs,
+               const std::vector<TieEquation>& equations, const std::set<MeshDof>& fixed);
 
   int dim_;
   std::vector<Dependent> all_;
@@ -134,7 +135,14 @@ class LinearConstraints {
     double w;  // the force's component += w R(lid)
   };
   std::vector<TieForceTerm> tieForceTerms_;
-  std::vector<LoadFunction> tieFunctions_;  // by model.ties index
+  struct PlaneForceTerm {
+    LO lid;         // an owned dependent dof
+    int condition;  // model.symmetries index
+    double w;       // the condition's force += w R(lid) times its normal
+  };
+  std::vector<PlaneForceTerm> planeForceTerms_;
+  std::vector<std::array<double, 3>> conditionNormals_;  // by model.symmetries index
+  std::vector<LoadFunction> tieFunctions_;               // by model.ties index
   std::size_t numTies_ = 0;
   int anywhere_ = 0;
   Teuchos::RCP<const Comm> comm_;

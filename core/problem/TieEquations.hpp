@@ -23,7 +23,10 @@ namespace contactlab {
 using MeshDof = std::pair<std::int64_t, int>;
 
 struct TieEquation {
-  int tie = 0;  // index in model.ties
+  int tie = 0;  // index in model.ties; -1 for a symmetry plane's equation
+  // Index in model.symmetries of an inclined plane's n . u = 0 at a tied node (LinearConstraints
+  // eliminates it with the ties'), else -1.
+  int plane = -1;
   std::vector<MeshDof> dofs;
   std::vector<double> coefficients;  // sum_i coefficients[i] u(dofs[i]) = the tie's right side
 };

@@ -188,6 +188,86 @@ TEST(Ties, KeepAGeneralEquation) {
   EXPECT_NEAR(f, clamp + 1.0, 1e-9);
 }
 
+// The column turned 30 degrees about z, its x-min side (and y-min in 3D) a roller on an inclined
+// plane: at the interface's ends a tied node lies on one plane (two along the 3D edge), whose
+// equations are then eliminated with the ties'. Tied, the two blocks are the single mesh: the
+// same displacement, iterations and clamp reaction, and the planes' reactions summed.
+SolidModel onInclinedRollers(const std::string& element, bool tied) {
+  SolidModel model = shearedColumn(element, tied, false);
+  Mesh turned = *model.mesh;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (std::size_t n = 0; n < turned.numNodes(); ++n) {
+    const double x = turned.coords[3 * n], y = turned.coords[3 * n + 1];
+    turned.coords[3 * n] = c * x - s * y;
+    turned.coords[3 * n + 1] = s * x + c * y;
+  }
+  model.mesh = std::make_shared<Mesh>(std::move(turned));
+  std::vector<std::string> sides;
+  if (!is3D(element))
+    sides = {"left"};
+  else
+    sides = {"xmin", "ymin"};
+  for (const std::string& side : sides)
+    for (const char* block : {"lower-", "upper-"}) {
+      if (!tied && block == std::string("upper-")) continue;
+      SymmetryCondition roller;
+      roller.name = (tied ? block : "") + side;
+      roller.group = roller.name;
+      model.symmetries.push_back(roller);
+    }
+  return model;
+}
+
+TEST(Ties, OnAnInclinedSymmetryPlaneAreTheSingleMesh) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const char* element : {"quad4", "quad8", "hex8"}) {
+    Problem single(onInclinedRollers(element, false), comm);
+    Problem tied(onInclinedRollers(element, true), comm);
+    const StaticRun rs = runWithMumps(single, 5), rt = runWithMumps(tied, 5);
+    ASSERT_TRUE(rs.report.converged && rt.report.converged)
+        << element << ": " << rs.report.message << rt.report.message;
+    EXPECT_EQ(rt.report.iterations, rs.report.iterations) << element;
+    const Mesh& a = *single.model().mesh;
+    const Mesh& b = *tied.model().mesh;
+    double largest = 0, error = 0;
+    std::size_t matched = 0;
+    for (std::size_t n = 0; n < b.numNodes(); ++n)
+      for (std::size_t m = 0; m < a.numNodes(); ++m) {
+        double d = 0;
+        for (int i = 0; i < 3; ++i)
+          d += std::abs(a.coords[3 * m + i] - b.coords[3 * n + i]);
+        if (d > 1e-10) continue;
+        ++matched;
+        const auto x = single.nodeDisplacement(*rs.u, static_cast<std::int64_t>(m));
+        const auto y = tied.nodeDisplacement(*rt.u, static_cast<std::int64_t>(n));
+        for (int i = 0; i < 3; ++i) {
+          largest = std::max(largest, std::abs(x[i]));
+          error = std::max(error, std::abs(x[i] - y[i]));
+        }
+      }
+    EXPECT_EQ(matched, b.numNodes()) << element;
+    EXPECT_GT(largest, 1e-4) << element;
+    EXPECT_LT(error, 1e-9 * largest) << element;
+    // Reactions: the clamp, then the rollers (single: one per side; tied: lower and upper per
+    // side), then the tie.
+    const auto& r1 = single.reactions();
+    const auto& r2 = tied.reactions();
+    const std::size_t sides = is3D(element) ? 2 : 1;
+    ASSERT_EQ(r1.size(), 1 + sides) << element;
+    ASSERT_EQ(r2.size(), 2 + 2 * sides) << element;
+    double scale = 0;
+    for (int i = 0; i < 3; ++i)
+      scale = std::max(scale, std::abs(r1[0].force[i]));
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(r2[0].force[i], r1[0].force[i], 1e-9 * scale) << element;
+      for (std::size_t k = 0; k < sides; ++k)
+        EXPECT_NEAR(r2[1 + 2 * k].force[i] + r2[2 + 2 * k].force[i], r1[1 + k].force[i],
+                    1e-9 * scale)
+            << element << " side " << k;
+    }
+  }
+}
+
 // A right side: the column's two blocks, clamped at the foot and the head, with their interface
 // nodes held a shim's thickness apart, u(upper-bottom) - u(lower-top) = delta along y (Value
 // -delta on [1, -1] from lower-top). Mirror symmetry about the interface puts each side at
