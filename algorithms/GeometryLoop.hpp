@@ -3,8 +3,8 @@
 // loop. In Newton, the system re-pairs at every iterate (NewtonRequest::geometryInNewton). As a
 // fixed point, it is re-paired at the converged iterate; a pairing that moved restarts Newton,
 // at most Newton/Max Geometry Iterations times per step, and gives the status and threshold
-// fixed points a fresh cap (each new pairing starts them over: a sliding step of ironing-2d
-// needs ~6 threshold updates per geometry update and 60 in all).
+// fixed points a fresh cap (each new pairing starts them over: a sliding step needs a few
+// threshold updates per geometry update, and their total over the step may pass one cap).
 #include "algorithms/FixedPointLoop.hpp"
 #include "core/problem/NonlinearSystem.hpp"
 
@@ -39,9 +39,8 @@ class GeometryLoop : public FixedPointLoop {
   bool diverged() const override;
   // The period of the residual at the updated geometry: 2 or 3 where its last values repeat those
   // one period before, each to 1e-3, over two periods (a pairing that sends the iterate to another,
-  // which sends it back); 0 otherwise. Said in the failure only: on the one model measured (the 3D
-  // two-body Hertz pressed by a force, under the fixed point) the geometry retry fails there too,
-  // in twice the time.
+  // which sends it back); 0 otherwise. Said in the failure only: a cycle is not handed to the
+  // geometry retry, which does not break it (doc/algorithms.md "Geometry retry").
   int cyclePeriod() const;
 
  protected:

@@ -33,11 +33,8 @@ struct NewtonRequest {
 };
 
 // A contact Newton whose iterates stay two orders of magnitude above where the solve started,
-// Stall Iterations in a row, does not come back (measured on the frictional hex27 tube: its
-// failing full steps climb to 1e3-1e8 x their start by the 4th iterate and stay there until Max
-// Iterations), while converging solves that wander do so lower or shorter: the pad's fixed
-// point at nu = 0.499 spends 9 iterates at 10-16 x its start before it converges (10 x stalled
-// it), the frictional axisymmetric tube 3 in a row above 100 x.
+// Stall Iterations in a row, does not come back, while converging solves that wander do so
+// lower or for fewer iterates: the bound is far on purpose (doc/algorithms.md "Stalled Newton").
 inline constexpr double kStallFactor = 100;
 // Halvings of an update whose iterate cannot be evaluated (PlainNewton), down to 1/1024 of it.
 inline constexpr int kUnevaluableHalvings = 10;
@@ -45,9 +42,7 @@ inline constexpr int kUnevaluableHalvings = 10;
 // Whether the last five residual norms of a solve alternate a, b, a, b, a (each equal to the one
 // two iterates before to 1e-6 relative; a = b too): Newton on a piecewise law revisiting the
 // same two iterates, after the cycling treatment had its chance (it acts on the 4th
-// alternation of a point's statuses and changes the residual when it changes anything). The
-// frictional hex27 tube's unloading step cycled so between ||R|| = 50.35 and 54.10 for its last
-// 12 iterations before Max Iterations.
+// alternation of a point's statuses and changes the residual when it changes anything).
 bool newtonCycles(const std::vector<double>& norms);
 
 struct NewtonOutcome {
@@ -72,8 +67,8 @@ class NewtonMethod {
     // forced, coefficients scaled) and returns true when it did. The residual and tangent at
     // the iterate are then those of the law before the change: the method evaluates them
     // again, so that its step solves the law the next iterate is judged by (a step taken with
-    // the untreated law lands the hex8 frictional tube's forced points 1000 x off equilibrium,
-    // doc/algorithms.md "Cycling").
+    // the untreated law can land the forced points far off equilibrium, doc/algorithms.md
+    // "Cycling").
     std::function<bool(int iteration)> treat;
     // The iterate's residual norm as the method goes on with it (after the evaluation a
     // treatment asked for): progress lines, the run's residual, a stop on a signal. Not called

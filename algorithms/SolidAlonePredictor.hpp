@@ -4,10 +4,10 @@
 // Newton's first iteration is the solid's own move without contact: typically a pressed body
 // pushed almost rigidly into its obstacle, whose only use is the statuses it gives, since the
 // next iteration's matrix has the contact zone closed. A direct solver factorizes that matrix
-// and throws the factors away at once (on the peers' tet10 hemisphere, 125 730 dofs, 12 s of
-// a 45 s run). Here the solid's system is solved by CG with a MueLu hierarchy to a loose
-// tolerance instead: the statuses need the sign of the gaps, not their digits, and Newton
-// corrects the rest from the next iterate on.
+// and throws the factors away at once (on a large model a sizeable share of the run:
+// doc/algorithms.md "Predictor"). Here the solid's system is solved by CG with a MueLu hierarchy
+// to a loose tolerance instead: the statuses need the sign of the gaps, not their digits, and
+// Newton corrects the rest from the next iterate on.
 #include "formulations/ContactControls.hpp"
 #include "linear/LinearSolver.hpp"
 

@@ -5,14 +5,13 @@
 //
 // An update that changes back exactly the points the last one changed is a two-update cycle:
 // from then on, for the rest of the step, each update changes only the point whose frozen
-// status the law contradicts most (the largest |p^|). The seed-size tube's unloading under the
-// fixed point: 13 points at the edge of the contact zone closed in tension when frozen closed
-// and penetrated when frozen open, together, update after update (doc/algorithms.md "Cycling").
+// status the law contradicts most (the largest |p^|): at the edge of a contact zone a group of
+// points can be in tension when frozen closed and penetrate when frozen open, together, update
+// after update (doc/algorithms.md "Cycling").
 // Such an update, when it opens points the iterate held closed, also lets the friction
 // thresholds update before Newton restarts (cyclesAtFrozenSurroundings): a point whose frozen
-// threshold is stale may have no status that holds (the dragged pad under the fixed point:
-// closed, its frozen friction pulled it into tension; open, it had none and penetrated; the
-// seed's pad fails there untreated, and every r_n of the extremes study did with `automatic`).
+// threshold is stale may have no status that holds (closed, its frozen friction pulls it into
+// tension; open, it has none and penetrates), and scaling its coefficients does not help.
 #include "algorithms/FixedPointLoop.hpp"
 #include "formulations/ContactControls.hpp"
 

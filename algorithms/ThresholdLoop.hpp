@@ -25,8 +25,8 @@ class ThresholdLoop : public FixedPointLoop {
   }
   // A point forced closed held the threshold it had when forced (ContactControls::forceStatus),
   // which its frozen threshold kept through the updates since: read from the law again, it may
-  // move. Kept, a forced stick point of the ironing under penalty ended with a traction of
-  // 3.6 mu p, reported converged.
+  // move. Kept, a forced stick point could end with a traction above mu p and be reported
+  // converged.
   bool reviseForcedState(const Vector& x, double t) override { return update(x, t); }
 
  protected:

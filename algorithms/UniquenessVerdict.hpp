@@ -4,8 +4,8 @@
 //   that differ, or a singular one, mean that another solution may lie close to this one;
 // - the critical factor s on mu (the adjacent patterns and the contact set slipping): s <= 1,
 //   mu >= mu_crit, means that a slipping or separated state of the same contact set may
-//   coexist with this one, even where the signs agree and this state is isolated (the strut of
-//   scenes/strut-2d.yaml ends in three different states at mu = 1.6 mu_crit).
+//   coexist with this one, even where the signs agree and this state is isolated
+//   (doc/verification.md, "V6 on a continuum").
 // "locally unique" only when neither says otherwise; "possibly non-unique" when either does,
 // with the reason of the first that does (signs, then the critical mu).
 #include "algorithms/PatternCriticalFriction.hpp"

@@ -1,8 +1,8 @@
 #pragma once
 // A number in a message or a file name: printf's %g (6 significant digits: 0.625, not
-// 0.625000), or fewer when asked. One definition for every module: the mesh generators and the
-// linear solvers each had their own `formatNumber` with the same signature and different
-// formats, so one silently replaced the other at link time.
+// 0.625000), or fewer when asked. One definition for every module: two modules' functions of
+// the same name and signature with different formats would silently replace one another at
+// link time.
 #include <cstdio>
 #include <string>
 

@@ -2,7 +2,8 @@
 // One registry per axis (linear solver, material, formulation, ...): a name maps to a doc
 // string, a function returning the valid parameters of that type (each with a default and a
 // doc string), and a builder. Scenes pick an entry with `Type: name` and give its parameters in
-// a sibling sublist named after the type. Registration is explicit (registerAll() per module).
+// a sibling sublist named after the type. Registration is explicit (a register function per
+// module, e.g. registerMaterials(); the app's registerAll() calls them all).
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 

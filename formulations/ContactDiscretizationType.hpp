@@ -72,9 +72,10 @@ const CellGroup* cornerlessFacets(const Mesh& mesh, const std::string& group);
 
 // What `automatic` picks, and why (empty when it is the registry's first entry, the default):
 // on slave facets whose corners carry no share of a smooth pressure (tri6, quad8) collocation at
-// the slave nodes is not sound (a uniform pressure on hex20 against a plane comes out with a
-// 13 % spread), so the first registered type that integrates over the facets and runs `law`;
-// elsewhere the first registered type.
+// the slave nodes is not sound (a uniform pressure against a plane does not come out uniform:
+// doc/verification.md "Mortar against an obstacle, the default on tri6 and quad8 facets"), so
+// the first registered type that integrates over the facets and runs `law`; elsewhere the first
+// registered type.
 struct AutomaticDiscretization {
   std::string name;
   std::string reason;

@@ -78,9 +78,9 @@ struct LawOutput {
   // contact stiffness LawInput::stiffnessScale; (w / c) p open: times c) and the friction rows
   // (w c_t v at stick: times the stiffness over c_t; a direction error w dLambda at slip: times
   // the threshold). The rows themselves are lengths and numbers, whose norm next to the forces'
-  // does not see a violation: code_aster SSNV128 with lagrange at c_t = 800 converged to a
-  // state whose stick points had slipped 40 um without friction (rows 4e-5 against a target of
-  // 1e-2; 5e6 N as a force).
+  // does not see a violation: a stick point may have slipped without friction while its rows
+  // stay far below a force target (code_aster SSNV128; doc/algorithms.md "Three non-smooth
+  // things, one loop each").
   double normalRowForce = 0.0;
   double frictionRowForce = 0.0;
 };
@@ -89,13 +89,13 @@ struct LawOutput {
 // point's size are a touching point's, not a pressure: the round-off of its gap, or the margin
 // `Initial Contact` seeds (ContactProblem::seedInitialStatuses, a tenth of this). Such a point
 // carries no friction. Its multiplier Lambda (a direction scaled by 1 / threshold) would
-// otherwise enter the tangent through a column of size w * threshold only: at a mortar point
-// whose weighted gap is -3e-33 instead of 0, the first Newton update put 4e29 into Lambda
-// (issue 15). The cut must sit near the gap's round-off (~1e-16 of the coordinates, times the
-// sums of a mortar row), not above it: its pressure c 1e-12 h grows with the coefficient, and
-// at 1e-8 an augmentation of 1e7 E/h (the extremes study) put the pad's whole contact pressure
-// below it, so the dragged pad slid without friction and "converged". 1e-12 h keeps four
-// decades above round-off and cuts a real pressure only beyond c ~ 1e11 E/h.
+// otherwise enter the tangent through a column of size w * threshold only, and a Newton update
+// could put an arbitrarily large value into Lambda (a mortar point whose weighted gap is a
+// round-off below 0). The cut must sit near the gap's round-off (~1e-16 of the coordinates,
+// times the sums of a mortar row), not above it: its pressure c 1e-12 h grows with the
+// coefficient, and a larger cut puts the whole contact pressure of a strongly augmented zone
+// below it, which then slides without friction. 1e-12 h keeps four decades above round-off and
+// cuts a real pressure only beyond c ~ 1e11 E/h.
 constexpr double kTouchingGap = 1e-12;
 inline bool frictionThresholdIsRoundoff(double threshold, const LawInput& in,
                                         double normalCoefficient) {

@@ -29,9 +29,8 @@ ContactScale contactScale(const Mesh& mesh,
 // For a failed run's message: a coefficient the user gave (`key` its full path, `value` > 0)
 // more than a decade from the model's scale (`automatic`, what 0 would have given), and what to
 // set instead; empty within a decade. The augmented Lagrangian's converged state does not depend
-// on r_n and r_t, but its Newton path does: SSNV128 with mu = 1 and the r_t = 800 of its public
-// model (1/100 of the scale) fails at the first step under every retry, and converges from
-// 8e3 up.
+// on r_n and r_t, but its Newton path does: a coefficient far below the model's scale can fail
+// from the first step under every retry (doc/verification.md "SSNV128").
 std::string coefficientAdvice(const std::string& key, double value, double automatic);
 
 }  // namespace contactlab

@@ -28,9 +28,9 @@ class Lagrange : public MultiplierLaw {
   void writeFrictionRow(const LawInput& in, const PointState& s, int k,
                         LawOutput& out) const override;
   double transmittedThreshold(const PointState& s) const override { return s.tau; }
-  // The normal force is p: a threshold mu p^ with an iterate deep in its master (p^ >> p) let
-  // friction exceed mu times the normal force the point applied, and the frictional
-  // axisymmetric tube's closing step diverged (doc/algorithms.md "Lagrange's threshold").
+  // The normal force is p: a threshold mu p^ at an iterate deep in its master (p^ >> p) would
+  // let friction exceed mu times the normal force the point applies (doc/algorithms.md
+  // "Lagrange's threshold").
   bool thresholdFromPressure() const override { return true; }
 };
 

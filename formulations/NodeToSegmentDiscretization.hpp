@@ -36,10 +36,10 @@ class NodeToSegmentDiscretization : public ContactDiscretization {
                        GeometricTerms terms) const override;
 
  private:
-  // The nodal normals of the facets around the point's master nodes, at the state's positions.
   // The current facets around the point's master nodes, and their nodes.
   void facetsAround(const ContactPoint& pt, const ContactSurfaceState& state,
                     std::vector<Facet>& facets, std::vector<std::int64_t>& facetNodes) const;
+  // The nodal normals of the facets around the point's master nodes, at the state's positions.
   std::map<std::int64_t, std::array<double, 3>> nodalNormalsAround(
       const ContactPoint& pt, const ContactSurfaceState& state) const;
   // The smoothed normal at the point's master point, from its master nodes' normals and shape

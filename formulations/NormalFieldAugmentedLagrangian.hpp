@@ -7,9 +7,10 @@
 //   R_ns = w kappa_n (n_s - n(u)) = 0        (seed: int [n_s - n(u)] kappa_n dn_s* = 0).
 // The pointwise law on (g, v, p, Lambda) is the augmented Lagrangian's, unchanged; the kernel
 // (ContactPointKernel) adds the n_s columns (dg/dn_s = x_s - x_m) and the R_ns rows, whose
-// derivative -w kappa_n dn/du it takes by central differences of n(u).
+// derivative -w kappa_n dn/du it takes in closed form where the discretization has one, else by
+// central differences of n(u) (ContactPointKernel::normalFieldColumns).
 //
-// Choices the seed leaves open, made here and stated in doc/formulations.md:
+// Choices the seed leaves open, made here:
 // - the friction plane is the pairing's (its tangents t_k, from the master normal), not n_s's:
 //   at a solution n_s = n(u), the same plane;
 // - the seed's equilibrium term int [n_s - n(u)] kappa_n dn is not added: it vanishes wherever

@@ -1,9 +1,9 @@
 #pragma once
 // Penalty contact with regularized Coulomb friction, at one point, no multipliers:
-//   pressure      p = eps_n <-g>                   (inexact: the surfaces interpenetrate by
-//   p/eps_n) trial         q* = q_old + eps_t v             (q: tangential resistance, opposes
-//   slip) return map    q = P_{B(mu p)}(q*)              (stick inside the cone, slip on it) R_u +=
-//   -p dg + q . dv
+//   pressure     p = eps_n <-g>          (inexact: the surfaces interpenetrate by p / eps_n)
+//   trial        q* = q_old + eps_t v    (q: tangential resistance, opposes slip)
+//   return map   q = P_{B(mu p)}(q*)     (stick inside the cone, slip on it)
+//   R_u += -p dg + q . dv
 // times the point's weight; q_old is the resistance at the last converged step.
 #include "formulations/ContactLaw.hpp"
 

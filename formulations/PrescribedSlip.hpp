@@ -15,16 +15,14 @@
 // along a fixed master (a tube's pulled end on its hole, an obstacle driven past a held node)
 // has a known, nonzero slip there: Coulomb's force is then mu p along it, a slip row of the law
 // (regular: its multiplier is fixed by the slip's direction), not the support's. Dropping it
-// there took the friction of the node away under Lagrange (its force is the multiplier: a pulled
-// tube's end node, 0.74 % of the pull-out force) and left only the regularized part c_t v of it
-// under the augmented Lagrangian.
+// there would take the node's friction away under Lagrange (its force is the multiplier) and
+// leave only the regularized part c_t v of it under the augmented Lagrangian.
 //
 // A slave node on a symmetry plane drops the friction along the plane's normal too, whatever B
 // says: the tangential traction across a symmetry plane is zero by symmetry. B alone misses it
 // where the master point lies a little inside a facet whose other nodes are off the plane (a
-// faceted hole's chord: measured in the tube expansion, that direction's free part was 4e-4 of
-// the operator, enough to keep it but not to hold its multiplier, and the tangent was singular
-// once the point slipped).
+// faceted hole's chord): that direction's free part is then small, above the 0.1 % test but too
+// small to hold its multiplier, and the tangent turns singular once the point slips.
 #include "formulations/ContactLaw.hpp"
 
 #include <array>

@@ -1,10 +1,10 @@
 #pragma once
 // How many threads the BLAS runs per MPI rank. MUMPS' factorization spends most of its time in
 // the BLAS' dense kernels on its fronts; Debian's threaded OpenBLAS (libopenblas0-pthread) runs
-// them on every core, which on one rank makes a factorization ~1.35x faster on 2 cores
-// (doc/performance.md "BLAS threads"), but ranks that each start a thread per core
-// oversubscribe the machine. So each rank gets the cores of its node shared out among the node's
-// ranks. The BLAS is found at run time (dlsym), so a serial or another BLAS is left alone.
+// them on every core, which speeds a one-rank factorization up (doc/performance.md "BLAS
+// threads"), but ranks that each start a thread per core oversubscribe the machine. So each
+// rank gets the cores of its node shared out among the node's ranks. The BLAS is found at run
+// time (dlsym), so a serial or another BLAS is left alone.
 #include <mpi.h>
 
 namespace contactlab {

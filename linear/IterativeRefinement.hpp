@@ -4,8 +4,7 @@
 // M^-1 b and is refined by restarted GMRES on the residual equation, right-preconditioned by
 // M^-1 and computed in double (GMRES-based iterative refinement: Carson & Higham, SIAM J. Sci.
 // Comput. 40(2), 2018). Plain refinement (x += M^-1 r) stalls when cond(A) times the error of
-// M^-1 nears one: measured on the seed-size tube's frictional tangents with single-precision
-// factors, 6 to 15 steps with plateaus at 5e-9 where GMRES needed 4 to 9 applications of M^-1
+// M^-1 nears one, where GMRES still converges in a few applications of M^-1
 // (doc/performance.md, "Single-precision factors"). Knows MUMPS no more than contact.
 #include "base/LinearAlgebra.hpp"
 

@@ -39,10 +39,9 @@ double conditionLowerBound(const Matrix& A, const MultiVector& b, const MultiVec
 // the null direction is then round-off instead of zero, and x is of order ||b|| / round-off.
 void throwIfNumericallySingular(const Matrix& A, const MultiVector& b, const MultiVector& x);
 
-// cond(A) beyond 1 / (100 eps): x then has fewer than 2 significant digits. Measured: the
-// round-off pivots of singular contact tangents give 1.5e16 to 6e16, the other solves of the
-// regression gold at most 4.4e10 (1.9e12 with OpenBLAS' Prescott kernels, on a chaotic run
-// that fails anyway; doc/algorithms.md, "Load steps").
+// cond(A) beyond 1 / (100 eps): x then has fewer than 2 significant digits. The round-off
+// pivots of singular contact tangents lie above it, the regular tangents' solves decades below
+// (doc/algorithms.md, "Load steps").
 inline constexpr double kSingularConditionBound = 4.5e13;
 
 // det = sign * mantissa * 2^exponent, 0.5 <= |mantissa| < 1 (never formed: it over/underflows).

@@ -28,7 +28,7 @@ struct MumpsEntryPoint<SMUMPS_STRUC_C> {
 
 // ICNTL(14) is raised this way after a workspace-too-small error, then the factorization is
 // retried once. Generous, because a second failure costs a whole factorization: matrices with
-// many delayed pivots need 100-200 % (measured on a 5-point pattern with tiny diagonal).
+// many delayed pivots can need 100-200 %.
 inline int raisedRelaxation(int percent) {
   return percent + 200 > 4 * percent ? percent + 200 : 4 * percent;
 }
@@ -84,8 +84,8 @@ struct MumpsInstance {
     icntl(21) = 0;  // ... and solution, centralized on the host
     // ICNTL(7), the ordering, is set before each analysis: it depends on the size.
     // Sequential analysis. The parallel one fails with PORD only (INFOG(1) = -38); with
-    // PT-SCOTCH (ICNTL(29) = 1) it runs, but measured no faster on 2 ranks (tet10 Hertz,
-    // 46 572 dofs: linear solves 21.0 s against 19.2 s sequential; doc/performance.md).
+    // PT-SCOTCH (ICNTL(29) = 1) it runs, but does not pay (the analysis is done once per
+    // pattern; doc/performance.md "Fill-reducing ordering: SCOTCH").
     icntl(28) = 1;
     icntl(14) = memoryRelaxation;
     icntl(33) = determinant ? 1 : 0;

@@ -35,10 +35,9 @@ class MumpsSolver : public LinearSolver {
   // least kSingleFactorizationFlops, else double.
   enum class Precision { automatic, doublePrecision, singlePrecision };
   // Precision automatic's threshold on the first analysis' predicted flops (RINFOG(1)): above
-  // it a factorization takes seconds and single precision saves 35-40 % of it (hertz-3d tet10
-  // at 46 572 unknowns: 5.7e10 flops, 1.98 s against 1.26 s); below, the refinement's extra
-  // solves would eat the saving, and the small models of the regression gold keep their
-  // round-off (the default-size 3D tube: 3e9).
+  // it a factorization takes seconds and single precision saves a good part of it; below, the
+  // refinement's extra solves would eat the saving, and the small models of the regression gold
+  // keep their round-off (doc/performance.md "Single-precision factors").
   static constexpr double kSingleFactorizationFlops = 1e10;
 
   struct Options {

@@ -1,6 +1,6 @@
 #pragma once
 // Preconditioners of BelosSolver, each built in its own translation unit so that only that file
-// pays for Ifpack2's or MueLu's headers (MueLu alone costs ~23 s of compilation).
+// pays for Ifpack2's or MueLu's headers (MueLu's are heavy to compile).
 #include "base/LinearAlgebra.hpp"
 
 #include <Teuchos_RCP.hpp>

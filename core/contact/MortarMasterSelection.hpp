@@ -3,11 +3,10 @@
 //
 // Mortar integrates a slave facet against every master facet whose projection along the slave
 // normal covers part of it. The search only bounds the candidates by boxes, so a master surface
-// behind the nearest one projects onto the slave as well: in a fir-tree blade root the disc's
-// next lobe, 6.4 mm behind the flank it touches, covered the flank's fillet facets, the weighted
-// gaps averaged the two surfaces and the first iterate pushed the blade 1.7 mm out of a contact
-// that was closed (an inverted element). Node-to-segment takes the closest point; mortar keeps,
-// per slave facet, the masters of the surface nearest to it:
+// behind the nearest one projects onto the slave as well (in a fir-tree blade root, the disc's
+// next lobe behind the flank it touches), and weighted gaps that average the two surfaces open
+// a closed contact. Node-to-segment takes the closest point; mortar keeps, per slave facet, the
+// masters of the surface nearest to it:
 //  - facing: the master's outward normal opposes the slave's (n_M . n_S < 0), else it is the
 //    far side of the master body;
 //  - within the search distance: the mean gap over the master's overlap, |g|, is at most the

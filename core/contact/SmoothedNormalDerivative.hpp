@@ -6,7 +6,8 @@
 // turned, (t_y, -t_x)) or t1 x t2 (3D), t_j = sum_b dN_b/dxi_j x_b,
 // so dn/dx_b = P(n)/|n~| sum_a N_a P(nh_a)/|s_a| sum_(f at a and b) P(m_f(a))/|nu| dnu/dx_b,
 // P(v) = I - v v^T. It replaces 2 x (the dofs it depends on) evaluations of the normal by
-// central differences (doc/verification.md measured those at a third of a 3D normal-field run).
+// central differences, which dominated a 3D normal-field run's contact terms (doc/verification.md
+// "The normal-field augmented Lagrangian").
 #include "core/contact/ContactSearch.hpp"
 
 #include <array>

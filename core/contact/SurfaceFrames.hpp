@@ -21,8 +21,7 @@ void tangentBasis(int dim, const std::array<double, 3>& n, std::array<double, 3>
 // keeps the axis the old t1 was built from while it stays far enough from n. A normal on a tie
 // (|n_x| = |n_y| on a symmetric mesh's diagonal) would otherwise let round-off turn t1 by 90
 // degrees between two updates, and with it the tangential multipliers and the friction history
-// held in that frame: obstacle-sphere-3d's mortar run reported a converged state whose traction
-// at one node was its multipliers read in the other frame. t1 = 0 (a first frame):
+// held in that frame, which would then be read in the other frame. t1 = 0 (a first frame):
 // tangentBasis's.
 void tangentBasisFollowing(int dim, const std::array<double, 3>& n, std::array<double, 3>& t1,
                            std::array<double, 3>& t2);

@@ -4,7 +4,7 @@
 // pressure on linear facets (the row sums of the surface mass), but not on quadratic ones: a
 // tri6 corner's shape function integrates to zero, so a smooth pressure puts almost no force on
 // the corners and most on the mid-edge nodes, and f_i / w_i reads ~0 at corners and ~1.2 p at
-// mid-edge nodes (a 3D Hertz on tet10: 40 % RMS error against the analytic field).
+// mid-edge nodes.
 //
 // The field reported is the L2 projection of the traction onto the facets' linear field (the
 // vertices' hat functions phi_k): g_k = sum_i phi_k(x_i) f_i (a mid-edge node's force shared
@@ -15,9 +15,8 @@
 // the quadratic field instead (M p = f with the tri6 mass) is exact too, but divides the
 // corners' forces, which a smooth pressure makes ~0, by the corners' ~0 integrals: it amplifies
 // their errors (the node-to-segment reactions at tri6 corners are short of the consistent load
-// by a near-constant amount), and on the 3D Hertz of bench/peers (tet10, 125 730 dofs) the
-// vertices read 0.77 % of p0 RMS off Hertz against 0.24 % with the linear field
-// (doc/verification.md).
+// by a near-constant amount) into a bias at the vertices (doc/verification.md "Node-to-segment
+// on quadratic slave facets").
 #include "core/contact/SurfaceWeight.hpp"
 #include "core/mesh/Mesh.hpp"
 

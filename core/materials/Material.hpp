@@ -36,7 +36,7 @@ struct MaterialInput {
   std::array<double, 9> F{};       // deformation gradient, row major (finite strain only)
   const double* stateOld = nullptr;
   // Prescribed temperature (degC); empty: the law's reference temperature, so that a model
-  // without temperatures evaluates exactly as before they existed.
+  // without temperatures evaluates as an isothermal one, with no thermal strain.
   std::optional<double> temperature;
 };
 
@@ -61,7 +61,7 @@ class Material {
   virtual int stateSize() const { return 0; }
   virtual void initializeState(double* /*state*/) const {}
   virtual void evaluate(const MaterialInput& in, MaterialOutput& out) const = 0;
-  // Density, for body forces and (later) slow-dynamics mass.
+  // Density, for the mass matrix (the slow-dynamics regularization's inertia).
   virtual double density() const { return 0.0; }
   // Whether the tangent (d stress / d strain, or dP/dF with dP_iJ/dF_kL = dP_kL/dF_iJ) is
   // symmetric: true of every hyperelastic law and of associative plasticity with its consistent

@@ -24,9 +24,9 @@ class GmshModel {
 
 // Runs `build` in a scratch model. gmsh 4.8 reports errors by throwing std::string; they are
 // turned into std::runtime_error("<context>: <gmsh's message>"). Inside gmsh's OpenMP meshing
-// loops a throw cannot leave (it ended the process: a half sphere of radius 1e-8), so the
-// session makes gmsh abort the meshing there instead (GmshSession): the incomplete mesh is then
-// refused by the checks of meshFromGmshModel, with one sentence.
+// loops a throw cannot leave (it would end the process), so the session makes gmsh abort the
+// meshing there instead (GmshSession): the incomplete mesh is then refused by the checks of
+// meshFromGmshModel, with one sentence.
 template <class F>
 auto inGmshModel(const std::string& context, F&& build) {
   GmshModel model;

@@ -1,7 +1,8 @@
 #pragma once
-// The mesh axis: `Mesh: {Type: file | rectangle | box | half-disc | half-sphere |
-// stacked-blocks-2d | stacked-blocks-3d, <type>: {...}}`. Builders take the type's validated
-// sublist and the scene file's directory (relative mesh paths are relative to the scene).
+// The mesh axis: `Mesh: {Type: <type>, <type>: {...}}`, the type `file` or one of the built-in
+// generators (MeshGenerators.hpp: rectangle, box, half-disc, ...). Builders take the type's
+// validated sublist and the scene file's directory (relative mesh paths are relative to the
+// scene).
 #include "base/Registry.hpp"
 #include "core/mesh/Mesh.hpp"
 

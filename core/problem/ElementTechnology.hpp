@@ -61,8 +61,8 @@ void registerElementTechnologies();
 // locking-free one — b-bar on quad4 and hex8 in small strain, mixed-up otherwise (f-bar only
 // when asked: it is unsymmetric and inverts elements under strong compression) — and full
 // integration elsewhere: in plane stress (the thickness takes up the volume change), on linear
-// simplices (tri3 and tet4 lock under any of them) and for every compressible elastic law, so that
-// those blocks assemble what they always did.
+// simplices (tri3 and tet4 lock under any of them) and for every compressible elastic law, whose
+// blocks keep the plain kernels.
 struct AutomaticChoice {
   std::string technology;
   std::string reason;

@@ -4,9 +4,9 @@
 // constants (mean dilatation: Q1/P0), or degree 1, the polynomials linear in the coordinates
 // the kernels pass: the reference cell's (xi), so the mapped P1 space of Q2/P1 and tet10/P1
 // (deal.II's FE_DGPMonomial; on a curved cell it follows the cell, where a space linear in x
-// does not: a thick tube's quad9 ring sectors of 22.5 degrees lost 5 % of the bore's
-// displacement under plastic flow with P1 in x, 0.08 % with P1 in xi), centred at their
-// measure-weighted mean and scaled by their spread. A field f sampled at the points
+// does not and loses accuracy under plastic flow: doc/theory.md "The dilatation and its
+// projection"), centred at their measure-weighted mean and scaled by their spread. A field f
+// sampled at the points
 // projects to coefficients c = M^-1 sum_q w_q psi(x_q) f_q and to values sum_i psi_i(x_q) c_i:
 // coefficient(i) = sum_q weight(i, q) f_q, with weight(i, q) = sum_j (M^-1)_ij psi_j(x_q) w_q.
 //

@@ -10,8 +10,7 @@
 // load says otherwise; a follower facet integrates -p n da on the current facet and adds its
 // load stiffness -df/du to the tangent through the parent element's rows, with the element
 // matrices' elimination of constrained dofs. A dead facet (every facet of a small-strain body,
-// every traction) does what surface loads always did: its force does not depend on u and it
-// adds nothing to the tangent.
+// every traction) has a force that does not depend on u and adds nothing to the tangent.
 #include "core/problem/DofMap.hpp"
 #include "core/problem/SolidModel.hpp"
 
