@@ -83,6 +83,32 @@ SolidModel shearedColumn(const std::string& element, bool tied, bool finiteStrai
   return model;
 }
 
+// Every node of the tied mesh (both of an interface pair) against the single mesh's node at its
+// place (expected to exist): the largest displacement component and the largest difference.
+std::pair<double, double> compareAtEveryNode(const Problem& single, const Vector& us,
+                                             const Problem& tied, const Vector& ut) {
+  const Mesh& a = *single.model().mesh;
+  const Mesh& b = *tied.model().mesh;
+  double largest = 0, error = 0;
+  std::size_t matched = 0;
+  for (std::size_t n = 0; n < b.numNodes(); ++n)
+    for (std::size_t m = 0; m < a.numNodes(); ++m) {
+      double d = 0;
+      for (int i = 0; i < 3; ++i)
+        d += std::abs(a.coords[3 * m + i] - b.coords[3 * n + i]);
+      if (d > 1e-10) continue;
+      ++matched;
+      const auto x = single.nodeDisplacement(us, static_cast<std::int64_t>(m));
+      const auto y = tied.nodeDisplacement(ut, static_cast<std::int64_t>(n));
+      for (int i = 0; i < 3; ++i) {
+        largest = std::max(largest, std::abs(x[i]));
+        error = std::max(error, std::abs(x[i] - y[i]));
+      }
+    }
+  EXPECT_EQ(matched, b.numNodes());
+  return {largest, error};
+}
+
 class TiedColumn : public ::testing::TestWithParam<std::tuple<std::string, bool>> {};
 
 TEST_P(TiedColumn, IsTheSingleMesh) {
@@ -105,27 +131,7 @@ TEST_P(TiedColumn, IsTheSingleMesh) {
   ASSERT_TRUE(rs.report.converged && rt.report.converged) << rs.report.message << rt.report.message;
   EXPECT_EQ(rt.report.iterations, rs.report.iterations);
   const Vector &us = *rs.u, &ut = *rt.u;
-  // Every node of the tied mesh (both of an interface pair) against the single mesh's node at
-  // its place.
-  const Mesh& a = *single.model().mesh;
-  const Mesh& b = *tied.model().mesh;
-  double largest = 0, error = 0;
-  std::size_t matched = 0;
-  for (std::size_t n = 0; n < b.numNodes(); ++n)
-    for (std::size_t m = 0; m < a.numNodes(); ++m) {
-      double d = 0;
-      for (int i = 0; i < 3; ++i)
-        d += std::abs(a.coords[3 * m + i] - b.coords[3 * n + i]);
-      if (d > 1e-12) continue;
-      ++matched;
-      const auto x = single.nodeDisplacement(us, static_cast<std::int64_t>(m));
-      const auto y = tied.nodeDisplacement(ut, static_cast<std::int64_t>(n));
-      for (int i = 0; i < 3; ++i) {
-        largest = std::max(largest, std::abs(x[i]));
-        error = std::max(error, std::abs(x[i] - y[i]));
-      }
-    }
-  EXPECT_EQ(matched, b.numNodes());
+  const auto [largest, error] = compareAtEveryNode(single, us, tied, ut);
   EXPECT_GT(largest, finiteStrain ? 0.05 : 1e-3);  // a real deformation
   EXPECT_LT(error, 1e-9 * largest);
   // The clamp's reaction is the single mesh's, and the tie's force on the lower block's top
@@ -227,25 +233,7 @@ TEST(Ties, OnAnInclinedSymmetryPlaneAreTheSingleMesh) {
     ASSERT_TRUE(rs.report.converged && rt.report.converged)
         << element << ": " << rs.report.message << rt.report.message;
     EXPECT_EQ(rt.report.iterations, rs.report.iterations) << element;
-    const Mesh& a = *single.model().mesh;
-    const Mesh& b = *tied.model().mesh;
-    double largest = 0, error = 0;
-    std::size_t matched = 0;
-    for (std::size_t n = 0; n < b.numNodes(); ++n)
-      for (std::size_t m = 0; m < a.numNodes(); ++m) {
-        double d = 0;
-        for (int i = 0; i < 3; ++i)
-          d += std::abs(a.coords[3 * m + i] - b.coords[3 * n + i]);
-        if (d > 1e-10) continue;
-        ++matched;
-        const auto x = single.nodeDisplacement(*rs.u, static_cast<std::int64_t>(m));
-        const auto y = tied.nodeDisplacement(*rt.u, static_cast<std::int64_t>(n));
-        for (int i = 0; i < 3; ++i) {
-          largest = std::max(largest, std::abs(x[i]));
-          error = std::max(error, std::abs(x[i] - y[i]));
-        }
-      }
-    EXPECT_EQ(matched, b.numNodes()) << element;
+    const auto [largest, error] = compareAtEveryNode(single, *rs.u, tied, *rt.u);
     EXPECT_GT(largest, 1e-4) << element;
     EXPECT_LT(error, 1e-9 * largest) << element;
     // Reactions: the clamp, then the rollers (single: one per side; tied: lower and upper per
