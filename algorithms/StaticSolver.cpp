@@ -88,7 +88,7 @@ bool StaticSolver::geometryRetryApplies() const {
 
 bool StaticSolver::statusLoopOutsideNewton() const {
   for (const auto& loop : loops_)
-    if (loop->name() == "statuses" && !loop->inNewton()) return true;
+    if (loop->changesStatuses() && !loop->inNewton()) return true;
   return false;
 }
 
