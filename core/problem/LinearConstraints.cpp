@@ -165,10 +165,11 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
     for (auto node : mesh.boundaryNodes(bc.group))
       for (int c : bc.components)
         fixed.insert({node, c});
-  std::set<std::int64_t> tiedNodes;
+  std::set<std::int64_t> tiedNodes;  // the planes' equations add none: theirs are tied
   for (const TieEquation& e : ties)
     for (const MeshDof& d : e.dofs)
       tiedNodes.insert(d.first);
+  tiedNodes_.assign(tiedNodes.begin(), tiedNodes.end());
   // The planes' equations at tied nodes, eliminated with the ties' (addTies).
   std::vector<TieEquation> equations;
   for (const SymmetryCondition& s : model.symmetries)
@@ -267,15 +268,11 @@ LinearConstraints::LinearConstraints(const SolidModel& model, const DofMap& dofs
 void LinearConstraints::addTies(const SolidModel& model, const DofMap& dofs,
                                 const std::vector<TieEquation>& ties,
                                 const std::set<MeshDof>& fixed) {
-  std::set<std::int64_t> tied;
   for (const TieEquation& e : ties)
-    for (const MeshDof& d : e.dofs) {
+    for (const MeshDof& d : e.dofs)
       if (e.tie >= 0 && dofs.globalNode(d.first) < 0)
         throw InputError("tie '" + model.ties[e.tie].name + "': node " +
                          std::to_string(model.mesh->nodeId(d.first)) + " is on no element");
-      tied.insert(d.first);
-    }
-  tiedNodes_.assign(tied.begin(), tied.end());
   const int rank = comm_->getRank();
   const auto lidOf = [&](const MeshDof& d) {
     return dofs.nodeOwner(d.first) == rank

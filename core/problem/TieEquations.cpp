@@ -133,8 +133,8 @@ std::vector<std::vector<std::int64_t>> matchedNodes(const Mesh& mesh, const TieC
 // the residual at the dependents through those combinations (TiedDof::equations).
 class GaussJordan {
  public:
-  // Whether the equation made a dof dependent; when not, `redundant` (if given) receives it.
-  bool add(const TieEquation& equation, int index, const std::set<MeshDof>& fixed,
+  // One equation; one that makes no dof dependent goes to `redundant` (if given).
+  void add(const TieEquation& equation, int index, const std::set<MeshDof>& fixed,
            std::vector<RedundantEquation>* redundant) {
     // The equation with the dependents found so far substituted, and its combination.
     Row row;
@@ -162,7 +162,7 @@ class GaussJordan {
         pivot = i;
     if (pivot == row.size()) {  // prescribed, or implied by the earlier equations
       if (redundant) redundant->push_back({index, combination});
-      return false;
+      return;
     }
     const MeshDof p = row[pivot].first;
     const double a = row[pivot].second;
@@ -177,7 +177,6 @@ class GaussJordan {
     dependent_[p] = expression;
     combination_[p] = combination;
     order_.push_back(p);
-    return true;
   }
 
   std::vector<TiedDof> dependents() const {
