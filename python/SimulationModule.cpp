@@ -256,6 +256,7 @@ PYBIND11_MODULE(_contactlab, m) {
              const NodalFields f = h->nodalFields();
              py::dict d;
              d["stress"] = matrix(f.stress, 6);
+             d["von_mises"] = column(f.vonMises);
              if (!f.plasticStrain.empty()) d["equivalent_plastic_strain"] = column(f.plasticStrain);
              return d;
            })

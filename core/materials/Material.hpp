@@ -24,10 +24,18 @@
 //    thermal strain and its temperature-dependent parameters; without one it is at its
 //    reference temperature. The temperature is data, not an unknown: tangents are at fixed T.
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 
 namespace contactlab {
+
+// The von Mises equivalent of a stress in Voigt order: sqrt(3 J2).
+inline double vonMisesStress(const std::array<double, 6>& s) {
+  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
+                          (s[2] - s[0]) * (s[2] - s[0])) +
+                   3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
 
 enum class Kinematics { SmallStrain, FiniteStrain };
 

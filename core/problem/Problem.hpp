@@ -49,6 +49,7 @@ struct DisplacementErrors {
 // Fields at the mesh nodes (Problem::nodalFields).
 struct NodalFields {
   std::vector<double> stress;         // 6 per node, Cauchy, Voigt order xx yy zz xy yz xz
+  std::vector<double> vonMises;       // 1 per node, of the node's (averaged) stress
   std::vector<double> plasticStrain;  // 1 per node; empty without internal variables
 };
 

@@ -109,13 +109,16 @@ NodalFields Problem::nodalFields(const Vector& u, double t) const {
   const std::size_t n = model_.mesh->numNodes();
   const double nan = std::nan("");
   fields.stress.assign(6 * n, nan);
+  fields.vonMises.assign(n, nan);
   if (plasticity) fields.plasticStrain.assign(n, nan);
   for (std::size_t i = 0; i < allNodes.size(); ++i) {
     const double* v = &allValues[i * width];
     const double count = v[width - 1];
     if (count == 0) continue;
+    std::array<double, 6> s;
     for (int k = 0; k < 6; ++k)
-      fields.stress[6 * allNodes[i] + k] = v[k] / count;
+      fields.stress[6 * allNodes[i] + k] = s[k] = v[k] / count;
+    fields.vonMises[allNodes[i]] = vonMisesStress(s);
     if (plasticity) fields.plasticStrain[allNodes[i]] = v[6] / count;
   }
   return fields;
@@ -148,10 +151,7 @@ MeshPiece Problem::outputPiece(const Vector& u, double t) const {
     piece.offsets.push_back(static_cast<std::int64_t>(piece.connectivity.size()));
     const auto s = elementStress(i, *uOverlap, t);
     stress.values.insert(stress.values.end(), s.begin(), s.end());
-    const double j2 = 0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
-                             (s[2] - s[0]) * (s[2] - s[0])) +
-                      3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    vm.values.push_back(std::sqrt(j2));
+    vm.values.push_back(vonMisesStress(s));
     material.values.push_back(e.block);
     rank.values.push_back(comm_->getRank());
     plasticStrain[i] = elementPlasticStrain(e);

@@ -21,7 +21,6 @@ import os
 import shutil
 import subprocess
 
-import numpy as np
 import yaml
 
 from ._contactlab import InputError, rank, ranks
@@ -142,12 +141,7 @@ class Simulation:
         each node. stress (numNodes x 6, Cauchy, xx yy zz xy yz xz), von_mises (numNodes, of
         that averaged stress), and with plastic blocks equivalent_plastic_strain (numNodes). NaN
         at a node on no element; the mesh's node order. Collective under mpirun."""
-        fields = self._s.nodal_fields()
-        s = fields["stress"]
-        fields["von_mises"] = np.sqrt(
-            0.5 * ((s[:, 0] - s[:, 1]) ** 2 + (s[:, 1] - s[:, 2]) ** 2 + (s[:, 2] - s[:, 0]) ** 2)
-            + 3.0 * (s[:, 3] ** 2 + s[:, 4] ** 2 + s[:, 5] ** 2))
-        return fields
+        return self._s.nodal_fields()
 
     def coordinates(self):
         """Reference coordinates, numNodes x 3."""
